@@ -1,0 +1,30 @@
+#pragma once
+// One interface, several acceleration structures over a scene's objects.
+#include <cstddef>
+#include <memory>
+#include <string>
+
+#include "collision/ray.hpp"
+#include "raytracer/geometry/surface_hit.hpp"
+#include "raytracer/scene/scene.hpp"
+
+namespace sweeptrace {
+
+class Accel {
+public:
+    virtual ~Accel() = default;
+    // Nearest hit with ray.tmin < t < ray.tmax; writes `hit` only when found.
+    virtual bool intersect(const collision::Ray& ray, SurfaceHit& hit) const = 0;
+    // Any hit with ray.tmin < t < ray.tmax (shadow rays).
+    virtual bool occluded(const collision::Ray& ray) const = 0;
+    // Bytes held by the structure itself (nodes, indices, copies), not the scene.
+    virtual std::size_t memory_bytes() const = 0;
+    virtual std::string name() const = 0;
+};
+
+enum class AccelKind { Bvh, Embree };
+
+// The scene must outlive the returned structure.
+std::unique_ptr<Accel> make_accel(AccelKind kind, const Scene& scene);
+
+}  // namespace sweeptrace

@@ -1,0 +1,10 @@
+#pragma once
+// Each subcommand registers itself on the app; its callback stores the process exit code.
+#include <CLI/CLI.hpp>
+
+namespace sweeptrace {
+
+void add_render_command(CLI::App& app, int& exit_code);
+void add_diff_command(CLI::App& app, int& exit_code);
+
+}  // namespace sweeptrace

@@ -1,0 +1,29 @@
+// sweeptrace: render | diff | accuracy | bench. Bad input exits 2 with one message on stderr.
+#include <cstdio>
+#include <exception>
+
+#include <CLI/CLI.hpp>
+
+#include "raytracer/cli/commands.hpp"
+#include "raytracer/input_error.hpp"
+
+int main(int argc, char** argv) {
+    CLI::App app{"sweeptrace: a path tracer on swept-segment collision tests"};
+    app.require_subcommand(1);
+    int exit_code = 0;
+    sweeptrace::add_render_command(app, exit_code);
+    sweeptrace::add_diff_command(app, exit_code);
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::ParseError& e) {
+        const int code = app.exit(e);
+        return code == 0 ? 0 : 2;
+    } catch (const sweeptrace::InputError& e) {
+        std::fprintf(stderr, "sweeptrace: error: %s\n", e.what());
+        return 2;
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "sweeptrace: internal error: %s\n", e.what());
+        return 3;
+    }
+    return exit_code;
+}

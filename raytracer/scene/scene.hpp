@@ -1,0 +1,60 @@
+#pragma once
+// A validated scene, as the JSON loader produces it. Everything here has passed the loader's
+// checks: finite numbers, positive sizes, valid indices.
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+#include "raytracer/geometry/object.hpp"
+
+namespace sweeptrace {
+
+struct Camera {
+    glm::vec3 position{0.0f, 0.0f, 5.0f};
+    glm::vec3 look_at{0.0f};
+    glm::vec3 up{0.0f, 1.0f, 0.0f};
+    float vfov_degrees = 40.0f;
+    float aperture = 0.0f;        // lens diameter; 0 = pinhole
+    float focus_distance = 0.0f;  // 0 = distance from position to look_at
+};
+
+struct Film {
+    int width = 320;
+    int height = 240;
+    int spp = 16;
+    int max_depth = 8;  // path vertices after the camera; Russian roulette may stop earlier
+};
+
+struct Background {
+    enum class Kind { Constant, Sky };
+    Kind kind = Kind::Constant;
+    glm::vec3 color{0.0f};               // Constant
+    glm::vec3 horizon{1.0f};             // Sky: radiance toward the horizon and below
+    glm::vec3 zenith{0.5f, 0.7f, 1.0f};  // Sky: radiance straight up (+Y), blended by dir.y
+};
+
+struct Material {
+    enum class Type { Diffuse, Metal, Dielectric, Emissive };
+    Type type = Type::Diffuse;
+    glm::vec3 albedo{0.8f};    // Diffuse reflectance / Metal tint / Dielectric transmission tint
+    float roughness = 0.0f;    // Metal: 0 = perfect mirror
+    float ior = 1.5f;          // Dielectric
+    glm::vec3 emission{0.0f};  // radiance leaving the front side; any material may emit
+    std::string name;
+};
+
+struct Scene {
+    Camera camera;
+    Film film;
+    Background background;
+    std::vector<Material> materials;
+    std::vector<Mesh> meshes;
+    std::vector<Object> objects;
+    std::uint64_t seed = 0;
+    std::filesystem::path source;  // the scene file, for messages
+};
+
+}  // namespace sweeptrace
