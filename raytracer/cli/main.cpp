@@ -13,6 +13,8 @@ int main(int argc, char** argv) {
     int exit_code = 0;
     sweeptrace::add_render_command(app, exit_code);
     sweeptrace::add_diff_command(app, exit_code);
+    sweeptrace::add_accuracy_command(app, exit_code);
+    sweeptrace::add_bench_command(app, exit_code);
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {

@@ -1,0 +1,51 @@
+#pragma once
+// Rendering a scene through an acceleration structure into a linear-RGB image.
+#include <atomic>
+#include <cstdint>
+#include <functional>
+
+#include "raytracer/accel/accel.hpp"
+#include "raytracer/image/image.hpp"
+#include "raytracer/scene/scene.hpp"
+
+namespace sweeptrace {
+
+enum class Sampling {
+    NeeMis,    // next event estimation + BSDF sampling, combined by the power heuristic
+    BsdfOnly,  // light found only by BSDF-sampled paths (the reference the MIS test compares to)
+};
+
+// Defects planted on purpose, for the golden-image mutation tests only: they show that the image
+// tests reject a renderer with this bug. Never set by the command line.
+enum class PlantedDefect { None, FlippedNormals, NoRayOffset };
+
+struct RenderOptions {
+    int spp = 16;
+    int max_depth = 8;
+    int threads = 0;  // 0 = all cores
+    std::uint64_t seed = 0;
+    Sampling sampling = Sampling::NeeMis;
+    PlantedDefect defect = PlantedDefect::None;
+    const std::atomic<bool>* cancel = nullptr;  // set (e.g. by SIGINT) to stop early
+    // Called now and then from one thread with the fraction done in [0, 1].
+    std::function<void(double)> progress;
+};
+
+struct RenderStats {
+    double seconds = 0.0;
+    std::uint64_t samples = 0;  // camera samples completed
+    std::uint64_t rays = 0;     // every ray traced (camera, bounce, shadow)
+    bool cancelled = false;
+    int completed_spp = 0;      // samples per pixel in the returned image
+};
+
+struct RenderResult {
+    Image image;  // mean radiance per pixel of the completed samples
+    RenderStats stats;
+};
+
+// Same scene + options (seed, spp, max_depth, sampling) give the same image bit for bit whatever
+// `threads` is: every pixel sample draws from its own random stream.
+RenderResult render(const Scene& scene, const Accel& accel, const RenderOptions& options);
+
+}  // namespace sweeptrace
