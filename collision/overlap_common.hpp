@@ -27,6 +27,12 @@ inline bool finite(const dvec3& v) { return std::isfinite(v.x) && std::isfinite(
 // A radius is usable when it is finite and strictly positive (NaN fails the comparison).
 inline bool valid_radius(float r) { return r > 0.0f && std::isfinite(r); }
 
+// A Y-aligned cylinder or capsule is usable with a positive radius, height >= 0 (height 0 is a
+// disk or a sphere) and finite centre.
+inline bool valid_upright(const glm::vec3& center, float radius, float height) {
+    return valid_radius(radius) && height >= 0.0f && std::isfinite(height) && finite(center);
+}
+
 // The point-versus-(convex set grown by a ball) contact, which every round shape pair reduces
 // to. `offset` = p - q, where q is the point of the convex core nearest to p; the grown set is
 // everything within `radius` of the core. For p inside, the nearest boundary point is

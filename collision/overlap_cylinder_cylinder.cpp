@@ -15,8 +15,7 @@ namespace collision {
 
 Contact overlap(const Cylinder& a, const Cylinder& b) {
     using namespace detail;
-    if (!valid_radius(a.radius) || !valid_radius(b.radius) || !finite(a.center) || !finite(b.center)) return {};
-    if (!(a.height >= 0.0f) || !(b.height >= 0.0f) || !finite(a.height) || !finite(b.height)) return {};
+    if (!valid_upright(a.center, a.radius, a.height) || !valid_upright(b.center, b.radius, b.height)) return {};
     const dvec3 d = to_double(a.center) - to_double(b.center);
     const double cap_depth = 0.5 * (double(a.height) + double(b.height)) - std::abs(d.y);
     if (cap_depth < 0.0) return {};
