@@ -1,0 +1,319 @@
+#include "raytracer/scene/load_scene.hpp"
+
+#include <map>
+#include <stdexcept>
+#include <string>
+#include <system_error>
+
+#include <glm/geometric.hpp>
+
+#include "raytracer/input_error.hpp"
+#include "raytracer/scene/json_reader.hpp"
+#include "raytracer/scene/obj_loader.hpp"
+#include "raytracer/scene/scene_transform.hpp"
+#include "raytracer/scene/text_file.hpp"
+
+namespace sweeptrace {
+
+namespace {
+
+using scene_json::Node;
+
+// Generous limits that catch typos (an extra zero) before they turn into an hour-long render or a
+// failed allocation; nothing real comes near them.
+constexpr std::int64_t kMaxImageSide = 16384;
+constexpr std::int64_t kMaxSpp = 1 << 20;
+constexpr std::int64_t kMaxDepth = 1024;
+
+// Exactly zero in double: the inputs are floats, so differences and cross products of them are
+// (nearly) exact in double, and "zero" here means truly degenerate, not "small".
+bool parallel(const glm::dvec3& a, const glm::dvec3& b) { return glm::cross(a, b) == glm::dvec3(0.0); }
+
+Camera read_camera(const Node& node) {
+    node.require_object({"position", "look_at", "up", "fov", "aperture", "focus_distance"});
+    Camera camera;
+    camera.position = node.at("position").vec3();
+    camera.look_at = node.at("look_at").vec3();
+    if (camera.position == camera.look_at) node.at("look_at").fail("must differ from camera.position");
+    if (auto up = node.find("up")) {
+        camera.up = up->nonzero_vec3();
+        if (parallel(camera.up, camera.look_at - camera.position))
+            up->fail("must not be parallel to the viewing direction (look_at - position)");
+    }
+    if (auto fov = node.find("fov")) {
+        camera.vfov_degrees = fov->number();
+        if (!(camera.vfov_degrees > 0.0f && camera.vfov_degrees < 180.0f))
+            fov->fail("must be a vertical field of view in degrees, strictly between 0 and 180, got " + fov->shown());
+    }
+    if (auto aperture = node.find("aperture")) camera.aperture = aperture->number_at_least(0.0f, true);
+    if (auto focus = node.find("focus_distance")) camera.focus_distance = focus->number_at_least(0.0f, false);
+    return camera;
+}
+
+Film read_film(const Node& node) {
+    node.require_object({"width", "height", "spp", "max_depth"});
+    Film film;
+    film.width = static_cast<int>(node.at("width").integer(1, kMaxImageSide));
+    film.height = static_cast<int>(node.at("height").integer(1, kMaxImageSide));
+    if (auto spp = node.find("spp")) film.spp = static_cast<int>(spp->integer(1, kMaxSpp));
+    if (auto depth = node.find("max_depth")) film.max_depth = static_cast<int>(depth->integer(1, kMaxDepth));
+    return film;
+}
+
+Background read_background(const Node& node) {
+    node.require_object({"color", "sky"});
+    Background background;
+    const bool color = node.has("color"), sky = node.has("sky");
+    if (color == sky) node.fail("give exactly one of \"color\" or \"sky\"");
+    if (color) {
+        background.kind = Background::Kind::Constant;
+        background.color = node.at("color").vec3_at_least(0.0f);
+    } else {
+        const Node s = node.at("sky");
+        s.require_object({"horizon", "zenith"});
+        background.kind = Background::Kind::Sky;
+        background.horizon = s.at("horizon").vec3_at_least(0.0f);
+        background.zenith = s.at("zenith").vec3_at_least(0.0f);
+    }
+    return background;
+}
+
+glm::vec3 read_albedo(const Node& node) {
+    const glm::vec3 v = node.vec3_at_least(0.0f);
+    for (int i = 0; i < 3; ++i)
+        if (v[i] > 1.0f) node.element(static_cast<std::size_t>(i)).number_in(0.0f, 1.0f);
+    return v;
+}
+
+Material read_material(const Node& node, const std::string& name) {
+    if (!node.value().is_object()) node.fail("must be an object with a \"type\"");
+    const Node type_node = node.at("type");
+    const std::string type = type_node.string();
+    Material m;
+    m.name = name;
+    if (type == "diffuse") {
+        node.require_object({"type", "albedo", "emission"});
+        m.type = Material::Type::Diffuse;
+    } else if (type == "metal") {
+        node.require_object({"type", "albedo", "roughness", "emission"});
+        m.type = Material::Type::Metal;
+        if (auto r = node.find("roughness")) m.roughness = r->number_in(0.0f, 1.0f);
+    } else if (type == "dielectric") {
+        node.require_object({"type", "ior", "albedo", "emission"});
+        m.type = Material::Type::Dielectric;
+        m.albedo = glm::vec3(1.0f);  // clear glass unless tinted
+        if (auto ior = node.find("ior")) m.ior = ior->number_at_least(0.0f, false);
+    } else if (type == "emissive") {
+        node.require_object({"type", "emission"});
+        m.type = Material::Type::Emissive;
+        m.albedo = glm::vec3(0.0f);  // a light absorbs what reaches it
+    } else {
+        type_node.fail("unknown material type \"" + type + "\" (known: diffuse, metal, dielectric, emissive)");
+    }
+    if (auto albedo = node.find("albedo")) m.albedo = read_albedo(*albedo);
+    if (auto emission = node.find("emission")) {
+        m.emission = emission->vec3_at_least(0.0f);
+        if (m.type == Material::Type::Emissive && m.emission == glm::vec3(0.0f))
+            emission->fail("an emissive material must emit: some component must be > 0");
+    } else if (m.type == Material::Type::Emissive) {
+        node.at("emission");  // reports it missing
+    }
+    return m;
+}
+
+std::map<std::string, std::uint32_t> read_materials(const Node& node, std::vector<Material>& out) {
+    if (!node.value().is_object())
+        node.fail("must be an object mapping names to materials, got " + scene_json::describe_type(node.value()));
+    std::map<std::string, std::uint32_t> index;
+    for (const auto& item : node.value().items()) {
+        const Node m = node.at(item.key());
+        if (item.key().empty()) m.fail("a material name must not be empty");
+        index[item.key()] = static_cast<std::uint32_t>(out.size());
+        out.push_back(read_material(m, item.key()));
+    }
+    return index;
+}
+
+// Steps apply in list order: the first step acts on the object first.
+Transform read_transform(const Node& node) {
+    const std::size_t steps = node.array_size();
+    glm::dmat4 m(1.0);
+    for (std::size_t i = 0; i < steps; ++i) {
+        const Node step = node.element(i);
+        step.require_object({"translate", "rotate", "scale"});
+        if (step.value().size() != 1) step.fail("each step has exactly one of \"translate\", \"rotate\", \"scale\"");
+        glm::dmat4 s(1.0);
+        if (auto t = step.find("translate")) {
+            s = translation_matrix(glm::dvec3(t->vec3()));
+        } else if (auto r = step.find("rotate")) {
+            r->require_object({"axis", "degrees"});
+            s = rotation_matrix(glm::dvec3(r->at("axis").nonzero_vec3()), r->at("degrees").number());
+        } else {
+            const Node sc = step.at("scale");
+            // Positive only: a mirror would flip the front side of quads, disks and triangles.
+            const glm::vec3 f = sc.value().is_number() ? glm::vec3(sc.number_at_least(0.0f, false)) : sc.vec3();
+            for (int k = 0; k < 3; ++k)
+                if (!(f[k] > 0.0f)) sc.element(static_cast<std::size_t>(k)).number_at_least(0.0f, false);
+            s = scale_matrix(glm::dvec3(f));
+        }
+        m = s * m;
+    }
+    try {
+        return Transform::from_matrix(glm::mat4(m));
+    } catch (const std::invalid_argument& e) {
+        node.fail(e.what());
+    }
+}
+
+glm::vec3 center_or_origin(const Node& node) {
+    if (auto c = node.find("center")) return c->vec3();
+    return glm::vec3(0.0f);
+}
+
+collision::Aabb read_box(const Node& node) {
+    const bool by_center = node.has("center") || node.has("size");
+    const bool by_bounds = node.has("min") || node.has("max");
+    if (by_center == by_bounds) node.fail("give either \"center\" and \"size\", or \"min\" and \"max\"");
+    collision::Aabb box;
+    if (by_center) {
+        box.center = center_or_origin(node);
+        const Node size = node.at("size");
+        box.size = size.vec3();
+        for (int k = 0; k < 3; ++k)
+            if (!(box.size[k] > 0.0f)) size.element(static_cast<std::size_t>(k)).number_at_least(0.0f, false);
+    } else {
+        const glm::vec3 lo = node.at("min").vec3();
+        const Node max = node.at("max");
+        const glm::vec3 hi = max.vec3();
+        for (int k = 0; k < 3; ++k)
+            if (!(hi[k] > lo[k]))
+                max.element(static_cast<std::size_t>(k)).fail("must be > min[" + std::to_string(k) + "] (" +
+                                                              scene_json::format_number(lo[k]) + ")");
+        box.center = 0.5f * (lo + hi);
+        box.size = hi - lo;
+    }
+    return box;
+}
+
+class ObjectReader {
+public:
+    ObjectReader(Scene& scene, std::map<std::string, std::uint32_t> materials)
+        : scene_(scene), materials_(std::move(materials)) {}
+
+    void read_all(const Node& objects) {
+        const std::size_t n = objects.array_size();
+        scene_.objects.reserve(n);
+        for (std::size_t i = 0; i < n; ++i) scene_.objects.push_back(read(objects.element(i)));
+    }
+
+private:
+    Object read(const Node& node) {
+        if (!node.value().is_object()) node.fail("must be an object with a \"type\"");
+        const Node type_node = node.at("type");
+        const std::string type = type_node.string();
+        Object object;
+        if (type == "sphere") {
+            node.require_object({"type", "material", "transform", "name", "center", "radius"});
+            object.shape = collision::Sphere{center_or_origin(node), node.at("radius").number_at_least(0.0f, false)};
+        } else if (type == "box") {
+            node.require_object({"type", "material", "transform", "name", "center", "size", "min", "max"});
+            object.shape = read_box(node);
+        } else if (type == "cylinder") {
+            node.require_object({"type", "material", "transform", "name", "center", "radius", "height"});
+            object.shape = collision::Cylinder{center_or_origin(node), node.at("radius").number_at_least(0.0f, false),
+                                               node.at("height").number_at_least(0.0f, false)};
+        } else if (type == "capsule") {
+            node.require_object({"type", "material", "transform", "name", "center", "radius", "height"});
+            // height 0 is a sphere: allowed, the hemispheres alone close it.
+            object.shape = collision::Capsule{center_or_origin(node), node.at("radius").number_at_least(0.0f, false),
+                                              node.at("height").number_at_least(0.0f, true)};
+        } else if (type == "ellipsoid") {
+            node.require_object({"type", "material", "transform", "name", "center", "radii"});
+            const Node radii = node.at("radii");
+            const glm::vec3 r = radii.vec3();
+            for (int k = 0; k < 3; ++k)
+                if (!(r[k] > 0.0f)) radii.element(static_cast<std::size_t>(k)).number_at_least(0.0f, false);
+            object.shape = collision::Ellipsoid{center_or_origin(node), r};
+        } else if (type == "disk") {
+            node.require_object({"type", "material", "transform", "name", "center", "normal", "radius"});
+            glm::vec3 normal(0.0f, 1.0f, 0.0f);
+            if (auto n = node.find("normal")) normal = glm::vec3(glm::normalize(glm::dvec3(n->nonzero_vec3())));
+            object.shape = collision::Disk{center_or_origin(node), normal, node.at("radius").number_at_least(0.0f, false)};
+        } else if (type == "quad") {
+            node.require_object({"type", "material", "transform", "name", "corner", "edge_u", "edge_v"});
+            const collision::Quad q{node.at("corner").vec3(), node.at("edge_u").vec3(), node.at("edge_v").vec3()};
+            if (parallel(q.edge_u, q.edge_v)) node.fail("edge_u and edge_v must not be parallel (or zero): the quad has no area");
+            object.shape = q;
+        } else if (type == "triangle") {
+            node.require_object({"type", "material", "transform", "name", "a", "b", "c"});
+            const collision::Triangle t{node.at("a").vec3(), node.at("b").vec3(), node.at("c").vec3()};
+            if (parallel(glm::dvec3(t.b) - glm::dvec3(t.a), glm::dvec3(t.c) - glm::dvec3(t.a)))
+                node.fail("a, b and c are collinear: the triangle has no area");
+            object.shape = t;
+        } else if (type == "mesh") {
+            node.require_object({"type", "material", "transform", "name", "file"});
+            object.shape = MeshInstance{mesh_index(node.at("file"))};
+        } else {
+            type_node.fail("unknown shape type \"" + type +
+                           "\" (known: sphere, box, cylinder, capsule, ellipsoid, disk, quad, triangle, mesh)");
+        }
+
+        const Node material = node.at("material");
+        const std::string material_name = material.string();
+        const auto it = materials_.find(material_name);
+        if (it == materials_.end()) {
+            std::string known;
+            for (const auto& [name, index] : materials_) known += (known.empty() ? "" : ", ") + name;
+            material.fail("unknown material \"" + material_name + "\" (defined: " + (known.empty() ? "none" : known) + ")");
+        }
+        object.material = it->second;
+        if (auto t = node.find("transform")) object.transform = read_transform(*t);
+        object.name = node.has("name") ? node.at("name").string() : node.path() + " (" + type + ")";
+        return object;
+    }
+
+    std::uint32_t mesh_index(const Node& file_node) {
+        const std::string relative = file_node.string();
+        if (relative.empty()) file_node.fail("must name an OBJ file");
+        const std::filesystem::path path = scene_.source.parent_path() / relative;
+        std::error_code ec;
+        if (!std::filesystem::is_regular_file(path, ec))
+            file_node.fail("mesh file \"" + relative + "\" not found (looked for " + path.string() + ")");
+        const std::string key = std::filesystem::weakly_canonical(path, ec).string();
+        if (auto it = mesh_by_file_.find(key); it != mesh_by_file_.end()) return it->second;
+        try {
+            scene_.meshes.push_back(load_obj(path));
+        } catch (const InputError& e) {
+            file_node.fail(e.what());
+        }
+        const auto index = static_cast<std::uint32_t>(scene_.meshes.size() - 1);
+        mesh_by_file_.emplace(key, index);
+        return index;
+    }
+
+    Scene& scene_;
+    std::map<std::string, std::uint32_t> materials_;
+    std::map<std::string, std::uint32_t> mesh_by_file_;
+};
+
+}  // namespace
+
+Scene load_scene(const std::filesystem::path& file) {
+    const std::string text = read_text_file(file, "scene");
+    const nlohmann::json doc = scene_json::parse(text, file);
+    const Node root(doc, file);
+    root.require_object({"description", "camera", "film", "background", "seed", "materials", "objects"});
+
+    Scene scene;
+    scene.source = file;
+    if (auto d = root.find("description")) d->string();
+    scene.camera = read_camera(root.at("camera"));
+    scene.film = read_film(root.at("film"));
+    if (auto b = root.find("background")) scene.background = read_background(*b);
+    if (auto s = root.find("seed")) scene.seed = s->unsigned_integer();
+    ObjectReader objects(scene, read_materials(root.at("materials"), scene.materials));
+    objects.read_all(root.at("objects"));
+    return scene;
+}
+
+}  // namespace sweeptrace

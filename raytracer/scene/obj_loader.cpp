@@ -1,0 +1,161 @@
+#include "raytracer/scene/obj_loader.hpp"
+
+#include <cmath>
+#include <cstdint>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+#include <glm/geometric.hpp>
+#include <tiny_obj_loader.h>
+
+#include "raytracer/input_error.hpp"
+#include "raytracer/scene/text_file.hpp"
+
+namespace sweeptrace {
+
+namespace {
+
+// Line numbers of the `f` statements, in file order. tinyobjloader keeps faces in file order
+// but forgets their lines; when the counts agree, messages can point at the line. It also drops
+// faces with fewer than 3 corners with only a warning, and stores the corner count in a byte, so
+// both are rejected here, where the line is known.
+std::vector<std::size_t> face_lines(const std::string& text, const std::string& name) {
+    std::vector<std::size_t> lines;
+    std::size_t line = 1;
+    std::size_t i = 0;
+    auto blank = [](char c) { return c == ' ' || c == '\t' || c == '\r'; };
+    while (i < text.size()) {
+        std::size_t end = text.find('\n', i);
+        if (end == std::string::npos) end = text.size();
+        std::size_t j = i;
+        while (j < end && blank(text[j])) ++j;
+        if (j + 1 < end && text[j] == 'f' && blank(text[j + 1])) {
+            lines.push_back(line);
+            std::size_t corners = 0;
+            for (std::size_t k = j + 1; k < end; ++k)
+                if (!blank(text[k]) && blank(text[k - 1])) ++corners;
+            if (corners < 3 || corners > 255)
+                throw InputError(name + ": line " + std::to_string(line) + ": a face needs 3 to 255 vertices, this one has " +
+                                 std::to_string(corners));
+        }
+        i = end + 1;
+        ++line;
+    }
+    return lines;
+}
+
+std::string first_line(const std::string& s) {
+    std::string out = s.substr(0, s.find('\n'));
+    while (!out.empty() && (out.back() == '\r' || out.back() == ' ')) out.pop_back();
+    return out;
+}
+
+}  // namespace
+
+Mesh load_obj(const std::filesystem::path& file) {
+    const std::string text = read_text_file(file, "mesh");
+    const std::string name = file.string();
+
+    // triangulate = false: tinyobjloader's triangulation reads vertex positions before anyone has
+    // checked the indices; we check them first and split polygons ourselves.
+    tinyobj::ObjReaderConfig config;
+    config.triangulate = false;
+    config.vertex_color = false;
+    tinyobj::ObjReader reader;
+    // From a string, so that an `mtllib` line cannot make it open other files: materials come
+    // from the scene, not the OBJ.
+    if (!reader.ParseFromString(text, std::string(), config))
+        throw InputError(name + ": invalid OBJ: " + first_line(reader.Error()));
+
+    const tinyobj::attrib_t& attrib = reader.GetAttrib();
+    const std::size_t vertex_count = attrib.vertices.size() / 3;
+    const std::size_t normal_count = attrib.normals.size() / 3;
+    const std::vector<std::size_t> lines = face_lines(text, name);
+
+    std::size_t face_total = 0;
+    for (const tinyobj::shape_t& shape : reader.GetShapes()) face_total += shape.mesh.num_face_vertices.size();
+    if (face_total == 0) throw InputError(name + ": contains no faces (no `f` lines), nothing to render");
+    const bool know_lines = lines.size() == face_total;
+    auto face_where = [&](std::size_t face) {
+        return know_lines ? "line " + std::to_string(lines[face]) : "face " + std::to_string(face + 1);
+    };
+
+    // First pass: every index in range, and do all corners carry a usable normal?
+    bool all_normals = normal_count > 0;
+    std::size_t face = 0;
+    for (const tinyobj::shape_t& shape : reader.GetShapes()) {
+        std::size_t offset = 0;
+        for (const unsigned char corners : shape.mesh.num_face_vertices) {
+            if (offset + corners > shape.mesh.indices.size())
+                throw InputError(name + ": " + face_where(face) + ": tinyobjloader returned fewer indices than corners");
+            for (std::size_t k = 0; k < corners; ++k) {
+                const tinyobj::index_t& idx = shape.mesh.indices[offset + k];
+                if (idx.vertex_index < 0 || static_cast<std::size_t>(idx.vertex_index) >= vertex_count)
+                    throw InputError(name + ": " + face_where(face) + ": vertex index out of range (refers to vertex " +
+                                     std::to_string(static_cast<long long>(idx.vertex_index) + 1) + ", the file has " +
+                                     std::to_string(vertex_count) + ")");
+                if (idx.normal_index < 0) {
+                    // A relative index (-k) past the start also lands below 0; only -1 means "none".
+                    if (idx.normal_index != -1)
+                        throw InputError(name + ": " + face_where(face) + ": normal index out of range");
+                    all_normals = false;
+                } else if (static_cast<std::size_t>(idx.normal_index) >= normal_count) {
+                    throw InputError(name + ": " + face_where(face) + ": normal index out of range (refers to normal " +
+                                     std::to_string(idx.normal_index + 1) + ", the file has " +
+                                     std::to_string(normal_count) + ")");
+                }
+            }
+            offset += corners;
+            ++face;
+        }
+    }
+
+    for (std::size_t v = 0; v < vertex_count; ++v)
+        for (int c = 0; c < 3; ++c)
+            if (!std::isfinite(attrib.vertices[3 * v + static_cast<std::size_t>(c)]))
+                throw InputError(name + ": vertex " + std::to_string(v + 1) + " has a coordinate that is not finite");
+    std::vector<glm::vec3> unit_normals;
+    if (all_normals) {
+        unit_normals.reserve(normal_count);
+        for (std::size_t n = 0; n < normal_count && all_normals; ++n) {
+            const glm::dvec3 d(attrib.normals[3 * n], attrib.normals[3 * n + 1], attrib.normals[3 * n + 2]);
+            const double len = glm::length(d);
+            if (!std::isfinite(len) || len == 0.0) all_normals = false;  // unusable: shade flat instead
+            else unit_normals.push_back(glm::vec3(d / len));
+        }
+    }
+
+    // Second pass: one output vertex per distinct (position, normal) pair actually used.
+    Mesh mesh;
+    mesh.source = name;
+    std::unordered_map<std::uint64_t, std::uint32_t> remap;
+    auto vertex_for = [&](const tinyobj::index_t& idx) {
+        const std::uint64_t n = all_normals ? static_cast<std::uint64_t>(idx.normal_index) : 0;
+        const std::uint64_t key = (static_cast<std::uint64_t>(idx.vertex_index) << 32) | n;
+        const auto [it, inserted] = remap.try_emplace(key, static_cast<std::uint32_t>(mesh.triangles.vertices.size()));
+        if (inserted) {
+            const std::size_t v = static_cast<std::size_t>(idx.vertex_index);
+            mesh.triangles.vertices.emplace_back(attrib.vertices[3 * v], attrib.vertices[3 * v + 1],
+                                                 attrib.vertices[3 * v + 2]);
+            if (all_normals) mesh.vertex_normals.push_back(unit_normals[static_cast<std::size_t>(idx.normal_index)]);
+        }
+        return it->second;
+    };
+    for (const tinyobj::shape_t& shape : reader.GetShapes()) {
+        std::size_t offset = 0;
+        for (const unsigned char corners : shape.mesh.num_face_vertices) {
+            const std::uint32_t first = vertex_for(shape.mesh.indices[offset]);
+            std::uint32_t previous = vertex_for(shape.mesh.indices[offset + 1]);
+            for (std::size_t k = 2; k < corners; ++k) {
+                const std::uint32_t current = vertex_for(shape.mesh.indices[offset + k]);
+                mesh.triangles.indices.emplace_back(first, previous, current);
+                previous = current;
+            }
+            offset += corners;
+        }
+    }
+    return mesh;
+}
+
+}  // namespace sweeptrace

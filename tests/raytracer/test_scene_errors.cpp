@@ -1,0 +1,218 @@
+// Bad scene input: every case must throw InputError whose message names the file and points at
+// the culprit (JSON path, or line:column for text that is not JSON).
+#include <catch2/catch.hpp>
+
+#include <string>
+
+#include "raytracer/input_error.hpp"
+#include "raytracer/scene/load_scene.hpp"
+#include "scene_test_files.hpp"
+
+using sweeptrace::InputError;
+using sweeptrace::load_scene;
+using sweeptrace::test::TempDir;
+
+namespace {
+
+const char* const kMaterials = R"({ "m": { "type": "diffuse", "albedo": [0.5, 0.5, 0.5] } })";
+
+// A valid scene around the given pieces, so each case changes exactly one thing.
+std::string scene_text(const std::string& objects, const std::string& materials = kMaterials,
+                       const std::string& film = R"({ "width": 8, "height": 6 })",
+                       const std::string& camera = R"({ "position": [0, 0, 5], "look_at": [0, 0, 0] })",
+                       const std::string& extra = "") {
+    return "{\n  \"camera\": " + camera + ",\n  \"film\": " + film + ",\n  \"materials\": " + materials +
+           ",\n" + extra + "  \"objects\": " + objects + "\n}\n";
+}
+
+const char* const kSphere = R"([{ "type": "sphere", "radius": 1, "material": "m" }])";
+
+// Loads `text` from a fresh file and returns the InputError message; fails the test if it loads.
+std::string load_error(const TempDir& dir, const std::string& text) {
+    const auto file = dir.write("bad.json", text);
+    try {
+        load_scene(file);
+    } catch (const InputError& e) {
+        const std::string message = e.what();
+        // Every message starts with the file it is about.
+        CHECK(message.rfind(file.string(), 0) == 0);
+        return message;
+    }
+    FAIL("expected InputError for:\n" << text);
+    return {};
+}
+
+}  // namespace
+
+TEST_CASE("scene errors: the valid base scene loads", "[scene][errors]") {
+    TempDir dir;
+    const auto scene = load_scene(dir.write("ok.json", scene_text(kSphere)));
+    CHECK(scene.objects.size() == 1);
+    CHECK(scene.materials.size() == 1);
+}
+
+TEST_CASE("scene errors: missing file and invalid JSON with line and column", "[scene][errors]") {
+    TempDir dir;
+    try {
+        load_scene(dir.path() / "nothere.json");
+        FAIL("missing file loaded");
+    } catch (const InputError& e) {
+        CHECK_THAT(e.what(), Catch::Contains("nothere.json") && Catch::Contains("no such file"));
+    }
+    // The stray comma is on line 3, column 12.
+    CHECK_THAT(load_error(dir, "{\n  \"camera\": {\n    \"fov\": ,\n"), Catch::Contains("bad.json:3:12: invalid JSON"));
+    // JSON has no NaN literal: a NaN can only arrive as text, which is a syntax error with its place.
+    CHECK_THAT(load_error(dir, "{\n \"seed\": NaN }"), Catch::Contains("bad.json:2:") && Catch::Contains("invalid JSON"));
+    CHECK_THAT(load_error(dir, ""), Catch::Contains("bad.json:1:1: invalid JSON"));
+}
+
+TEST_CASE("scene errors: numbers that are not finite, or not finite in float", "[scene][errors]") {
+    TempDir dir;
+    CHECK_THAT(load_error(dir, scene_text(R"([{ "type": "sphere", "radius": 1e999, "material": "m" }])")),
+               Catch::Contains("bad.json:5:45: number 1e999 is out of range"));
+    CHECK_THAT(load_error(dir, scene_text(R"([{ "type": "sphere", "radius": 1e39, "material": "m" }])")),
+               Catch::Contains("objects[0].radius: is too large for single precision"));
+}
+
+TEST_CASE("scene errors: unknown keys, shapes and material types name their JSON path", "[scene][errors]") {
+    TempDir dir;
+    CHECK_THAT(load_error(dir, scene_text(kSphere, kMaterials, R"({ "width": 8, "height": 6 })",
+                                          R"({ "position": [0, 0, 5], "look_at": [0, 0, 0] })", "  \"camra\": {},\n")),
+               Catch::Contains("bad.json: camra: unknown key"));
+    CHECK_THAT(load_error(dir, scene_text(R"([{ "type": "sphere", "radius": 1, "material": "m" },
+        { "type": "box", "size": [1, 1, 1], "radius": 2, "material": "m" }])")),
+               Catch::Contains("objects[1].radius: unknown key") && Catch::Contains("allowed here:"));
+    CHECK_THAT(load_error(dir, scene_text(R"([{ "type": "torus", "radius": 1, "material": "m" }])")),
+               Catch::Contains("objects[0].type: unknown shape type \"torus\""));
+    CHECK_THAT(load_error(dir, scene_text(kSphere, R"({ "m": { "type": "plastic" } })")),
+               Catch::Contains("materials.m.type: unknown material type \"plastic\""));
+    CHECK_THAT(load_error(dir, scene_text(kSphere, R"({ "m": { "type": "diffuse", "ior": 1.5 } })")),
+               Catch::Contains("materials.m.ior: unknown key"));
+    CHECK_THAT(load_error(dir, scene_text(R"([{ "type": "sphere", "radius": 1, "material": "m", "transform": [{ "shear": 1 }] }])")),
+               Catch::Contains("objects[0].transform[0].shear: unknown key"));
+    CHECK_THAT(load_error(dir, scene_text(R"([{ "type": "sphere", "radius": 1, "radius": 2, "material": "m" }])")),
+               Catch::Contains("objects[0].radius: duplicate key"));
+}
+
+TEST_CASE("scene errors: wrong JSON types", "[scene][errors]") {
+    TempDir dir;
+    CHECK_THAT(load_error(dir, scene_text(R"([{ "type": "sphere", "radius": "big", "material": "m" }])")),
+               Catch::Contains("objects[0].radius: must be a number, got a string"));
+    CHECK_THAT(load_error(dir, scene_text(R"([{ "type": "sphere", "center": [1, 2], "radius": 1, "material": "m" }])")),
+               Catch::Contains("objects[0].center: must be an array of 3 numbers"));
+    CHECK_THAT(load_error(dir, scene_text(R"([{ "type": "sphere", "center": [1, true, 2], "radius": 1, "material": "m" }])")),
+               Catch::Contains("objects[0].center[1]: must be a number, got a boolean"));
+    CHECK_THAT(load_error(dir, scene_text(kSphere, kMaterials, R"({ "width": 8.5, "height": 6 })")),
+               Catch::Contains("film.width: must be an integer, got 8.5"));
+    CHECK_THAT(load_error(dir, scene_text(R"({ "type": "sphere" })")),
+               Catch::Contains("objects: must be an array, got an object"));
+    CHECK_THAT(load_error(dir, scene_text(R"([{ "type": 3, "material": "m" }])")),
+               Catch::Contains("objects[0].type: must be a string, got a number"));
+    CHECK_THAT(load_error(dir, "[1, 2]"), Catch::Contains("bad.json: (top level): must be an object"));
+}
+
+TEST_CASE("scene errors: sizes, ranges and degenerate geometry", "[scene][errors]") {
+    TempDir dir;
+    CHECK_THAT(load_error(dir, scene_text(R"([{ "type": "sphere", "radius": -1, "material": "m" }])")),
+               Catch::Contains("objects[0].radius: must be > 0, got -1"));
+    CHECK_THAT(load_error(dir, scene_text(R"([{ "type": "cylinder", "radius": 1, "height": 0, "material": "m" }])")),
+               Catch::Contains("objects[0].height: must be > 0, got 0"));
+    CHECK_THAT(load_error(dir, scene_text(R"([{ "type": "ellipsoid", "radii": [1, 0, 1], "material": "m" }])")),
+               Catch::Contains("objects[0].radii[1]: must be > 0, got 0"));
+    CHECK_THAT(load_error(dir, scene_text(R"([{ "type": "box", "size": [1, -2, 1], "material": "m" }])")),
+               Catch::Contains("objects[0].size[1]: must be > 0, got -2"));
+    CHECK_THAT(load_error(dir, scene_text(R"([{ "type": "box", "min": [0, 0, 0], "max": [1, 1, 0], "material": "m" }])")),
+               Catch::Contains("objects[0].max[2]: must be > min[2]"));
+    CHECK_THAT(load_error(dir, scene_text(R"([{ "type": "box", "center": [0, 0, 0], "min": [0, 0, 0], "max": [1, 1, 1], "material": "m" }])")),
+               Catch::Contains("objects[0]: give either \"center\" and \"size\", or \"min\" and \"max\""));
+    CHECK_THAT(load_error(dir, scene_text(R"([{ "type": "quad", "corner": [0, 0, 0], "edge_u": [1, 0, 0], "edge_v": [2, 0, 0], "material": "m" }])")),
+               Catch::Contains("objects[0]: edge_u and edge_v must not be parallel"));
+    CHECK_THAT(load_error(dir, scene_text(R"([{ "type": "triangle", "a": [0, 0, 0], "b": [1, 1, 1], "c": [2, 2, 2], "material": "m" }])")),
+               Catch::Contains("objects[0]: a, b and c are collinear"));
+    CHECK_THAT(load_error(dir, scene_text(R"([{ "type": "disk", "normal": [0, 0, 0], "radius": 1, "material": "m" }])")),
+               Catch::Contains("objects[0].normal: must not be the zero vector"));
+    CHECK_THAT(load_error(dir, scene_text(kSphere, kMaterials, R"({ "width": 0, "height": 6 })")),
+               Catch::Contains("film.width: must be in [1, 16384], got 0"));
+    CHECK_THAT(load_error(dir, scene_text(kSphere, kMaterials, R"({ "width": 8, "height": 6, "spp": 0 })")),
+               Catch::Contains("film.spp: must be in [1, "));
+    CHECK_THAT(load_error(dir, scene_text(kSphere, kMaterials, R"({ "width": 8, "height": 6 })",
+                                          R"({ "position": [0, 0, 5], "look_at": [0, 0, 0], "fov": 180 })")),
+               Catch::Contains("camera.fov: must be a vertical field of view in degrees"));
+    CHECK_THAT(load_error(dir, scene_text(kSphere, kMaterials, R"({ "width": 8, "height": 6 })",
+                                          R"({ "position": [0, 0, 5], "look_at": [0, 0, 0], "up": [0, 0, 2] })")),
+               Catch::Contains("camera.up: must not be parallel to the viewing direction"));
+    CHECK_THAT(load_error(dir, scene_text(kSphere, kMaterials, R"({ "width": 8, "height": 6 })",
+                                          R"({ "position": [0, 0, 0], "look_at": [0, 0, 0] })")),
+               Catch::Contains("camera.look_at: must differ from camera.position"));
+    CHECK_THAT(load_error(dir, scene_text(kSphere, R"({ "m": { "type": "diffuse", "albedo": [0.5, 1.5, 0.5] } })")),
+               Catch::Contains("materials.m.albedo[1]: must be in [0, 1], got 1.5"));
+    CHECK_THAT(load_error(dir, scene_text(kSphere, R"({ "m": { "type": "metal", "roughness": -0.1 } })")),
+               Catch::Contains("materials.m.roughness: must be in [0, 1]"));
+    CHECK_THAT(load_error(dir, scene_text(kSphere, R"({ "m": { "type": "dielectric", "ior": 0 } })")),
+               Catch::Contains("materials.m.ior: must be > 0"));
+    CHECK_THAT(load_error(dir, scene_text(kSphere, R"({ "m": { "type": "emissive" } })")),
+               Catch::Contains("materials.m.emission: missing (required)"));
+    CHECK_THAT(load_error(dir, scene_text(kSphere, R"({ "m": { "type": "emissive", "emission": [0, 0, 0] } })")),
+               Catch::Contains("materials.m.emission: an emissive material must emit"));
+    CHECK_THAT(load_error(dir, scene_text(kSphere, kMaterials, R"({ "width": 8, "height": 6 })",
+                                          R"({ "position": [0, 0, 5], "look_at": [0, 0, 0] })", "  \"seed\": -3,\n")),
+               Catch::Contains("seed: must be >= 0, got -3"));
+}
+
+TEST_CASE("scene errors: material references", "[scene][errors]") {
+    TempDir dir;
+    CHECK_THAT(load_error(dir, scene_text(R"([{ "type": "sphere", "radius": 1, "material": "nope" }])")),
+               Catch::Contains("objects[0].material: unknown material \"nope\" (defined: m)"));
+    CHECK_THAT(load_error(dir, scene_text(R"([{ "type": "sphere", "radius": 1 }])")),
+               Catch::Contains("objects[0].material: missing (required)"));
+    CHECK_THAT(load_error(dir, scene_text(kSphere, R"({ "my glass": { "type": "glass" } })")),
+               Catch::Contains("materials[\"my glass\"].type: unknown material type"));
+}
+
+TEST_CASE("scene errors: transforms", "[scene][errors]") {
+    TempDir dir;
+    auto with_transform = [](const std::string& steps) {
+        return scene_text(R"([{ "type": "sphere", "radius": 1, "material": "m", "transform": )" + steps + " }]");
+    };
+    CHECK_THAT(load_error(dir, with_transform(R"([{ "translate": [1, 0, 0] }, { "scale": [1, 0, 1] }])")),
+               Catch::Contains("objects[0].transform[1].scale[1]: must be > 0, got 0"));
+    CHECK_THAT(load_error(dir, with_transform(R"([{ "scale": -2 }])")),
+               Catch::Contains("objects[0].transform[0].scale: must be > 0, got -2"));
+    CHECK_THAT(load_error(dir, with_transform(R"([{ "translate": [1, 0, 0], "scale": 2 }])")),
+               Catch::Contains("objects[0].transform[0]: each step has exactly one of"));
+    CHECK_THAT(load_error(dir, with_transform(R"([{ "rotate": { "axis": [0, 0, 0], "degrees": 30 } }])")),
+               Catch::Contains("objects[0].transform[0].rotate.axis: must not be the zero vector"));
+    CHECK_THAT(load_error(dir, with_transform(R"([{ "rotate": { "axis": [0, 1, 0] } }])")),
+               Catch::Contains("objects[0].transform[0].rotate.degrees: missing (required)"));
+    // Each step is fine; together they underflow float to a singular matrix.
+    CHECK_THAT(load_error(dir, with_transform(R"([{ "scale": 1e-30 }, { "scale": 1e-30 }])")),
+               Catch::Contains("objects[0].transform: transform is singular"));
+}
+
+TEST_CASE("scene errors: OBJ meshes", "[scene][errors]") {
+    TempDir dir;
+    const std::string mesh_object = R"([{ "type": "mesh", "file": "meshes/m.obj", "material": "m" }])";
+    CHECK_THAT(load_error(dir, scene_text(mesh_object)),
+               Catch::Contains("objects[0].file: mesh file \"meshes/m.obj\" not found"));
+
+    dir.write("meshes/m.obj", "# only a comment\nv 0 0 0\n");
+    CHECK_THAT(load_error(dir, scene_text(mesh_object)),
+               Catch::Contains("objects[0].file: ") && Catch::Contains("m.obj: contains no faces"));
+
+    dir.write("meshes/m.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\nf 1 2 4\n");
+    CHECK_THAT(load_error(dir, scene_text(mesh_object)),
+               Catch::Contains("m.obj: line 5: vertex index out of range (refers to vertex 4, the file has 3)"));
+
+    dir.write("meshes/m.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf -1 -2 -4\n");
+    CHECK_THAT(load_error(dir, scene_text(mesh_object)), Catch::Contains("m.obj: line 4: vertex index out of range"));
+
+    dir.write("meshes/m.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 1\nf 1//1 2//1 3//2\n");
+    CHECK_THAT(load_error(dir, scene_text(mesh_object)),
+               Catch::Contains("m.obj: line 5: normal index out of range (refers to normal 2, the file has 1)"));
+
+    dir.write("meshes/m.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 0 1 2\n");
+    CHECK_THAT(load_error(dir, scene_text(mesh_object)), Catch::Contains("m.obj: invalid OBJ") && Catch::Contains("line 4"));
+
+    dir.write("meshes/m.obj", "v 0 0 0\nv 1 0 0\nf 1 2\n");
+    CHECK_THAT(load_error(dir, scene_text(mesh_object)), Catch::Contains("m.obj: line 3: a face needs 3 to 255 vertices, this one has 2"));
+}
