@@ -7,6 +7,7 @@
 #include <cfloat>
 #include <cmath>
 #include <random>
+#include <string>
 #include <variant>
 
 #include <glm/geometric.hpp>
@@ -29,6 +30,17 @@ long double rodrigues(const LVec& axis, long double degrees, int row, int col) {
     const long double c = std::cos(th), s = std::sin(th);
     const long double cross[3][3] = {{0, -u[2], u[1]}, {u[2], 0, -u[0]}, {-u[1], u[0], 0}};
     return (row == col ? c : 0.0L) + s * cross[row][col] + (1.0L - c) * u[static_cast<std::size_t>(row)] * u[static_cast<std::size_t>(col)];
+}
+
+// The transform the loader builds for a unit sphere carrying `steps` (a JSON list).
+sweeptrace::Transform loaded_transform(const std::string& steps) {
+    sweeptrace::test::TempDir dir;
+    const auto scene = sweeptrace::load_scene(dir.write("s.json", R"({
+      "camera": { "position": [0, 0, 5], "look_at": [0, 0, 0] },
+      "film": { "width": 4, "height": 4 },
+      "materials": { "m": { "type": "diffuse" } },
+      "objects": [{ "type": "sphere", "radius": 1, "material": "m", "transform": )" + steps + "}]}"));
+    return scene.objects.at(0).transform;
 }
 
 }  // namespace
@@ -63,29 +75,15 @@ TEST_CASE("transform: rotation is right-handed and steps apply in list order", "
     CHECK(x.x == Approx(0.0).margin(1e-15));
     CHECK(x.z == Approx(-1.0));
 
-    sweeptrace::test::TempDir dir;
-    const auto scene = sweeptrace::load_scene(dir.write("s.json", R"({
-      "camera": { "position": [0, 0, 5], "look_at": [0, 0, 0] },
-      "film": { "width": 4, "height": 4 },
-      "materials": { "m": { "type": "diffuse" } },
-      "objects": [{ "type": "sphere", "radius": 1, "material": "m",
-                    "transform": [{ "scale": [2, 1, 1] }, { "translate": [10, 0, 0] }] }]})"));
+    const auto t = loaded_transform(R"([{ "scale": [2, 1, 1] }, { "translate": [10, 0, 0] }])");
     // Scale first, then translate: (1,0,0) -> (2,0,0) -> (12,0,0). The other order would give 22.
-    const glm::vec4 p = scene.objects[0].transform.to_world * glm::vec4(1.0f, 0.0f, 0.0f, 1.0f);
+    const glm::vec4 p = t.to_world * glm::vec4(1.0f, 0.0f, 0.0f, 1.0f);
     CHECK(p.x == 12.0f);
 }
 
 TEST_CASE("transform: normals of a rotated, non-uniformly scaled sphere come out right", "[scene][transform]") {
-    sweeptrace::test::TempDir dir;
-    const auto scene = sweeptrace::load_scene(dir.write("s.json", R"({
-      "camera": { "position": [0, 0, 5], "look_at": [0, 0, 0] },
-      "film": { "width": 4, "height": 4 },
-      "materials": { "m": { "type": "diffuse" } },
-      "objects": [{ "type": "sphere", "radius": 1, "material": "m",
-                    "transform": [{ "scale": [1, 3, 0.5] },
-                                  { "rotate": { "axis": [1, 1, 0], "degrees": 40 } },
-                                  { "translate": [2, -1, 4] }] }]})"));
-    const sweeptrace::Transform& t = scene.objects[0].transform;
+    const sweeptrace::Transform t = loaded_transform(R"([{ "scale": [1, 3, 0.5] },
+        { "rotate": { "axis": [1, 1, 0], "degrees": 40 } }, { "translate": [2, -1, 4] }])");
     CHECK_FALSE(t.identity);
 
     // Reference: M = T R S, so the world normal at object point p (normal p) is R S⁻¹ p, computed
