@@ -3,6 +3,8 @@
 
 #include <cmath>
 #include <filesystem>
+#include <map>
+#include <utility>
 #include <string>
 #include <variant>
 
@@ -142,4 +144,63 @@ TEST_CASE("obj: the shared test meshes load with their documented triangle count
     CHECK(load_obj(meshes / "spot.obj").triangles.triangle_count() == 5856);
     CHECK(load_obj(meshes / "suzanne.obj").triangles.triangle_count() == 968);
     CHECK(load_obj(meshes / "fandisk.obj").triangles.triangle_count() == 12946);
+}
+
+TEST_CASE("scenes: primitives has every shape and every material, each object transformed", "[scene]") {
+    const Scene scene = load_scene(kScenes / "primitives.json");
+    CHECK(count_shapes<collision::Sphere>(scene) == 1);
+    CHECK(count_shapes<collision::Aabb>(scene) == 1);
+    CHECK(count_shapes<collision::Cylinder>(scene) == 1);
+    CHECK(count_shapes<collision::Capsule>(scene) == 1);
+    CHECK(count_shapes<collision::Ellipsoid>(scene) == 1);
+    CHECK(count_shapes<collision::Disk>(scene) == 1);
+    CHECK(count_shapes<collision::Triangle>(scene) == 1);
+    CHECK(count_shapes<sweeptrace::MeshInstance>(scene) == 1);
+    CHECK(count_shapes<collision::Quad>(scene) == 2);  // the floor too
+    for (auto type : {Material::Type::Diffuse, Material::Type::Metal, Material::Type::Dielectric, Material::Type::Emissive})
+        CHECK(uses_material_type(scene, type));
+    for (const auto& o : scene.objects) {
+        INFO(o.name);
+        // Rotated and non-uniformly scaled: the linear part is not a multiple of a rotation.
+        if (o.name != "floor") CHECK_FALSE(o.transform.identity);
+    }
+}
+
+TEST_CASE("scenes: the mesh scene instances the project's torus knot twice from one load", "[scene][obj]") {
+    const Scene scene = load_scene(kScenes / "mesh.json");
+    REQUIRE(scene.meshes.size() == 1);
+    CHECK(count_shapes<sweeptrace::MeshInstance>(scene) == 2);
+    const auto& knot = scene.meshes[0];
+    CHECK(knot.triangles.triangle_count() == 17920);
+    CHECK(knot.vertex_normals.size() == knot.triangles.vertices.size());
+}
+
+TEST_CASE("scenes: the committed torus knot is closed and wound outward", "[scene][obj]") {
+    const auto knot = load_obj(kScenes / "meshes" / "torus_knot.obj");
+    // Closed: every undirected edge is shared by exactly two triangles, once in each direction.
+    std::map<std::pair<std::uint32_t, std::uint32_t>, int> directed;
+    for (const auto& f : knot.triangles.indices)
+        for (int k = 0; k < 3; ++k) ++directed[{f[k], f[(k + 1) % 3]}];
+    std::size_t unpaired = 0;
+    for (const auto& [edge, count] : directed)
+        if (count != 1 || directed.count({edge.second, edge.first}) != 1) ++unpaired;
+    CHECK(directed.size() == 3 * knot.triangles.triangle_count());
+    CHECK(unpaired == 0);
+    // Wound counter-clockwise seen from outside: face normals agree with the vertex normals.
+    std::size_t inward = 0;
+    for (std::size_t i = 0; i < knot.triangles.triangle_count(); ++i) {
+        const auto& f = knot.triangles.indices[i];
+        const collision::Triangle t = knot.triangles.triangle(i);
+        const glm::vec3 n = knot.vertex_normals[f.x] + knot.vertex_normals[f.y] + knot.vertex_normals[f.z];
+        if (glm::dot(glm::cross(t.b - t.a, t.c - t.a), n) <= 0.0f) ++inward;
+    }
+    CHECK(inward == 0);
+}
+
+TEST_CASE("scenes: the showcase uses glass, metal, diffuse, a light and the mesh", "[scene]") {
+    const Scene scene = load_scene(kScenes / "default.json");
+    for (auto type : {Material::Type::Diffuse, Material::Type::Metal, Material::Type::Dielectric, Material::Type::Emissive})
+        CHECK(uses_material_type(scene, type));
+    CHECK(scene.meshes.size() == 1);
+    CHECK(scene.background.kind == sweeptrace::Background::Kind::Sky);
 }
