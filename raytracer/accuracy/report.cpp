@@ -1,0 +1,71 @@
+#include "raytracer/accuracy/report.hpp"
+
+#include <cstdio>
+#include <fstream>
+#include <string>
+#include <system_error>
+
+#include "raytracer/input_error.hpp"
+
+namespace sweeptrace::accuracy {
+namespace {
+
+std::string number(double v, const char* format = "%.3g") {
+    char buf[64];
+    std::snprintf(buf, sizeof buf, format, v);
+    return buf;
+}
+
+double rate(std::size_t count, std::size_t of) { return of ? double(count) / double(of) : 0.0; }
+
+}  // namespace
+
+void write_csv(std::ostream& out, const std::vector<Metrics>& rows) {
+    out << "shape,variant,family,rays,boundary,wrong,wrong_rate,false_hits,t_scored,t_rel_median,t_rel_p99,"
+           "t_rel_max,self_hits,self_hit_rate,leaks,leak_rate,mrays_per_s\n";
+    for (const Metrics& m : rows) {
+        out << m.shape << ',' << m.variant << ',' << m.family << ',' << m.rays << ',' << m.boundary << ',' << m.wrong
+            << ',' << number(m.wrong_rate(), "%.6g") << ',' << m.false_hits << ',' << m.t_scored << ','
+            << number(m.t_median, "%.6g") << ',' << number(m.t_p99, "%.6g") << ',' << number(m.t_max, "%.6g") << ','
+            << m.self_hits << ',' << number(rate(m.self_hits, m.rays), "%.6g") << ',' << m.leaks << ','
+            << number(rate(m.leaks, m.rays), "%.6g") << ',' << number(m.mrays_per_s(), "%.4g") << '\n';
+    }
+}
+
+void write_markdown(std::ostream& out, const std::vector<Metrics>& rows) {
+    out << "| shape | variant | family | rays | boundary | wrong hit/miss | t rel. err. median | p99 | max "
+           "| self-hits | leaks | Mrays/s |\n";
+    out << "|---|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+    for (const Metrics& m : rows) {
+        out << "| " << m.shape << " | " << m.variant << " | " << m.family << " | " << m.rays << " | " << m.boundary
+            << " | " << m.wrong << " (" << number(100.0 * m.wrong_rate()) << "%) | " << number(m.t_median) << " | "
+            << number(m.t_p99) << " | " << number(m.t_max) << " | " << m.self_hits << " | " << m.leaks << " | "
+            << number(m.mrays_per_s()) << " |\n";
+    }
+}
+
+void save_table(const std::filesystem::path& path, const std::vector<Metrics>& rows, bool markdown) {
+    std::filesystem::path temp = path;
+    temp += ".partial";
+    {
+        std::ofstream f(temp, std::ios::binary | std::ios::trunc);
+        if (!f) throw InputError(path.string() + ": cannot write (does its directory exist?)");
+        if (markdown) write_markdown(f, rows);
+        else write_csv(f, rows);
+        f.flush();
+        if (!f) {
+            f.close();
+            std::error_code ignored;
+            std::filesystem::remove(temp, ignored);
+            throw InputError(path.string() + ": write failed");
+        }
+    }
+    std::error_code ec;
+    std::filesystem::rename(temp, path, ec);
+    if (ec) {
+        std::filesystem::remove(temp, ec);
+        throw InputError(path.string() + ": cannot replace: " + ec.message());
+    }
+}
+
+}  // namespace sweeptrace::accuracy

@@ -1,0 +1,18 @@
+#pragma once
+// The accuracy table as CSV (for the charts) and Markdown (for docs/), and on stdout.
+#include <filesystem>
+#include <ostream>
+#include <vector>
+
+#include "raytracer/accuracy/run.hpp"
+
+namespace sweeptrace::accuracy {
+
+void write_csv(std::ostream& out, const std::vector<Metrics>& rows);
+void write_markdown(std::ostream& out, const std::vector<Metrics>& rows);
+
+// Writes through a temporary file renamed into place, so a failed run never leaves a partial
+// or half-overwritten table. Throws InputError naming the path when it cannot be written.
+void save_table(const std::filesystem::path& path, const std::vector<Metrics>& rows, bool markdown);
+
+}  // namespace sweeptrace::accuracy

@@ -1,0 +1,119 @@
+#include "raytracer/accuracy/routines.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <memory>
+
+#include "collision/intersect.hpp"
+#include "raytracer/accel/embree_reference.hpp"
+
+namespace sweeptrace::accuracy {
+
+using collision::Ray;
+
+namespace {
+
+}  // namespace
+
+// Embree on single triangles: one scene per case, built untimed in chunks; only rtcIntersect1
+// is timed.
+Variant<collision::Triangle> embree_triangle_variant(bool robust) {
+    Variant<collision::Triangle> v;
+    v.name = robust ? "embree-robust" : "embree";
+    v.batch = [robust](const std::vector<collision::Triangle>& shapes, const std::vector<Ray>& rays,
+                       std::vector<Result>& out) {
+        out.assign(rays.size(), Result{});
+        double seconds = 0.0;
+        constexpr std::size_t chunk = 256;
+        std::vector<std::unique_ptr<EmbreeTriangles>> scenes;
+        for (std::size_t first = 0; first < rays.size(); first += chunk) {
+            const std::size_t last = std::min(rays.size(), first + chunk);
+            scenes.clear();
+            for (std::size_t i = first; i < last; ++i) {
+                scenes.push_back(std::make_unique<EmbreeTriangles>(std::vector<collision::Triangle>{shapes[i]}, robust));
+            }
+            std::vector<EmbreeTriangleHit> hits(last - first);
+            const auto start = std::chrono::steady_clock::now();
+            for (std::size_t i = first; i < last; ++i) out[i].hit = scenes[i - first]->intersect(rays[i], hits[i - first]);
+            seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+            for (std::size_t i = first; i < last; ++i) {
+                if (!out[i].hit) continue;
+                const EmbreeTriangleHit& h = hits[i - first];
+                out[i].h.t = h.t;
+                out[i].h.point = rays[i].at(h.t);  // Embree gives no error bound: offset zero
+                out[i].h.normal = h.normal;
+                out[i].h.uv = h.uv;
+            }
+        }
+        return seconds;
+    };
+    v.mesh = [robust](const std::vector<collision::Triangle>& faces, const std::vector<Ray>& rays,
+                      std::vector<Result>& out) {
+        out.assign(rays.size(), Result{});
+        const EmbreeTriangles scene(faces, robust);
+        const auto start = std::chrono::steady_clock::now();
+        for (std::size_t i = 0; i < rays.size(); ++i) {
+            EmbreeTriangleHit h;
+            out[i].hit = scene.intersect(rays[i], h);
+            out[i].h.t = h.t;
+        }
+        // Per face so the rate compares with the brute-force loops of the other variants.
+        return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() * double(faces.size());
+    };
+    return v;
+}
+
+namespace {
+
+// The variants measured per shape; a shape whose routines are not in collision/ yet has none.
+template <class S>
+std::vector<Variant<S>> variants_for() {
+    return {};
+}
+template <>
+std::vector<Variant<collision::Sphere>> variants_for() {
+    return {variant_of<collision::Sphere>("robust", &collision::intersect)};
+}
+template <>
+std::vector<Variant<collision::Triangle>> variants_for() {
+    return {variant_of<collision::Triangle>("robust", &collision::intersect), embree_triangle_variant(false),
+            embree_triangle_variant(true)};
+}
+
+template <class S>
+void run_if_selected(const std::vector<std::string>& shapes, std::size_t n, std::uint64_t seed,
+                     std::vector<Metrics>& rows) {
+    if (!shapes.empty() && std::find(shapes.begin(), shapes.end(), shape_name<S>()) == shapes.end()) return;
+    const std::vector<Variant<S>> variants = variants_for<S>();
+    if (variants.empty()) return;
+    const std::vector<Metrics> r = run_shape<S>(variants, n, seed);
+    rows.insert(rows.end(), r.begin(), r.end());
+}
+
+}  // namespace
+
+const std::vector<std::string>& routine_shape_names() {
+    static const std::vector<std::string> names = {
+        shape_name<collision::Sphere>(),   shape_name<collision::Aabb>(),    shape_name<collision::Cylinder>(),
+        shape_name<collision::Capsule>(),  shape_name<collision::OrientedCapsule>(),
+        shape_name<collision::Ellipsoid>(), shape_name<collision::Plane>(),  shape_name<collision::Disk>(),
+        shape_name<collision::Quad>(),     shape_name<collision::Triangle>()};
+    return names;
+}
+
+std::vector<Metrics> run_routines(const std::vector<std::string>& shapes, std::size_t n, std::uint64_t seed) {
+    std::vector<Metrics> rows;
+    run_if_selected<collision::Sphere>(shapes, n, seed, rows);
+    run_if_selected<collision::Aabb>(shapes, n, seed, rows);
+    run_if_selected<collision::Cylinder>(shapes, n, seed, rows);
+    run_if_selected<collision::Capsule>(shapes, n, seed, rows);
+    run_if_selected<collision::OrientedCapsule>(shapes, n, seed, rows);
+    run_if_selected<collision::Ellipsoid>(shapes, n, seed, rows);
+    run_if_selected<collision::Plane>(shapes, n, seed, rows);
+    run_if_selected<collision::Disk>(shapes, n, seed, rows);
+    run_if_selected<collision::Quad>(shapes, n, seed, rows);
+    run_if_selected<collision::Triangle>(shapes, n, seed, rows);
+    return rows;
+}
+
+}  // namespace sweeptrace::accuracy

@@ -1,0 +1,92 @@
+#pragma once
+// Runs intersector variants over the ray families and scores them against the long double
+// reference: wrong hit/miss, relative t error, self-hits of secondary rays, leaks through closed
+// meshes, and single-thread throughput on the same rays.
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "collision/hit.hpp"
+#include "collision/ray.hpp"
+#include "raytracer/accuracy/cases.hpp"
+
+namespace sweeptrace::accuracy {
+
+struct Result {
+    bool hit = false;
+    collision::RayHit h;
+};
+
+// One row of the accuracy table.
+struct Metrics {
+    std::string shape, variant, family;
+    std::size_t rays = 0;          // rays scored (secondary rays for the surface families)
+    std::size_t boundary = 0;      // reference undecidable: exact touch, either answer right
+    std::size_t wrong = 0;         // hit/miss differs from the reference (decided rays only)
+    std::size_t false_hits = 0;    // ... of which the variant hit where the reference missed
+    std::size_t t_scored = 0;      // rays where both hit: relative t error measured
+    double t_median = 0.0, t_p99 = 0.0, t_max = 0.0;
+    std::size_t self_hits = 0;     // surface families: re-hit the surface the ray left
+    std::size_t leaks = 0;         // edges family: a ray from inside a closed shape escaped
+    double seconds = 0.0;          // time spent in the variant on these rays, single thread
+    double mrays_per_s() const { return seconds > 0.0 ? double(rays) / seconds * 1e-6 : 0.0; }
+    double wrong_rate() const { return rays > boundary ? double(wrong) / double(rays - boundary) : 0.0; }
+};
+
+// A variant intersects a batch of (shape, ray) pairs and returns the seconds spent in the
+// intersections alone (set-up such as building an Embree scene is not timed).
+template <class Shape>
+using Batch = std::function<double(const std::vector<Shape>& shapes, const std::vector<collision::Ray>& rays,
+                                   std::vector<Result>& out)>;
+
+// The faces of one closed surface (an icosphere, a cube of quads) against many rays: the nearest
+// hit over all faces per ray.
+template <class Face>
+using MeshBatch = std::function<double(const std::vector<Face>& faces, const std::vector<collision::Ray>& rays,
+                                       std::vector<Result>& out)>;
+
+template <class Shape>
+struct Variant {
+    std::string name;
+    Batch<Shape> batch;
+    MeshBatch<Shape> mesh;  // used by the edges family of triangles and quads
+};
+
+// A variant given by a plain intersection function.
+template <class Shape>
+Variant<Shape> variant_of(std::string name, bool (*fn)(const collision::Ray&, const Shape&, collision::RayHit&));
+
+// Every applicable family for one shape and its variants; `n` rays per family.
+template <class Shape>
+std::vector<Metrics> run_shape(const std::vector<Variant<Shape>>& variants, std::size_t n, std::uint64_t seed);
+
+// One family for one variant (the Edges family of triangles and quads uses closed meshes).
+template <class Shape>
+Metrics run_family(const Variant<Shape>& variant, Family f, std::size_t n, std::uint64_t seed);
+
+// Given cases of family f (surface families spawn secondary rays from the variant's own hits).
+template <class Shape>
+Metrics run_cases(const Variant<Shape>& variant, Family f, const std::vector<Case<Shape>>& cases);
+
+// Scoring one family's results (exposed for the stability tests).
+template <class Shape>
+Metrics score(const std::vector<Shape>& shapes, const std::vector<collision::Ray>& rays,
+              const std::vector<Result>& results);
+
+// Secondary rays spawned from a variant's own primary hits (pbrt's offset from its error bound).
+// `into` = toward the inside of a closed shape / through a flat one. Cases whose primary ray
+// missed are dropped; `kept` receives the indices of the cases kept.
+template <class Shape>
+std::vector<collision::Ray> secondary_rays(const std::vector<Case<Shape>>& cases, const std::vector<Result>& primary,
+                                           bool into, std::vector<std::size_t>& kept);
+
+// Does the variant's hit on a secondary ray re-hit the surface it left?
+template <class Shape>
+bool is_self_hit(const Shape& shape, const collision::Ray& secondary, bool into, const Result& r);
+
+// Rays from inside closed meshes: every miss is a leak.
+template <class Face>
+Metrics run_closed_meshes(const Variant<Face>& variant, const std::vector<ClosedMeshCase<Face>>& meshes);
+
+}  // namespace sweeptrace::accuracy
