@@ -30,60 +30,29 @@
 // Degenerate input: radius <= 0, NaN or infinite radius/centre/origin/direction, zero direction,
 // or coordinates so large that squares overflow float (beyond ~1e18) give false.
 #include <cmath>
-#include <numbers>
 
 #include <glm/geometric.hpp>
 
 #include "collision/float_error.hpp"
 #include "collision/intersect.hpp"
+#include "collision/ray_quadric.hpp"
 
 namespace collision {
 
 bool intersect(const Ray& ray, const Sphere& s, RayHit& hit) {
     const float r = s.radius;
     if (!(r > 0.0f) || !std::isfinite(r)) return false;
-    const glm::vec3 f = ray.origin - s.center;
-    const glm::vec3& d = ray.dir;
-    const float a = glm::dot(d, d);
-    if (!(a > 0.0f) || !std::isfinite(a)) return false;
-    const float b = glm::dot(f, d);
-    const glm::vec3 l = f - (b / a) * d;
-    const float l_len = std::sqrt(glm::dot(l, l));
-    const float disc_over_a = (r - l_len) * (r + l_len);
-    // Written so NaN (from a non-finite origin or centre) is a miss.
-    if (!(disc_over_a >= 0.0f) || !std::isfinite(disc_over_a)) return false;
-    const float root = std::sqrt(a * disc_over_a);
-    const float c = glm::dot(f, f) - r * r;
-    if (!std::isfinite(c)) return false;
-    const float q = -(b + std::copysign(root, b));
-    float t0 = 0.0f, t1 = 0.0f;
-    if (q != 0.0f) {  // q == 0 only when b == 0 and disc == 0: the origin is the tangent point
-        t0 = c / q;
-        t1 = q / a;
-        if (t0 > t1) std::swap(t0, t1);
-    }
+    float t0, t1;
+    if (!detail::stable_roots(ray.origin - s.center, ray.dir, r, t0, t1)) return false;
     float t;
-    if (t0 > ray.tmin && t0 < ray.tmax) {
-        t = t0;
-    } else if (t1 > ray.tmin && t1 < ray.tmax) {
-        t = t1;
-    } else {
-        return false;
-    }
-
-    const glm::vec3 v = ray.at(t) - s.center;
-    const float v_len2 = glm::dot(v, v);
-    if (!(v_len2 > 0.0f) || !std::isfinite(v_len2)) return false;  // r below sqrt(min float)
-    const glm::vec3 n = v * (1.0f / std::sqrt(v_len2));
-    const glm::vec3 w = r * n;
+    if (!detail::pick_root(t0, t1, ray, t)) return false;
+    glm::vec3 n, point, point_error;
+    if (!detail::reproject_on_sphere(ray.at(t), s.center, r, n, point, point_error)) return false;
     hit.t = t;
-    hit.point = s.center + w;
-    hit.point_error = gamma(7) * glm::abs(w) + gamma(2) * glm::abs(hit.point);
+    hit.point = point;
+    hit.point_error = point_error;
     hit.normal = n;
-    float phi = std::atan2(n.z, n.x);
-    if (phi < 0.0f) phi += 2.0f * std::numbers::pi_v<float>;
-    const float theta = std::acos(std::fmin(1.0f, std::fmax(-1.0f, n.y)));
-    hit.uv = glm::vec2(phi * (0.5f * std::numbers::inv_pi_v<float>), theta * std::numbers::inv_pi_v<float>);
+    hit.uv = detail::sphere_uv(n);
     return true;
 }
 

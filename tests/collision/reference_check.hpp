@@ -12,7 +12,9 @@
 #include <sstream>
 #include <string>
 
+#include "collision/float_error.hpp"
 #include "collision/hit.hpp"
+#include "collision/ray.hpp"
 #include "reference_intersect.hpp"
 
 namespace reference {
@@ -58,6 +60,69 @@ inline Verdict judge(bool got, const collision::RayHit& hit, const Crossings& re
     v.ok = false;
     v.why = s.str();
     return v;
+}
+
+// Everything a ray test checks of one answer, against the reference:
+//  - the verdict of judge();
+//  - a hit is finite, its normal unit to gamma(8);
+//  - the point lies within its stated per-axis error of the surface: surface_distance(point)
+//    (exact, supplied per shape) <= |point_error|;
+//  - along the surface the point is as good as t: within (1 + k)(t_bound |d| + gamma(3) (|o| +
+//    |t d|)) + |point_error| of the exact crossing o + t d (the rounding of o + t d, and the
+//    re-projection, which moves the point by at most k = reprojection_factor times its
+//    distance from the surface);
+//  - the normal within normal_tol(crossing, that distance) of the exact one.
+// Returns "" or a description of the first failure.
+struct ShapeChecks {
+    std::function<Real(const Crossing&)> t_bound;
+    Real margin_tol = 0;
+    std::function<Real(const vec3l&)> surface_distance;
+    std::function<Real(const Crossing&, Real point_distance)> normal_tol;
+    // Re-projection that is not a nearest-point projection can move the point further than its
+    // distance from the surface (the ellipsoid's radial one in scaled space: by max/min radius).
+    Real reprojection_factor = 1;
+};
+
+inline std::string check_answer(const collision::Ray& ray, bool got, const collision::RayHit& hit,
+                                const Crossings& ref, const ShapeChecks& sc) {
+    const Verdict v = judge(got, hit, ref, ray.tmin, ray.tmax, sc.t_bound, sc.margin_tol);
+    if (!v.ok) return v.why;
+    if (!got) return "";
+    std::ostringstream s;
+    s.precision(10);
+    const auto finite = [](const glm::vec3& x) { return std::isfinite(x.x) && std::isfinite(x.y) && std::isfinite(x.z); };
+    if (!std::isfinite(hit.t) || !finite(hit.point) || !finite(hit.point_error) || !finite(hit.normal) ||
+        !std::isfinite(hit.uv.x) || !std::isfinite(hit.uv.y))
+        return "non-finite hit";
+    const Real n_len = glm::length(widen(hit.normal));
+    if (std::fabs(n_len - 1) > Real(collision::gamma(8))) {
+        s << "normal not unit: " << double(n_len);
+        return s.str();
+    }
+    const Real err = glm::length(widen(hit.point_error));
+    const Real dist = sc.surface_distance(widen(hit.point));
+    if (!(dist <= err)) {
+        s << "point off the surface by " << double(dist) << " > stated " << double(err);
+        return s.str();
+    }
+    if (v.matched == nullptr) return "";
+    const vec3l o = widen(ray.origin), d = widen(ray.dir);
+    const Real dl = glm::length(d), tb = sc.t_bound(*v.matched);
+    const Real along = (1 + sc.reprojection_factor) *
+                           (tb * dl + Real(collision::gamma(3)) * (glm::length(o) + std::fabs(v.matched->t) * dl)) +
+                       err;
+    const Real off = glm::length(widen(hit.point) - (o + v.matched->t * d));
+    if (!(off <= along)) {
+        s << "point " << double(off) << " from the exact crossing > " << double(along);
+        return s.str();
+    }
+    const Real n_off = glm::length(widen(hit.normal) - v.matched->normal);
+    const Real n_tol = sc.normal_tol(*v.matched, along);
+    if (!(n_off <= n_tol)) {
+        s << "normal off by " << double(n_off) << " > " << double(n_tol) << " at t=" << double(v.matched->t);
+        return s.str();
+    }
+    return "";
 }
 
 }  // namespace reference
