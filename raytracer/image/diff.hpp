@@ -1,0 +1,90 @@
+#pragma once
+// Comparing two images: plain metrics for `sweeptrace diff`, a false-colour heatmap, and a
+// noise-aware block test for comparing a Monte Carlo render against a golden image.
+#include <cstddef>
+#include <string>
+
+#include "raytracer/image/image.hpp"
+
+namespace sweeptrace {
+
+// Where the per-pixel differences are taken.
+enum class DiffSpace {
+    Display,  // clamped to [0, 1] and sRGB-encoded: what a PNG holds and a viewer sees (default)
+    Linear,   // linear radiance as stored, unclamped (for HDR .pfm/.exr)
+};
+
+struct DiffOptions {
+    DiffSpace space = DiffSpace::Display;
+    // A pixel "differs" when its largest channel difference exceeds this (in `space` units;
+    // 0.1 in display space is about 25 of 255 steps, far above 8-bit rounding).
+    double pixel_threshold = 0.1;
+};
+
+struct DiffMetrics {
+    int width = 0, height = 0;
+    double rmse = 0.0;            // over all pixels and channels
+    double psnr = 0.0;            // 20 log10(1 / rmse) dB, peak 1; +inf for identical images
+    double mean_abs = 0.0;        // mean |a - b| over pixels and channels
+    double max_abs = 0.0;         // largest |a - b| of any channel
+    int max_x = 0, max_y = 0;     // where it is
+    double share_over = 0.0;      // share of pixels whose largest channel difference > pixel_threshold
+    // Simplified perceptual difference (NOT NVIDIA's FLIP): both images blurred by a Gaussian of
+    // sigma 1 px (detail finer than that is noise a viewer does not resolve at 1:1), converted to
+    // CIELAB (D65), CIE76 delta E per pixel. 2.3 is the usual just-noticeable difference.
+    double mean_delta_e = 0.0;
+    double share_delta_e_over_jnd = 0.0;
+    std::size_t non_finite_a = 0, non_finite_b = 0;  // NaN/inf pixels (any channel) in each input
+};
+
+// Throws InputError when the sizes differ (naming both sizes).
+DiffMetrics compare_images(const Image& a, const Image& b, const DiffOptions& options = {});
+
+// False colour of each pixel's largest channel difference: black at 0 through blue, cyan, green,
+// yellow to red at `scale` and above; non-finite pixels are magenta.
+Image difference_heatmap(const Image& a, const Image& b, const DiffOptions& options, double scale);
+
+// Noise-aware comparison of a render against a golden image (the image tests' criterion).
+// Both are compared in linear radiance clamped to [0, 1] (a PNG golden cannot hold more) and
+// averaged over block x block pixel blocks, per channel. For each block and channel
+//   excess = max(0, |mean(actual) - mean(golden)| - quantisation bound of the golden's block mean)
+//   z      = excess / sqrt(Var(mean(actual)) * (1 + golden_noise_ratio))
+// with Var from `actual_variance` (per-pixel variance of the actual estimate; pixels independent).
+// The render is rejected when any z exceeds `z_limit`, by default the two-sided normal quantile
+// for a family-wise false-alarm rate `false_alarm` over all blocks and channels (Bonferroni).
+struct BlockTestOptions {
+    int block = 8;
+    bool golden_is_8bit = true;       // add the golden's 8-bit sRGB rounding bound
+    double golden_noise_ratio = 0.0;  // Var(golden) / Var(actual): spp_actual / spp_golden
+    double false_alarm = 1e-4;
+    double z_limit = 0.0;             // 0 = derive from false_alarm
+};
+
+struct BlockTestResult {
+    int blocks_x = 0, blocks_y = 0;
+    double z_limit = 0.0;
+    double max_z = 0.0;               // worst block and channel
+    int worst_bx = 0, worst_by = 0, worst_channel = 0;
+    double worst_difference = 0.0;    // mean(actual) - mean(golden) there
+    double worst_sigma = 0.0;
+    std::size_t blocks_over = 0;      // blocks with any channel over the limit
+    bool pass() const { return max_z <= z_limit; }
+    std::string summary() const;
+};
+
+BlockTestResult block_test(const Image& golden, const Image& actual, const Image& actual_variance,
+                           const BlockTestOptions& options = {});
+
+// Two independent renders of the same thing (equal spp, different seeds) -> their mean and the
+// per-pixel variance of that mean, estimated as (a - b)^2 / 4 (E[(a-b)^2] = 2 Var(a) = 4 Var(mean)).
+// Both halves are clamped to [0, 1] first, as block_test compares clamped values.
+struct MeanAndVariance {
+    Image mean, variance;
+};
+MeanAndVariance combine_halves(const Image& a, const Image& b);
+
+// The two-sided standard normal quantile: z with P(|Z| > z) = p. Accurate to ~1e-9 by bisection
+// on erfc (monotone), for p in (0, 1).
+double normal_two_sided_quantile(double p);
+
+}  // namespace sweeptrace

@@ -1,0 +1,80 @@
+// write_image / read_image: the format is the file's extension (case-insensitive).
+#include <algorithm>
+#include <cctype>
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+#include <string>
+
+#include "raytracer/image/atomic_file.hpp"
+#include "raytracer/image/image.hpp"
+#include "raytracer/image/image_formats.hpp"
+#include "raytracer/input_error.hpp"
+
+namespace sweeptrace {
+namespace {
+
+enum class Format { Png, Pfm, Exr };
+
+Format format_of(const std::filesystem::path& path, const char* verb) {
+    std::string ext = path.extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+    if (ext == ".png") return Format::Png;
+    if (ext == ".pfm") return Format::Pfm;
+    if (ext == ".exr") return Format::Exr;
+    throw InputError(std::string("cannot ") + verb + " '" + path.string() + "': unknown image extension '" + ext +
+                     "' (use .png, .pfm or .exr)");
+}
+
+}  // namespace
+
+void write_image(const Image& image, const std::filesystem::path& path) {
+    const Format format = format_of(path, "write");
+    if (image.width <= 0 || image.height <= 0 ||
+        image.pixels.size() != static_cast<std::size_t>(image.width) * static_cast<std::size_t>(image.height))
+        throw InputError("cannot write '" + path.string() + "': image " + std::to_string(image.width) + "x" +
+                         std::to_string(image.height) + " holds " + std::to_string(image.pixels.size()) + " pixels");
+    write_atomically(path, [&](const std::filesystem::path& temp) {
+        switch (format) {
+            case Format::Png: formats::write_png(image, temp); break;
+            case Format::Pfm: formats::write_pfm(image, temp); break;
+            case Format::Exr: formats::write_exr(image, temp); break;
+        }
+    });
+}
+
+Image read_image(const std::filesystem::path& path) {
+    switch (format_of(path, "read")) {
+        case Format::Png: return formats::read_png(path);
+        case Format::Pfm: return formats::read_pfm(path);
+        case Format::Exr: return formats::read_exr(path);
+    }
+    throw InputError("cannot read '" + path.string() + "'");
+}
+
+namespace formats {
+
+void write_bytes(const std::filesystem::path& path, const void* data, std::size_t size) {
+    std::FILE* f = std::fopen(path.c_str(), "wb");
+    if (!f) throw InputError("cannot write '" + path.string() + "': " + std::strerror(errno));
+    const bool written = std::fwrite(data, 1, size, f) == size;
+    const int saved = errno;
+    const bool closed = std::fclose(f) == 0;
+    if (!written || !closed)
+        throw InputError("cannot write '" + path.string() + "': " + std::strerror(written ? errno : saved));
+}
+
+std::vector<unsigned char> read_bytes(const std::filesystem::path& path) {
+    std::error_code ec;
+    if (std::filesystem::is_directory(path, ec))
+        throw InputError("cannot read '" + path.string() + "': is a directory");
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw InputError("cannot read '" + path.string() + "': " + std::strerror(errno));
+    std::vector<unsigned char> bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    if (in.bad()) throw InputError("cannot read '" + path.string() + "': read error");
+    return bytes;
+}
+
+}  // namespace formats
+}  // namespace sweeptrace
