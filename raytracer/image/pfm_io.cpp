@@ -32,29 +32,11 @@ public:
     }
 
     long long integer(const char* what) {
-        const std::string t = token(what);
-        std::size_t used = 0;
-        long long v = 0;
-        try {
-            v = std::stoll(t, &used);
-        } catch (const std::exception&) {
-            used = 0;
-        }
-        if (used != t.size()) fail(std::string("the ") + what + " '" + t + "' is not an integer");
-        return v;
+        return parsed<long long>(what, "an integer", [](const std::string& t, std::size_t* used) { return std::stoll(t, used); });
     }
 
     double number(const char* what) {
-        const std::string t = token(what);
-        std::size_t used = 0;
-        double v = 0;
-        try {
-            v = std::stod(t, &used);
-        } catch (const std::exception&) {
-            used = 0;
-        }
-        if (used != t.size()) fail(std::string("the ") + what + " '" + t + "' is not a number");
-        return v;
+        return parsed<double>(what, "a number", [](const std::string& t, std::size_t* used) { return std::stod(t, used); });
     }
 
     // The single whitespace byte that ends the header.
@@ -68,6 +50,21 @@ public:
     }
 
 private:
+    // The next token, parsed whole by `parse` (std::stoll/stod style), or a message saying what it is not.
+    template <class T, class Parse>
+    T parsed(const char* what, const char* kind, Parse parse) {
+        const std::string t = token(what);
+        std::size_t used = 0;
+        T v{};
+        try {
+            v = parse(t, &used);
+        } catch (const std::exception&) {
+            used = 0;
+        }
+        if (used != t.size()) fail(std::string("the ") + what + " '" + t + "' is not " + kind);
+        return v;
+    }
+
     const std::vector<unsigned char>& bytes_;
     const std::filesystem::path& path_;
     std::size_t pos_ = 0;
