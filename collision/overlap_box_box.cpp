@@ -14,9 +14,7 @@ namespace collision {
 
 Contact overlap(const Aabb& a, const Aabb& b) {
     using namespace detail;
-    if (!finite(a.center) || !finite(b.center) || !finite(a.size) || !finite(b.size)) return {};
-    for (int i = 0; i < 3; ++i)
-        if (a.size[i] < 0.0f || b.size[i] < 0.0f) return {};
+    if (!valid_box(a.center, a.size) || !valid_box(b.center, b.size)) return {};
     int best_axis = -1;
     double best_depth = 0.0, best_sign = 1.0;
     for (int i = 0; i < 3; ++i) {

@@ -33,6 +33,11 @@ inline bool valid_upright(const glm::vec3& center, float radius, float height) {
     return valid_radius(radius) && height >= 0.0f && std::isfinite(height) && finite(center);
 }
 
+// A box is usable with a finite centre and finite sizes >= 0 (a zero size is a flat box).
+inline bool valid_box(const glm::vec3& center, const glm::vec3& size) {
+    return finite(center) && finite(size) && size.x >= 0.0f && size.y >= 0.0f && size.z >= 0.0f;
+}
+
 // The point-versus-(convex set grown by a ball) contact, which every round shape pair reduces
 // to. `offset` = p - q, where q is the point of the convex core nearest to p; the grown set is
 // everything within `radius` of the core. For p inside, the nearest boundary point is

@@ -22,7 +22,7 @@ TimeOfImpact sweep(const Aabb& moving, const glm::vec3& motion, const Aabb& stil
     auto point_in_still = [&](const glm::vec3& p, const glm::vec3&) { return glm::clamp(p, still.min(), still.max()); };
     const Contact now = overlap(moving, still);  // also rejects degenerate boxes
     if (now.hit) return overlapping_at_start(now, point_in_still(moving.center, {}), {}, motion);
-    if (!finite(moving.center) || !finite(still.center)) return {};
+    if (!valid_box(moving.center, moving.size) || !valid_box(still.center, still.size)) return {};
     return cast_against(moving.center, motion, Aabb{still.center, moving.size + still.size}, point_in_still);
 }
 
