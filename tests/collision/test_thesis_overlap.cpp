@@ -54,8 +54,6 @@ TEST_CASE("thesis discrete tests agree with the defaults on generic random input
         CHECK(thesis::overlap(k1, k2).hit == overlap(k1, k2).hit);  // detection is exact in both
         const Triangle tri = rng.triangle({0, 0, 0}, 1.5f);
         const Contact st = thesis::overlap(s1, tri), sd = overlap(s1, tri);
-        const float dist = glm::length(closest_point(tri, s1.center));
-        (void)dist;
         CHECK(st.hit == sd.hit);
         const Triangle p = rng.triangle({0, 0, 0}, 1), q = rng.triangle(rng.vec(-0.8f, 0.8f), 1);
         if (std::abs(testing::tri_tri_gap(p, q)) > 1e-4L) {
