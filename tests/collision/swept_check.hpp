@@ -21,6 +21,9 @@
 #include <catch2/catch.hpp>
 
 #include "collision/hit.hpp"
+#include "collision/overlap.hpp"
+#include "collision/swept.hpp"
+#include "random_cases.hpp"
 
 namespace testing {
 
@@ -95,6 +98,34 @@ void check_against_discrete(const collision::TimeOfImpact& toi, double scale, co
     REQUIRE(td <= toi.t + delta);
     if (toi.t == 0.0f) ++stats.at_start;
     else ++stats.hits;
+}
+
+template <class Shape>
+Shape moved_by(Shape s, const glm::vec3& d) {
+    s.center += d;
+    return s;
+}
+inline collision::Triangle moved_by(const collision::Triangle& t, const glm::vec3& d) {
+    return {t.a + d, t.b + d, t.c + d};
+}
+inline bool hit_of(const collision::Contact& c) { return c.hit; }
+inline bool hit_of(bool b) { return b; }
+
+// `count` seeded cases from make(rng) -> {moving, motion, still}, each swept and checked with
+// check_against_discrete(); `scale` must bound every coordinate and size involved.
+template <class Make>
+SweptCheckStats random_sweeps(std::uint32_t seed, int count, double scale, Make make) {
+    Rng rng(seed);
+    SweptCheckStats stats;
+    for (int i = 0; i < count; ++i) {
+        const auto [moving, motion, still] = make(rng);
+        const collision::TimeOfImpact r = collision::sweep(moving, motion, still);
+        INFO("case " << i);
+        check_against_discrete(r, scale, motion, [&, &m = moving, &v = motion, &s = still](double t) {
+            return hit_of(collision::overlap(moved_by(m, glm::vec3(glm::dvec3(v) * t)), s));
+        }, stats);
+    }
+    return stats;
 }
 
 }  // namespace testing

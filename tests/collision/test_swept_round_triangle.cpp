@@ -4,6 +4,7 @@
 #include <catch2/catch.hpp>
 
 #include <limits>
+#include <tuple>
 
 #include <glm/geometric.hpp>
 
@@ -74,38 +75,24 @@ TEST_CASE("swept ellipsoid-triangle: scaling keeps the time exact", "[swept][ell
 }
 
 TEST_CASE("swept sphere-triangle agrees with the discrete test on 10,000 random cases", "[swept][sphere_triangle][random]") {
-    testing::Rng rng(21);
-    testing::SweptCheckStats stats;
-    for (int i = 0; i < 10000; ++i) {
+    // Scale 12 bounds every coordinate and radius involved.
+    const auto stats = testing::random_sweeps(21, 10000, 12.0, [](testing::Rng& rng) {
         const Triangle tri = rng.triangle({0, 0, 0}, 1.5f);
         const Sphere m{rng.vec(-3, 3), rng.uniform(0.05f, 1.0f)};
-        const glm::vec3 motion = -m.center * rng.uniform(0.2f, 1.6f) + rng.vec(-1, 1);
-        const TimeOfImpact r = sweep(m, motion, tri);
-        INFO("case " << i);
-        // Scale 12 bounds every coordinate and radius involved.
-        testing::check_against_discrete(r, 12.0, motion, [&](double t) {
-            return overlap(Sphere{m.center + glm::vec3(glm::dvec3(motion) * t), m.radius}, tri).hit;
-        }, stats);
-    }
+        return std::tuple{m, -m.center * rng.uniform(0.2f, 1.6f) + rng.vec(-1, 1), tri};
+    });
     CHECK(stats.hits > 3000);
     CHECK(stats.misses > 1000);
     CHECK(stats.at_start > 100);
 }
 
 TEST_CASE("swept ellipsoid-triangle agrees with the discrete test on 10,000 random cases", "[swept][ellipsoid][random]") {
-    testing::Rng rng(22);
-    testing::SweptCheckStats stats;
-    for (int i = 0; i < 10000; ++i) {
+    // In scaled space coordinates grow by up to 1 / min radius = 10: scale 120.
+    const auto stats = testing::random_sweeps(22, 10000, 120.0, [](testing::Rng& rng) {
         const Triangle tri = rng.triangle({0, 0, 0}, 1.5f);
         const Ellipsoid m{rng.vec(-3, 3), rng.vec(0.1f, 1.0f)};
-        const glm::vec3 motion = -m.center * rng.uniform(0.2f, 1.6f) + rng.vec(-1, 1);
-        const TimeOfImpact r = sweep(m, motion, tri);
-        INFO("case " << i);
-        // In scaled space coordinates grow by up to 1 / min radius = 10: scale 120.
-        testing::check_against_discrete(r, 120.0, motion, [&](double t) {
-            return overlap(Ellipsoid{m.center + glm::vec3(glm::dvec3(motion) * t), m.radii}, tri).hit;
-        }, stats);
-    }
+        return std::tuple{m, -m.center * rng.uniform(0.2f, 1.6f) + rng.vec(-1, 1), tri};
+    });
     CHECK(stats.hits > 3000);
     CHECK(stats.misses > 1000);
     CHECK(stats.at_start > 100);

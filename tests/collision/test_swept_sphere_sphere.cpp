@@ -3,6 +3,7 @@
 #include <catch2/catch.hpp>
 
 #include <limits>
+#include <tuple>
 
 #include <glm/geometric.hpp>
 
@@ -39,19 +40,12 @@ TEST_CASE("swept sphere-sphere: hit, miss, tangent, overlap at start, degenerate
 }
 
 TEST_CASE("swept sphere-sphere agrees with the discrete test on 10,000 random cases", "[swept][sphere][random]") {
-    testing::Rng rng(101);
-    testing::SweptCheckStats stats;
-    for (int i = 0; i < 10000; ++i) {
+    // 12 bounds every coordinate: centres within 3 sqrt(3), motions within ~8.
+    const auto stats = testing::random_sweeps(101, 10000, 12.0, [](testing::Rng& rng) {
         const Sphere m{rng.vec(-3, 3), rng.uniform(0.05f, 1.0f)};
         const Sphere s{rng.vec(-1, 1), rng.uniform(0.05f, 1.0f)};
-        const glm::vec3 motion = (s.center - m.center) * rng.uniform(0.2f, 1.6f) + rng.vec(-1, 1);
-        const TimeOfImpact r = sweep(m, motion, s);
-        INFO("case " << i);
-        // 12 bounds every coordinate: centres within 3 sqrt(3), motions within ~8.
-        testing::check_against_discrete(r, 12.0, motion, [&](double t) {
-            return overlap(Sphere{m.center + glm::vec3(glm::dvec3(motion) * t), m.radius}, s).hit;
-        }, stats);
-    }
+        return std::tuple{m, (s.center - m.center) * rng.uniform(0.2f, 1.6f) + rng.vec(-1, 1), s};
+    });
     CHECK(stats.hits > 3000);
     CHECK(stats.misses > 2000);
     CHECK(stats.at_start > 100);
