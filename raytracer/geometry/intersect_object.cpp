@@ -1,0 +1,64 @@
+#include "raytracer/geometry/intersect_object.hpp"
+
+#include <cmath>
+#include <type_traits>
+#include <variant>
+
+#include <glm/geometric.hpp>
+
+#include "collision/intersect.hpp"
+#include "raytracer/geometry/object_space.hpp"
+
+namespace sweeptrace {
+
+void mesh_hit_to_world(const Mesh& mesh, const Object& object, std::uint32_t object_index, std::uint32_t triangle,
+                       const collision::RayHit& h, float t_shift, SurfaceHit& hit) {
+    surface_hit_to_world(object.transform, h, t_shift, hit);
+    hit.object = object_index;
+    hit.primitive = triangle;
+    if (mesh.vertex_normals.empty()) return;
+    const glm::uvec3& f = mesh.triangles.indices[triangle];
+    const float b1 = h.uv.x, b2 = h.uv.y, b0 = 1.0f - b1 - b2;
+    glm::vec3 ns = b0 * mesh.vertex_normals[f.x] + b1 * mesh.vertex_normals[f.y] + b2 * mesh.vertex_normals[f.z];
+    if (!object.transform.identity) ns = object.transform.normal_to_world * ns;
+    const float len2 = glm::dot(ns, ns);
+    // Opposite vertex normals can cancel; the geometric normal stays then.
+    if (!(len2 > 0.0f) || !std::isfinite(len2)) return;
+    ns /= std::sqrt(len2);
+    hit.shading_normal = glm::dot(ns, hit.normal) < 0.0f ? -ns : ns;
+}
+
+bool intersect_object(const Scene& scene, std::uint32_t object_index, const collision::Ray& world_ray, SurfaceHit& hit) {
+    const Object& object = scene.objects[object_index];
+    const ObjectRay local = to_object_space(object.transform, world_ray);
+    return std::visit(
+        [&](const auto& shape) {
+            using S = std::decay_t<decltype(shape)>;
+            collision::RayHit h;
+            if constexpr (std::is_same_v<S, MeshInstance>) {
+                const Mesh& mesh = scene.meshes[shape.mesh];
+                collision::Ray ray = local.ray;
+                std::uint32_t nearest = 0;
+                bool found = false;
+                for (std::size_t i = 0; i < mesh.triangles.triangle_count(); ++i) {
+                    if (collision::intersect(ray, mesh.triangles.triangle(i), h)) {
+                        ray.tmax = h.t;
+                        nearest = static_cast<std::uint32_t>(i);
+                        found = true;
+                    }
+                }
+                if (!found) return false;
+                mesh_hit_to_world(mesh, object, object_index, nearest, h, local.t_shift, hit);
+                return true;
+            } else {
+                if (!collision::intersect(local.ray, shape, h)) return false;
+                surface_hit_to_world(object.transform, h, local.t_shift, hit);
+                hit.object = object_index;
+                hit.primitive = 0;
+                return true;
+            }
+        },
+        object.shape);
+}
+
+}  // namespace sweeptrace

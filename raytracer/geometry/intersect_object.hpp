@@ -1,0 +1,26 @@
+#pragma once
+// One object against a world ray: the ray goes into object space, the shape's collision test
+// runs there, and the hit comes back with its world-space error bound (object_space.hpp).
+// The acceleration structures call this for analytic shapes; for meshes they traverse their
+// own bottom-level BVH and finish the hit with mesh_hit_to_world. Here a mesh is tested
+// triangle by triangle: the brute-force reference the structures are checked against.
+#include <cstdint>
+
+#include "collision/hit.hpp"
+#include "collision/ray.hpp"
+#include "raytracer/geometry/surface_hit.hpp"
+#include "raytracer/scene/scene.hpp"
+
+namespace sweeptrace {
+
+// Nearest hit of scene.objects[object] with world_ray.tmin < t < world_ray.tmax; writes `hit`
+// (object and primitive included) only when found.
+bool intersect_object(const Scene& scene, std::uint32_t object, const collision::Ray& world_ray, SurfaceHit& hit);
+
+// The object-space hit `h` on triangle `triangle` of `mesh`, instanced by `object`, as a world
+// SurfaceHit: what surface_hit_to_world gives, plus the shading normal interpolated from the
+// mesh's vertex normals (when it has them; turned into the geometric normal's hemisphere).
+void mesh_hit_to_world(const Mesh& mesh, const Object& object, std::uint32_t object_index, std::uint32_t triangle,
+                       const collision::RayHit& h, float t_shift, SurfaceHit& hit);
+
+}  // namespace sweeptrace
