@@ -8,6 +8,10 @@
 // 1 + 2 gamma(3) never rejects a box the exact ray meets. A zero direction component gives an
 // infinite inv_dir; a ray lying exactly in a slab plane then gives 0 * inf = NaN, and the
 // comparisons are written so a NaN never shrinks the interval (the box is kept: conservative).
+#include <cstddef>
+#include <cstdint>
+#include <cstring>
+
 #include <glm/vec3.hpp>
 
 #include "collision/bvh.hpp"
@@ -19,26 +23,48 @@ namespace sweeptrace {
 struct TraversalRay {
     glm::vec3 origin;
     glm::vec3 inv_dir;
-    bool negative[3];  // dir component < 0: the box's hi face is the near one
+    // Byte offsets, from the start of a BvhNode, of the near and far face coordinate per axis:
+    // lo (offset 0) is met first where the dir component is >= 0, hi (offset 16) otherwise.
+    // Picking faces by offset keeps the box test free of branches and selects.
+    std::uint32_t near_offset[3];
+    std::uint32_t far_offset[3];
 
     explicit TraversalRay(const collision::Ray& ray)
-        : origin(ray.origin), inv_dir(1.0f / ray.dir.x, 1.0f / ray.dir.y, 1.0f / ray.dir.z),
-          negative{ray.dir.x < 0.0f, ray.dir.y < 0.0f, ray.dir.z < 0.0f} {}
+        : origin(ray.origin), inv_dir(1.0f / ray.dir.x, 1.0f / ray.dir.y, 1.0f / ray.dir.z) {
+        for (int a = 0; a < 3; ++a) {
+            const std::uint32_t lo = static_cast<std::uint32_t>(offsetof(collision::BvhNode, lo)) + 4u * a;
+            const std::uint32_t hi = static_cast<std::uint32_t>(offsetof(collision::BvhNode, hi)) + 4u * a;
+            near_offset[a] = ray.dir[a] < 0.0f ? hi : lo;
+            far_offset[a] = ray.dir[a] < 0.0f ? lo : hi;
+        }
+    }
 };
+static_assert(offsetof(collision::BvhNode, lo) == 0 && offsetof(collision::BvhNode, hi) == 16,
+              "TraversalRay's face offsets assume lo at byte 0 and hi at byte 16");
+
+inline float node_coordinate(const collision::BvhNode& node, std::uint32_t offset) {
+    float v;
+    std::memcpy(&v, reinterpret_cast<const unsigned char*>(&node) + offset, sizeof v);
+    return v;
+}
 
 inline constexpr float kSlabFarScale = 1.0f + 2.0f * collision::gamma(3);
 
 // Entry distance of the ray into the node's box within (tmin, tmax), or false.
 inline bool enter_box(const collision::BvhNode& node, const TraversalRay& r, float tmin, float tmax, float& t_enter) {
-    float t0 = tmin, t1 = tmax;
-    for (int a = 0; a < 3; ++a) {
-        const float near_plane = r.negative[a] ? node.hi[a] : node.lo[a];
-        const float far_plane = r.negative[a] ? node.lo[a] : node.hi[a];
-        const float tn = (near_plane - r.origin[a]) * r.inv_dir[a];
-        const float tf = (far_plane - r.origin[a]) * r.inv_dir[a] * kSlabFarScale;
-        t0 = tn > t0 ? tn : t0;
-        t1 = tf < t1 ? tf : t1;
-    }
+    const float tx0 = (node_coordinate(node, r.near_offset[0]) - r.origin.x) * r.inv_dir.x;
+    const float tx1 = (node_coordinate(node, r.far_offset[0]) - r.origin.x) * r.inv_dir.x * kSlabFarScale;
+    const float ty0 = (node_coordinate(node, r.near_offset[1]) - r.origin.y) * r.inv_dir.y;
+    const float ty1 = (node_coordinate(node, r.far_offset[1]) - r.origin.y) * r.inv_dir.y * kSlabFarScale;
+    const float tz0 = (node_coordinate(node, r.near_offset[2]) - r.origin.z) * r.inv_dir.z;
+    const float tz1 = (node_coordinate(node, r.far_offset[2]) - r.origin.z) * r.inv_dir.z * kSlabFarScale;
+    // `new > old ? new : old` keeps `old` when `new` is NaN.
+    float t0 = tx0 > tmin ? tx0 : tmin;
+    t0 = ty0 > t0 ? ty0 : t0;
+    t0 = tz0 > t0 ? tz0 : t0;
+    float t1 = tx1 < tmax ? tx1 : tmax;
+    t1 = ty1 < t1 ? ty1 : t1;
+    t1 = tz1 < t1 ? tz1 : t1;
     t_enter = t0;
     return t0 <= t1;
 }

@@ -20,6 +20,10 @@ MeshBvh::MeshBvh(const collision::TriangleMesh& mesh) {
     }
     collision::BvhBuildOptions options;
     options.max_leaf_size = 8;
+    // A node visit (two child box tests, the stack) costs about three watertight triangle tests
+    // here: measured on the Stanford bunny, traversal cost 1 / 2 / 3 gave 0.26 / 0.30 /
+    // 0.30 Mrays/s at 74 / 63 / 55 bytes per triangle; 3 keeps the speed in less memory.
+    options.traversal_cost = 3.0f;
     bvh_ = collision::build_bvh(boxes, centroids, options);
     triangles_.reserve(n);
     for (std::uint32_t prim : bvh_.prim_indices) triangles_.push_back(mesh.triangle(prim));

@@ -84,18 +84,21 @@ inline Scene mixed_scene(std::uint32_t seed, float extent = 10.0f) {
     scene.meshes.push_back(icosphere(2));
     auto p = [&] { return glm::vec3(pos(rng), pos(rng), pos(rng)); };
     for (int i = 0; i < 6; ++i) {
+        // Each shape at its own random place (shapes sharing a centre would tie on shared faces).
         const bool transformed = i % 2 == 1;
-        const Transform xf = transformed ? random_transform(rng, p(), 1.0f) : Transform{};
-        const glm::vec3 c = transformed ? glm::vec3(0.0f) : p();
+        auto xf = [&] { return transformed ? random_transform(rng, p(), 1.0f) : Transform{}; };
+        auto c = [&] { return transformed ? glm::vec3(0.0f) : p(); };
         const float r = size(rng);
-        scene.objects.push_back(object(collision::Sphere{c, r}, xf, "sphere"));
-        scene.objects.push_back(object(collision::Aabb{c, glm::vec3(r, 2 * r, 0.7f * r)}, xf, "box"));
-        scene.objects.push_back(object(collision::Cylinder{c, r, 2 * r}, xf, "cylinder"));
-        scene.objects.push_back(object(collision::Capsule{c, 0.5f * r, r}, xf, "capsule"));
-        scene.objects.push_back(object(collision::Ellipsoid{c, glm::vec3(r, 0.5f * r, 0.8f * r)}, xf, "ellipsoid"));
-        scene.objects.push_back(object(collision::Disk{c, glm::normalize(glm::vec3(0.3f, 1.0f, -0.2f)), r}, xf, "disk"));
-        scene.objects.push_back(object(collision::Quad{c, glm::vec3(r, 0, 0.2f), glm::vec3(0, 0.4f, r)}, xf, "quad"));
-        scene.objects.push_back(object(collision::Triangle{c, c + glm::vec3(r, 0, 0), c + glm::vec3(0, r, 0.3f)}, xf, "triangle"));
+        glm::vec3 k;
+        scene.objects.push_back(object(collision::Sphere{c(), r}, xf(), "sphere"));
+        scene.objects.push_back(object(collision::Aabb{c(), glm::vec3(r, 2 * r, 0.7f * r)}, xf(), "box"));
+        scene.objects.push_back(object(collision::Cylinder{c(), r, 2 * r}, xf(), "cylinder"));
+        scene.objects.push_back(object(collision::Capsule{c(), 0.5f * r, r}, xf(), "capsule"));
+        scene.objects.push_back(object(collision::Ellipsoid{c(), glm::vec3(r, 0.5f * r, 0.8f * r)}, xf(), "ellipsoid"));
+        scene.objects.push_back(object(collision::Disk{c(), glm::normalize(glm::vec3(0.3f, 1.0f, -0.2f)), r}, xf(), "disk"));
+        scene.objects.push_back(object(collision::Quad{c(), glm::vec3(r, 0, 0.2f), glm::vec3(0, 0.4f, r)}, xf(), "quad"));
+        k = c();
+        scene.objects.push_back(object(collision::Triangle{k, k + glm::vec3(r, 0, 0), k + glm::vec3(0, r, 0.3f)}, xf(), "triangle"));
     }
     for (int i = 0; i < 3; ++i)
         scene.objects.push_back(object(MeshInstance{0}, random_transform(rng, p(), 2.0f), "icosphere"));
