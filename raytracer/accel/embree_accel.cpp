@@ -10,6 +10,7 @@
 #include <embree3/rtcore.h>
 
 #include "collision/triangle_watertight.hpp"
+#include "raytracer/accel/embree_ray.hpp"
 #include "raytracer/accel/object_bounds.hpp"
 #include "raytracer/geometry/intersect_object.hpp"
 
@@ -198,18 +199,7 @@ bool EmbreeAccel::intersect(const collision::Ray& ray, SurfaceHit& hit) const {
     SurfaceHit analytic;
     HitContext context{{}, &analytic};
     rtcInitIntersectContext(&context.embree);
-    RTCRayHit rh{};
-    rh.ray.org_x = ray.origin.x;
-    rh.ray.org_y = ray.origin.y;
-    rh.ray.org_z = ray.origin.z;
-    rh.ray.dir_x = ray.dir.x;
-    rh.ray.dir_y = ray.dir.y;
-    rh.ray.dir_z = ray.dir.z;
-    rh.ray.tnear = ray.tmin;
-    rh.ray.tfar = ray.tmax;
-    rh.ray.mask = 0xFFFFFFFFu;
-    rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
-    rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+    RTCRayHit rh = to_embree_ray_hit(ray);
     rtcIntersect1(top_, &context.embree, &rh);
     if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return false;
     if (rh.hit.instID[0] == RTC_INVALID_GEOMETRY_ID) {  // an analytic object: its callback's hit
@@ -236,16 +226,7 @@ bool EmbreeAccel::intersect(const collision::Ray& ray, SurfaceHit& hit) const {
 bool EmbreeAccel::occluded(const collision::Ray& ray) const {
     HitContext context{{}, nullptr};
     rtcInitIntersectContext(&context.embree);
-    RTCRay r{};
-    r.org_x = ray.origin.x;
-    r.org_y = ray.origin.y;
-    r.org_z = ray.origin.z;
-    r.dir_x = ray.dir.x;
-    r.dir_y = ray.dir.y;
-    r.dir_z = ray.dir.z;
-    r.tnear = ray.tmin;
-    r.tfar = ray.tmax;
-    r.mask = 0xFFFFFFFFu;
+    RTCRay r = to_embree_ray(ray);
     rtcOccluded1(top_, &context.embree, &r);
     return r.tfar == -std::numeric_limits<float>::infinity();
 }

@@ -9,6 +9,8 @@
 #include <embree3/rtcore.h>
 #include <glm/geometric.hpp>
 
+#include "raytracer/accel/embree_ray.hpp"
+
 namespace sweeptrace {
 namespace {
 
@@ -75,21 +77,7 @@ EmbreeTriangles::~EmbreeTriangles() {
 bool EmbreeTriangles::intersect(const collision::Ray& ray, EmbreeTriangleHit& hit) const {
     RTCIntersectContext context;
     rtcInitIntersectContext(&context);
-    RTCRayHit rh;
-    rh.ray.org_x = ray.origin.x;
-    rh.ray.org_y = ray.origin.y;
-    rh.ray.org_z = ray.origin.z;
-    rh.ray.dir_x = ray.dir.x;
-    rh.ray.dir_y = ray.dir.y;
-    rh.ray.dir_z = ray.dir.z;
-    rh.ray.tnear = ray.tmin;
-    rh.ray.tfar = ray.tmax;
-    rh.ray.time = 0.0f;
-    rh.ray.mask = std::numeric_limits<unsigned>::max();
-    rh.ray.id = 0;
-    rh.ray.flags = 0;
-    rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
-    rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+    RTCRayHit rh = to_embree_ray_hit(ray);
     rtcIntersect1(scene_, &context, &rh);
     if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return false;
     hit.t = rh.ray.tfar;
