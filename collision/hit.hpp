@@ -9,7 +9,11 @@ namespace collision {
 struct RayHit {
     float t = 0.0f;              // ray parameter of the nearest hit
     glm::vec3 point{0.0f};       // hit point (re-projected on the surface where the shape allows)
-    glm::vec3 point_error{0.0f}; // conservative per-axis bound of |point - exact hit point|
+    glm::vec3 point_error{0.0f}; // conservative per-axis bound of |point - s| for a point s
+                                 // exactly on the surface near the exact hit: the distance
+                                 // to the surface, what offsetting the next ray needs (along
+                                 // the surface the point is as good as t; each intersector
+                                 // states both bounds)
     glm::vec3 normal{0.0f};      // unit geometric normal, pointing out of the shape (for flat
                                  // shapes: the shape's own normal); never flipped toward the ray
     glm::vec2 uv{0.0f};          // triangles: barycentrics (b1, b2) of b and c; quads: (s, t);

@@ -51,11 +51,7 @@ bool intersect(const Ray& ray, const Cylinder& cyl, RayHit& hit) {
             });
         }
     }
-    if (!best.found) return false;
-    hit.t = best.t;
-    hit.point = ray.at(best.t);
-    hit.point_error = glm::vec3(0.0f);
-    return true;
+    return best.finish(ray, hit);
 }
 
 }  // namespace collision::thesis

@@ -20,10 +20,7 @@ bool intersect(const Ray& ray, const Sphere& s, RayHit& hit) {
     if (!detail::textbook_roots(ray.origin, ray.dir, s.center, s.radius, t0, t1)) return false;
     detail::Nearest best;
     for (const float t : {t0, t1}) best.offer(ray, t, [] {});
-    if (!best.found) return false;
-    hit.t = best.t;
-    hit.point = ray.at(best.t);
-    hit.point_error = glm::vec3(0.0f);
+    if (!best.finish(ray, hit)) return false;
     hit.normal = glm::normalize(hit.point - s.center);
     hit.uv = collision::detail::sphere_uv(hit.normal);
     return true;

@@ -6,6 +6,7 @@
 #include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
 
+#include "collision/hit.hpp"
 #include "collision/ray.hpp"
 
 namespace collision::thesis::detail {
@@ -51,6 +52,14 @@ struct Nearest {
             found = true;
             fill();
         }
+    }
+    // Writes the winner's t and the thesis's point o + t d (no error bound: 0).
+    bool finish(const Ray& ray, RayHit& hit) const {
+        if (!found) return false;
+        hit.t = t;
+        hit.point = ray.at(t);
+        hit.point_error = glm::vec3(0.0f);
+        return true;
     }
 };
 
