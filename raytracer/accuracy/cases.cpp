@@ -413,7 +413,10 @@ std::vector<Case<S>> make_cases(Family f, std::size_t n, std::uint64_t seed) {
     return cases;
 }
 
-std::vector<collision::Triangle> icosphere(int level, const vec3& center, float radius, std::vector<vec3>* out_vertices) {
+namespace {
+
+std::vector<collision::Triangle> icosphere_impl(int level, const vec3& center, float radius,
+                                                std::vector<vec3>* out_vertices, collision::TriangleMesh* out_mesh) {
     using Tri = std::array<std::uint32_t, 3>;
     const double phi = (1.0 + std::sqrt(5.0)) / 2.0;
     std::vector<glm::dvec3> v = {{-1, phi, 0}, {1, phi, 0}, {-1, -phi, 0}, {1, -phi, 0}, {0, -1, phi}, {0, 1, phi},
@@ -444,11 +447,29 @@ std::vector<collision::Triangle> icosphere(int level, const vec3& center, float 
     }
     std::vector<vec3> vf(v.size());
     for (std::size_t i = 0; i < v.size(); ++i) vf[i] = center + vec3(glm::normalize(v[i]) * double(radius));
+    if (out_mesh) {
+        out_mesh->vertices = vf;
+        out_mesh->indices.clear();
+        for (const Tri& f : faces) out_mesh->indices.push_back({f[0], f[1], f[2]});
+        return {};
+    }
     std::vector<collision::Triangle> tris;
     tris.reserve(faces.size());
     for (const Tri& f : faces) tris.push_back({vf[f[0]], vf[f[1]], vf[f[2]]});
     if (out_vertices) *out_vertices = std::move(vf);
     return tris;
+}
+
+}  // namespace
+
+std::vector<collision::Triangle> icosphere(int level, const vec3& center, float radius, std::vector<vec3>* vertices) {
+    return icosphere_impl(level, center, radius, vertices, nullptr);
+}
+
+collision::TriangleMesh icosphere_mesh(int level, const vec3& center, float radius) {
+    collision::TriangleMesh mesh;
+    icosphere_impl(level, center, radius, nullptr, &mesh);
+    return mesh;
 }
 
 namespace {

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "collision/mesh.hpp"
 #include "collision/ray.hpp"
 #include "collision/shapes.hpp"
 
@@ -64,6 +65,9 @@ std::vector<ClosedMeshCase<Face>> make_closed_meshes(std::size_t n, std::uint64_
 // rounded to float once and shared, counter-clockwise seen from outside.
 std::vector<collision::Triangle> icosphere(int level, const glm::vec3& center, float radius,
                                            std::vector<glm::vec3>* vertices = nullptr);
+
+// The same icosphere as an indexed mesh (vertices shared by index).
+collision::TriangleMesh icosphere_mesh(int level, const glm::vec3& center, float radius);
 
 template <class Shape>
 bool shape_is_closed();

@@ -44,14 +44,13 @@ void write_markdown(std::ostream& out, const std::vector<Metrics>& rows) {
     }
 }
 
-void save_table(const std::filesystem::path& path, const std::vector<Metrics>& rows, bool markdown) {
+void save_file(const std::filesystem::path& path, const std::function<void(std::ostream&)>& write) {
     std::filesystem::path temp = path;
     temp += ".partial";
     {
         std::ofstream f(temp, std::ios::binary | std::ios::trunc);
         if (!f) throw InputError(path.string() + ": cannot write (does its directory exist?)");
-        if (markdown) write_markdown(f, rows);
-        else write_csv(f, rows);
+        write(f);
         f.flush();
         if (!f) {
             f.close();
@@ -66,6 +65,12 @@ void save_table(const std::filesystem::path& path, const std::vector<Metrics>& r
         std::filesystem::remove(temp, ec);
         throw InputError(path.string() + ": cannot replace: " + ec.message());
     }
+}
+
+void check_writable(const std::filesystem::path& path) {
+    const std::filesystem::path dir = path.has_parent_path() ? path.parent_path() : std::filesystem::path(".");
+    if (!std::filesystem::is_directory(dir)) throw InputError(path.string() + ": directory " + dir.string() + " does not exist");
+    if (std::filesystem::is_directory(path)) throw InputError(path.string() + ": is a directory");
 }
 
 }  // namespace sweeptrace::accuracy

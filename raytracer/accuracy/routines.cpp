@@ -1,11 +1,11 @@
 #include "raytracer/accuracy/routines.hpp"
 
 #include <algorithm>
-#include <chrono>
 #include <memory>
 
 #include "collision/intersect.hpp"
 #include "raytracer/accel/embree_reference.hpp"
+#include "raytracer/accuracy/thread_timer.hpp"
 
 namespace sweeptrace::accuracy {
 
@@ -33,9 +33,9 @@ Variant<collision::Triangle> embree_triangle_variant(bool robust) {
                 scenes.push_back(std::make_unique<EmbreeTriangles>(std::vector<collision::Triangle>{shapes[i]}, robust));
             }
             std::vector<EmbreeTriangleHit> hits(last - first);
-            const auto start = std::chrono::steady_clock::now();
+            const double start = thread_seconds();
             for (std::size_t i = first; i < last; ++i) out[i].hit = scenes[i - first]->intersect(rays[i], hits[i - first]);
-            seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+            seconds += thread_seconds() - start;
             for (std::size_t i = first; i < last; ++i) {
                 if (!out[i].hit) continue;
                 const EmbreeTriangleHit& h = hits[i - first];
@@ -51,14 +51,14 @@ Variant<collision::Triangle> embree_triangle_variant(bool robust) {
                       std::vector<Result>& out) {
         out.assign(rays.size(), Result{});
         const EmbreeTriangles scene(faces, robust);
-        const auto start = std::chrono::steady_clock::now();
+        const double start = thread_seconds();
         for (std::size_t i = 0; i < rays.size(); ++i) {
             EmbreeTriangleHit h;
             out[i].hit = scene.intersect(rays[i], h);
             out[i].h.t = h.t;
         }
         // Per face so the rate compares with the brute-force loops of the other variants.
-        return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() * double(faces.size());
+        return (thread_seconds() - start) * double(faces.size());
     };
     return v;
 }

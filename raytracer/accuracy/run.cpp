@@ -1,13 +1,13 @@
 #include "raytracer/accuracy/run.hpp"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <limits>
 
 #include <glm/geometric.hpp>
 
 #include "raytracer/accuracy/reference.hpp"
+#include "raytracer/accuracy/thread_timer.hpp"
 
 namespace sweeptrace::accuracy {
 
@@ -15,9 +15,6 @@ using collision::Ray;
 
 namespace {
 
-double seconds_since(std::chrono::steady_clock::time_point start) {
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
 
 void summarise_t_errors(std::vector<double>& errors, Metrics& m) {
     m.t_scored = errors.size();
@@ -44,15 +41,15 @@ Variant<S> variant_of(std::string name, bool (*fn)(const Ray&, const S&, collisi
         double best = std::numeric_limits<double>::infinity();
         for (int run = 0; run < 3; ++run) {
             out.assign(rays.size(), Result{});
-            const auto start = std::chrono::steady_clock::now();
+            const double start = thread_seconds();
             for (std::size_t i = 0; i < rays.size(); ++i) out[i].hit = fn(rays[i], shapes[i], out[i].h);
-            best = std::min(best, seconds_since(start));
+            best = std::min(best, thread_seconds() - start);
         }
         return best;
     };
     v.mesh = [fn](const std::vector<S>& faces, const std::vector<Ray>& rays, std::vector<Result>& out) {
         out.assign(rays.size(), Result{});
-        const auto start = std::chrono::steady_clock::now();
+        const double start = thread_seconds();
         for (std::size_t i = 0; i < rays.size(); ++i) {
             Ray r = rays[i];
             for (const S& f : faces) {
@@ -62,7 +59,7 @@ Variant<S> variant_of(std::string name, bool (*fn)(const Ray&, const S&, collisi
                 }
             }
         }
-        return seconds_since(start);
+        return thread_seconds() - start;
     };
     return v;
 }

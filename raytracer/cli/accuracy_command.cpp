@@ -1,13 +1,17 @@
 // sweeptrace accuracy: every ray-shape routine, robust and thesis variants (and Embree for
 // triangles), over the ray families of raytracer/accuracy/cases.hpp, scored against the long
 // double reference. Prints the Markdown table; --csv / --markdown also save it.
-#include <cstdio>
+// With --meshes DIR: the native BVH against Embree (default and robust) on real meshes instead.
+// With --structures: the thesis's structures redone for rays, speed against triangle count.
 #include <iostream>
+#include <memory>
 #include <string>
 #include <vector>
 
+#include "raytracer/accuracy/mesh_compare.hpp"
 #include "raytracer/accuracy/report.hpp"
 #include "raytracer/accuracy/routines.hpp"
+#include "raytracer/accuracy/structures.hpp"
 #include "raytracer/cli/commands.hpp"
 #include "raytracer/input_error.hpp"
 
@@ -18,9 +22,50 @@ namespace {
 struct AccuracyOptions {
     std::size_t rays = 20000;
     std::uint64_t seed = 1;
-    std::string csv, markdown;
+    std::string csv, markdown, methods_csv;
     std::vector<std::string> shapes;
+    std::string meshes;
+    std::size_t inside_rays = 100000;
+    bool structures = false;
+    int max_level = 8;
+    double budget = 0.5;
 };
+
+void run(const AccuracyOptions& o) {
+    for (const std::string* path : {&o.csv, &o.markdown, &o.methods_csv}) {
+        if (!path->empty()) accuracy::check_writable(*path);
+    }
+    if (!o.methods_csv.empty() && o.meshes.empty()) throw InputError("--methods-csv: only with --meshes");
+    if (o.structures) {
+        if (!o.meshes.empty()) throw InputError("--structures and --meshes: choose one");
+        const auto rows = accuracy::measure_structures(2, o.max_level, o.rays, o.budget, o.seed);
+        accuracy::write_structures_markdown(std::cout, rows);
+        if (!o.csv.empty()) accuracy::save_file(o.csv, [&](std::ostream& f) { accuracy::write_structures_csv(f, rows); });
+        if (!o.markdown.empty()) {
+            accuracy::save_file(o.markdown, [&](std::ostream& f) { accuracy::write_structures_markdown(f, rows); });
+        }
+        return;
+    }
+    if (!o.meshes.empty()) {
+        const auto meshes = accuracy::load_accuracy_meshes(o.meshes);
+        const accuracy::MeshReport report = accuracy::compare_meshes(meshes, o.rays, o.inside_rays, o.seed);
+        accuracy::write_mesh_markdown(std::cout, report);
+        if (!o.csv.empty()) {
+            accuracy::save_file(o.csv, [&](std::ostream& f) { accuracy::write_comparisons_csv(f, report.comparisons); });
+        }
+        if (!o.methods_csv.empty()) {
+            accuracy::save_file(o.methods_csv, [&](std::ostream& f) { accuracy::write_methods_csv(f, report.methods); });
+        }
+        if (!o.markdown.empty()) {
+            accuracy::save_file(o.markdown, [&](std::ostream& f) { accuracy::write_mesh_markdown(f, report); });
+        }
+        return;
+    }
+    const auto rows = accuracy::run_routines(o.shapes, o.rays, o.seed);
+    accuracy::write_markdown(std::cout, rows);
+    if (!o.csv.empty()) accuracy::save_file(o.csv, [&](std::ostream& f) { accuracy::write_csv(f, rows); });
+    if (!o.markdown.empty()) accuracy::save_file(o.markdown, [&](std::ostream& f) { accuracy::write_markdown(f, rows); });
+}
 
 }  // namespace
 
@@ -28,17 +73,27 @@ void add_accuracy_command(CLI::App& app, int& exit_code) {
     auto options = std::make_shared<AccuracyOptions>();
     auto* cmd = app.add_subcommand(
         "accuracy", "Measure every ray-shape intersector (robust, thesis, Embree) against a long double reference");
-    cmd->add_option("--rays", options->rays, "Rays per family and routine")->check(CLI::Range(1, 100000000));
+    cmd->add_option("--rays", options->rays, "Rays per family and routine (with --meshes: per mesh)")
+        ->check(CLI::Range(1, 100000000));
     cmd->add_option("--seed", options->seed, "Seed of the ray families");
     cmd->add_option("--csv", options->csv, "Also write the table as CSV to this file");
-    cmd->add_option("--markdown", options->markdown, "Also write the table as Markdown to this file");
+    cmd->add_option("--markdown", options->markdown, "Also write the table(s) as Markdown to this file");
     cmd->add_option("--shape", options->shapes, "Only these shapes (repeatable)")
         ->check(CLI::IsMember(accuracy::routine_shape_names()));
+    cmd->add_option("--meshes", options->meshes,
+                    "Compare the native BVH with Embree on the meshes in this directory (../shared/meshes) instead");
+    cmd->add_option("--inside-rays", options->inside_rays, "With --meshes: rays from inside each closed mesh")
+        ->check(CLI::Range(0, 100000000));
+    cmd->add_option("--methods-csv", options->methods_csv,
+                    "With --meshes: write per-method speed, build time and leaks as CSV to this file");
+    cmd->add_flag("--structures", options->structures,
+                  "Brute force, 8 octants, hashed grid, BVH and Embree on icospheres of 320 .. 1.3M triangles");
+    cmd->add_option("--max-level", options->max_level, "With --structures: finest icosphere level (8 = 1.3M triangles)")
+        ->check(CLI::Range(2, 9));
+    cmd->add_option("--budget", options->budget, "With --structures: seconds of tracing per structure and size")
+        ->check(CLI::Range(0.001, 600.0));
     cmd->callback([options, &exit_code] {
-        const auto rows = accuracy::run_routines(options->shapes, options->rays, options->seed);
-        accuracy::write_markdown(std::cout, rows);
-        if (!options->csv.empty()) accuracy::save_table(options->csv, rows, false);
-        if (!options->markdown.empty()) accuracy::save_table(options->markdown, rows, true);
+        run(*options);
         exit_code = 0;
     });
 }

@@ -81,15 +81,17 @@ TEST_CASE("stability: robust sphere t stays within its stated bound for origins 
 }
 
 TEST_CASE("stability: Embree's default triangle test leaks at shared edges and vertices, RTC_SCENE_FLAG_ROBUST "
-          "does not",
+          "far less (the watertight test: none, above)",
           "[stability][embree]") {
-    // The default flags select Embree's fast, non-watertight test: rays aimed exactly at the
-    // vertices (and within rounding at the edges) of a closed icosphere slip through. Measured
-    // by `sweeptrace accuracy --rays 20000`: 777 of 20,224 rays (3.8%); the robust flag: none.
+    // Rays from inside a closed icosphere aimed exactly at its vertices (and within rounding at
+    // its edges). Embree's default test is not watertight: `sweeptrace accuracy --rays 20000`
+    // measured 777 of 20,224 rays (3.8%) escaping. RTC_SCENE_FLAG_ROBUST closes most gaps but
+    // not all: `sweeptrace accuracy --meshes` finds a few per ten thousand at vertices of
+    // icospheres and of spot (see docs/RESULTS.md). The watertight test lets none through.
     const auto meshes = make_closed_meshes<collision::Triangle>(10000, 11);
     const Metrics fast = run_closed_meshes(embree_triangle_variant(false), meshes);
     const Metrics robust = run_closed_meshes(embree_triangle_variant(true), meshes);
-    INFO("Embree default leaks " << fast.leaks << " of " << fast.rays);
+    INFO("rays " << fast.rays << ": Embree default leaks " << fast.leaks << ", robust flag " << robust.leaks);
     CHECK(fast.leaks > fast.rays / 100);
-    CHECK(robust.leaks == 0);
+    CHECK(robust.leaks * 10 < fast.leaks);
 }
