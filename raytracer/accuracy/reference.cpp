@@ -1,4 +1,6 @@
-// Long double reference intersections; the band argument is in reference.hpp.
+// Long double reference intersections; the band argument is in reference.hpp. Every helper
+// takes the relative band (the ray carries it) so the same code also answers "is this case
+// decided beyond float rounding?" with float_band.
 #include "raytracer/accuracy/reference.hpp"
 
 #include <algorithm>
@@ -31,7 +33,7 @@ long double abs_det(const LVec3& a, const LVec3& b, const LVec3& c) {
 
 // Where the line f + t d (f = origin relative to the centre) meets the ball of radius r:
 // closest-approach form, so the discriminant does not cancel for far origins.
-RefSpan ball_span(const LVec3& f, const LVec3& d, long double r) {
+RefSpan ball_span(const LVec3& f, const LVec3& d, long double r, long double band) {
     RefSpan s;
     const long double a = glm::dot(d, d);
     if (!(a > 0.0L) || !(r > 0.0L)) return s;
@@ -39,8 +41,8 @@ RefSpan ball_span(const LVec3& f, const LVec3& d, long double r) {
     const LVec3 l = f - (b / a) * d;  // closest approach of the line to the centre
     const long double h = r * r - glm::dot(l, l);
     const long double scale = r * r + norm(l) * norm(f) + glm::dot(l, l);
-    s.ambiguous = std::fabs(h) <= reference_band * scale;
-    s.band_t = reference_band * (norm(f) + r) / std::sqrt(a);
+    s.ambiguous = std::fabs(h) <= band * scale;
+    s.band_t = band * (norm(f) + r) / std::sqrt(a);
     if (h < 0.0L) return s;
     const long double root = std::sqrt(a * h);
     const long double q = -(b + std::copysign(root, b));
@@ -56,7 +58,7 @@ RefSpan ball_span(const LVec3& f, const LVec3& d, long double r) {
 }
 
 // Intersection of two spans of one convex shape (e.g. infinite cylinder and slab).
-RefSpan intersect_spans(const RefSpan& x, const RefSpan& y) {
+RefSpan intersect_spans(const RefSpan& x, const RefSpan& y, long double band) {
     RefSpan s;
     s.band_t = std::max(x.band_t, y.band_t);
     if (!x.meets || !y.meets) {
@@ -76,7 +78,7 @@ RefSpan intersect_spans(const RefSpan& x, const RefSpan& y) {
     bool edge = false;
     if (std::isfinite(gap)) {
         const long double scale = std::max(std::fabs(s.t0), std::fabs(s.t1));
-        edge = std::fabs(gap) <= reference_band * scale + s.band_t;
+        edge = std::fabs(gap) <= band * scale + s.band_t;
     }
     // An ambiguous part (a ray lying exactly in a face plane or along a cylinder wall, or an
     // earlier edge) keeps the result ambiguous unless the other part excludes it decisively.
@@ -97,22 +99,25 @@ RefSpan unite_spans(const RefSpan* parts, int n) {
         if (!s.meets || p.t1 > s.t1) { s.t1 = p.t1; s.n1 = p.n1; }
         s.meets = true;
     }
-    if (!s.meets) {
-        s.ambiguous = any_ambiguous;
-    } else {
-        const long double scale = std::max(std::fabs(s.t0), std::fabs(s.t1));
-        s.ambiguous = (s.t1 - s.t0) <= reference_band * scale + s.band_t;
+    // Decided when some part is met decisively (its own tangency and edges are in its flag);
+    // ambiguous when every part met, or (if none is met) some part missed, within the band.
+    bool all_met_ambiguous = true;
+    for (int i = 0; i < n; ++i) {
+        if (parts[i].meets && !parts[i].ambiguous) all_met_ambiguous = false;
     }
+    s.ambiguous = s.meets ? all_met_ambiguous : any_ambiguous;
     return s;
 }
 
 // The slab lo <= x(t) <= hi along one coordinate x(t) = f + t g (g = direction along the axis).
-RefSpan slab_span(long double f, long double g, long double lo, long double hi, const LVec3& axis) {
+// `magnitude` is the size of the coordinates f was computed from (the band is relative to it).
+RefSpan slab_span(long double f, long double g, long double lo, long double hi, const LVec3& axis, long double band,
+                  long double magnitude) {
     RefSpan s;
     if (g == 0.0L) {
         // Parallel to the slab's planes: all of the line or none of it; exactly in a plane is
         // the grazing-a-face case, ambiguous.
-        s.ambiguous = (f == lo || f == hi);
+        s.ambiguous = std::fabs(f - lo) <= band * magnitude || std::fabs(f - hi) <= band * magnitude;
         if (f >= lo && f <= hi) {
             s.meets = true;
             s.t0 = -inf;
@@ -127,7 +132,7 @@ RefSpan slab_span(long double f, long double g, long double lo, long double hi, 
     s.t1 = tb;
     s.n0 = g > 0.0L ? -axis : axis;
     s.n1 = -s.n0;
-    s.band_t = reference_band * (std::fabs(ta) + std::fabs(tb));
+    s.band_t = band * (std::fabs(ta) + std::fabs(tb));
     return s;
 }
 
@@ -139,29 +144,29 @@ RefSpan cylinder_span(const LRay& ray, const LVec3& a, const LVec3& u, long doub
     const LVec3 d_perp = ray.dir - du * u;
     RefSpan side;
     if (glm::dot(d_perp, d_perp) > 0.0L) {
-        side = ball_span(f_perp, d_perp, r);
+        side = ball_span(f_perp, d_perp, r, ray.band);
     } else {
         // Along the axis: inside the infinite cylinder for every t, or never.
         const long double dist2 = glm::dot(f_perp, f_perp);
-        side.ambiguous = std::fabs(dist2 - r * r) <= reference_band * (r * r + dist2);
+        side.ambiguous = std::fabs(dist2 - r * r) <= ray.band * (r * r + dist2);
         if (dist2 <= r * r) {
             side.meets = true;
             side.t0 = -inf;
             side.t1 = inf;
         }
     }
-    const RefSpan caps = slab_span(fu, du, 0.0L, len, u);
-    RefSpan s = intersect_spans(side, caps);
-    s.band_t = std::max(s.band_t, reference_band * (norm(f) + r + len) / norm(ray.dir));
+    const RefSpan caps = slab_span(fu, du, 0.0L, len, u, ray.band, std::fabs(glm::dot(ray.origin, u)) + std::fabs(glm::dot(a, u)) + len);
+    RefSpan s = intersect_spans(side, caps, ray.band);
+    s.band_t = std::max(s.band_t, ray.band * (norm(f) + r + len) / norm(ray.dir));
     return s;
 }
 
 RefSpan capsule_span(const LRay& ray, const LVec3& a, const LVec3& b, long double r) {
     const LVec3 axis = b - a;
     const long double len = norm(axis);
-    if (!(len > 0.0L)) return ball_span(ray.origin - a, ray.dir, r);
-    const RefSpan parts[3] = {cylinder_span(ray, a, axis / len, len, r), ball_span(ray.origin - a, ray.dir, r),
-                              ball_span(ray.origin - b, ray.dir, r)};
+    if (!(len > 0.0L)) return ball_span(ray.origin - a, ray.dir, r, ray.band);
+    const RefSpan parts[3] = {cylinder_span(ray, a, axis / len, len, r), ball_span(ray.origin - a, ray.dir, r, ray.band),
+                              ball_span(ray.origin - b, ray.dir, r, ray.band)};
     return unite_spans(parts, 3);
 }
 
@@ -173,19 +178,19 @@ RefSpan polygon_span(const LRay& ray, const LVec3* corners, int n, const LVec3& 
     const long double nd = glm::dot(normal, ray.dir);
     const long double num = glm::dot(normal, corners[0] - ray.origin);
     if (nd == 0.0L) {
-        s.ambiguous = std::fabs(num) <= reference_band * abs_dot(normal, corners[0] - ray.origin);
+        s.ambiguous = std::fabs(num) <= ray.band * abs_dot(normal, corners[0] - ray.origin);
         return s;
     }
     bool positive = false, negative = false, near_zero = false;
     for (int i = 0; i < n; ++i) {
         const LVec3 p = corners[i] - ray.origin, q = corners[(i + 1) % n] - ray.origin;
         const long double w = det(p, q, ray.dir);
-        if (std::fabs(w) <= reference_band * abs_det(p, q, ray.dir)) near_zero = true;
+        if (std::fabs(w) <= ray.band * abs_det(p, q, ray.dir)) near_zero = true;
         else if (w > 0.0L) positive = true;
         else negative = true;
     }
     const long double t = num / nd;
-    s.band_t = reference_band * std::fabs(t) *
+    s.band_t = ray.band * std::fabs(t) *
                (norm(normal) * norm(corners[0] - ray.origin) / std::max(std::fabs(num), std::numeric_limits<long double>::min()) +
                 norm(normal) * norm(ray.dir) / std::fabs(nd));
     if (positive && negative) return s;  // decisively outside one edge
@@ -199,7 +204,7 @@ RefSpan polygon_span(const LRay& ray, const LVec3* corners, int n, const LVec3& 
 }  // namespace
 
 RefSpan reference_span(const LRay& ray, const collision::Sphere& s) {
-    return ball_span(ray.origin - widen(s.center), ray.dir, s.radius);
+    return ball_span(ray.origin - widen(s.center), ray.dir, s.radius, ray.band);
 }
 
 RefSpan reference_span(const LRay& ray, const collision::Aabb& b) {
@@ -209,8 +214,9 @@ RefSpan reference_span(const LRay& ray, const collision::Aabb& b) {
     for (int k = 0; k < 3; ++k) {
         LVec3 axis(0.0L);
         axis[k] = 1.0L;
-        const RefSpan slab = slab_span(ray.origin[k], ray.dir[k], c[k] - half[k], c[k] + half[k], axis);
-        s = k == 0 ? slab : intersect_spans(s, slab);
+        const RefSpan slab = slab_span(ray.origin[k], ray.dir[k], c[k] - half[k], c[k] + half[k], axis, ray.band,
+                                        std::fabs(ray.origin[k]) + std::fabs(c[k]) + half[k]);
+        s = k == 0 ? slab : intersect_spans(s, slab, ray.band);
     }
     return s;
 }
@@ -235,7 +241,7 @@ RefSpan reference_span(const LRay& ray, const collision::OrientedCapsule& c) {
 RefSpan reference_span(const LRay& ray, const collision::Ellipsoid& e) {
     if (!(e.radii.x > 0.0f && e.radii.y > 0.0f && e.radii.z > 0.0f)) return {};
     const LVec3 radii = widen(e.radii);
-    RefSpan s = ball_span((ray.origin - widen(e.center)) / radii, ray.dir / radii, 1.0L);
+    RefSpan s = ball_span((ray.origin - widen(e.center)) / radii, ray.dir / radii, 1.0L, ray.band);
     // Normal of the ellipsoid = gradient (p - c) / radii^2 = (unit-sphere point) / radii.
     s.n0 = unit(s.n0 / radii);
     s.n1 = unit(s.n1 / radii);
@@ -249,14 +255,14 @@ RefSpan reference_span(const LRay& ray, const collision::Plane& p) {
     const LVec3 to_plane = widen(p.point) - ray.origin;
     const long double num = glm::dot(n, to_plane);
     if (nd == 0.0L || !(glm::dot(n, n) > 0.0L)) {
-        s.ambiguous = glm::dot(n, n) > 0.0L && std::fabs(num) <= reference_band * abs_dot(n, to_plane);
+        s.ambiguous = glm::dot(n, n) > 0.0L && std::fabs(num) <= ray.band * abs_dot(n, to_plane);
         return s;
     }
     const long double t = num / nd;
     s.meets = true;
     s.t0 = s.t1 = t;
     s.n0 = s.n1 = unit(n);
-    s.band_t = reference_band * std::fabs(t) * 4.0L *
+    s.band_t = ray.band * std::fabs(t) * 4.0L *
                (norm(n) * norm(to_plane) / std::max(std::fabs(num), std::numeric_limits<long double>::min()) +
                 norm(n) * norm(ray.dir) / std::fabs(nd));
     return s;
@@ -271,7 +277,7 @@ RefSpan reference_span(const LRay& ray, const collision::Disk& d) {
     const long double r = d.radius;
     const long double dist2 = glm::dot(p - c, p - c);
     const long double scale = r + norm(ray.origin - c) + std::fabs(s.t0) * norm(ray.dir);
-    const bool edge = std::fabs(dist2 - r * r) <= reference_band * scale * scale;
+    const bool edge = std::fabs(dist2 - r * r) <= ray.band * scale * scale;
     s.ambiguous = s.ambiguous || edge;
     if (dist2 > r * r) s.meets = false;
     return s;

@@ -3,8 +3,8 @@
 #include <cstdio>
 #include <fstream>
 #include <string>
-#include <system_error>
 
+#include "raytracer/image/atomic_file.hpp"
 #include "raytracer/input_error.hpp"
 
 namespace sweeptrace::accuracy {
@@ -21,11 +21,12 @@ double rate(std::size_t count, std::size_t of) { return of ? double(count) / dou
 }  // namespace
 
 void write_csv(std::ostream& out, const std::vector<Metrics>& rows) {
-    out << "shape,variant,family,rays,boundary,wrong,wrong_rate,false_hits,t_scored,t_rel_median,t_rel_p99,"
+    out << "shape,variant,family,rays,boundary,within_rounding,wrong,wrong_rate,wrong_clear,wrong_clear_rate,false_hits,t_scored,t_rel_median,t_rel_p99,"
            "t_rel_max,self_hits,self_hit_rate,leaks,leak_rate,mrays_per_s\n";
     for (const Metrics& m : rows) {
-        out << m.shape << ',' << m.variant << ',' << m.family << ',' << m.rays << ',' << m.boundary << ',' << m.wrong
-            << ',' << number(m.wrong_rate(), "%.6g") << ',' << m.false_hits << ',' << m.t_scored << ','
+        out << m.shape << ',' << m.variant << ',' << m.family << ',' << m.rays << ',' << m.boundary << ','
+            << m.within_rounding << ',' << m.wrong << ',' << number(m.wrong_rate(), "%.6g") << ',' << m.wrong_clear << ','
+            << number(m.wrong_clear_rate(), "%.6g") << ',' << m.false_hits << ',' << m.t_scored << ','
             << number(m.t_median, "%.6g") << ',' << number(m.t_p99, "%.6g") << ',' << number(m.t_max, "%.6g") << ','
             << m.self_hits << ',' << number(rate(m.self_hits, m.rays), "%.6g") << ',' << m.leaks << ','
             << number(rate(m.leaks, m.rays), "%.6g") << ',' << number(m.mrays_per_s(), "%.4g") << '\n';
@@ -33,38 +34,26 @@ void write_csv(std::ostream& out, const std::vector<Metrics>& rows) {
 }
 
 void write_markdown(std::ostream& out, const std::vector<Metrics>& rows) {
-    out << "| shape | variant | family | rays | boundary | wrong hit/miss | t rel. err. median | p99 | max "
-           "| self-hits | leaks | Mrays/s |\n";
-    out << "|---|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+    out << "| shape | variant | family | rays | exact touch | within rounding | wrong hit/miss | wrong beyond rounding "
+           "| t rel. err. median | p99 | max | self-hits | leaks | Mrays/s |\n";
+    out << "|---|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
     for (const Metrics& m : rows) {
         out << "| " << m.shape << " | " << m.variant << " | " << m.family << " | " << m.rays << " | " << m.boundary
-            << " | " << m.wrong << " (" << number(100.0 * m.wrong_rate()) << "%) | " << number(m.t_median) << " | "
+            << " | " << m.within_rounding << " | " << m.wrong << " (" << number(100.0 * m.wrong_rate()) << "%) | "
+            << m.wrong_clear << " | " << number(m.t_median) << " | "
             << number(m.t_p99) << " | " << number(m.t_max) << " | " << m.self_hits << " | " << m.leaks << " | "
             << number(m.mrays_per_s()) << " |\n";
     }
 }
 
 void save_file(const std::filesystem::path& path, const std::function<void(std::ostream&)>& write) {
-    std::filesystem::path temp = path;
-    temp += ".partial";
-    {
+    write_atomically(path, [&](const std::filesystem::path& temp) {
         std::ofstream f(temp, std::ios::binary | std::ios::trunc);
-        if (!f) throw InputError(path.string() + ": cannot write (does its directory exist?)");
+        if (!f) throw InputError("cannot write '" + path.string() + "'");
         write(f);
         f.flush();
-        if (!f) {
-            f.close();
-            std::error_code ignored;
-            std::filesystem::remove(temp, ignored);
-            throw InputError(path.string() + ": write failed");
-        }
-    }
-    std::error_code ec;
-    std::filesystem::rename(temp, path, ec);
-    if (ec) {
-        std::filesystem::remove(temp, ec);
-        throw InputError(path.string() + ": cannot replace: " + ec.message());
-    }
+        if (!f) throw InputError("cannot write '" + path.string() + "': write failed");
+    });
 }
 
 void check_writable(const std::filesystem::path& path) {

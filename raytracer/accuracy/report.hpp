@@ -12,7 +12,7 @@ namespace sweeptrace::accuracy {
 void write_csv(std::ostream& out, const std::vector<Metrics>& rows);
 void write_markdown(std::ostream& out, const std::vector<Metrics>& rows);
 
-// Writes through a temporary file renamed into place, so a failed run never leaves a partial
+// Writes through write_atomically (image/atomic_file.hpp): a failed run never leaves a partial
 // or half-overwritten table. Throws InputError naming the path when it cannot be written.
 void save_file(const std::filesystem::path& path, const std::function<void(std::ostream&)>& write);
 

@@ -76,8 +76,11 @@ Metrics score(const std::vector<S>& shapes, const std::vector<Ray>& rays, const 
             continue;
         }
         const bool ref_hit = ref.outcome == RefOutcome::Hit;
+        const bool clear = reference(rays[i], shapes[i], float_band).outcome != RefOutcome::Boundary;
+        if (!clear) ++m.within_rounding;
         if (ref_hit != results[i].hit) {
             ++m.wrong;
+            if (clear) ++m.wrong_clear;
             if (results[i].hit) ++m.false_hits;
         } else if (ref_hit) {
             errors.push_back(relative(results[i].h.t, ref.t));

@@ -25,6 +25,8 @@ struct Metrics {
     std::size_t boundary = 0;      // reference undecidable: exact touch, either answer right
     std::size_t wrong = 0;         // hit/miss differs from the reference (decided rays only)
     std::size_t false_hits = 0;    // ... of which the variant hit where the reference missed
+    std::size_t within_rounding = 0;  // decided rays within float_band: any answer defensible
+    std::size_t wrong_clear = 0;   // wrong on rays decided beyond float rounding: defects
     std::size_t t_scored = 0;      // rays where both hit: relative t error measured
     double t_median = 0.0, t_p99 = 0.0, t_max = 0.0;
     std::size_t self_hits = 0;     // surface families: re-hit the surface the ray left
@@ -32,6 +34,10 @@ struct Metrics {
     double seconds = 0.0;          // time spent in the variant on these rays, single thread
     double mrays_per_s() const { return seconds > 0.0 ? double(rays) / seconds * 1e-6 : 0.0; }
     double wrong_rate() const { return rays > boundary ? double(wrong) / double(rays - boundary) : 0.0; }
+    double wrong_clear_rate() const {
+        const std::size_t clear = rays - boundary - within_rounding;
+        return clear ? double(wrong_clear) / double(clear) : 0.0;
+    }
 };
 
 // A variant intersects a batch of (shape, ray) pairs and returns the seconds spent in the

@@ -95,3 +95,52 @@ TEST_CASE("stability: Embree's default triangle test leaks at shared edges and v
     CHECK(fast.leaks > fast.rays / 100);
     CHECK(robust.leaks * 10 < fast.leaks);
 }
+
+namespace {
+
+// Every family of one shape for its robust routine: no answer may be wrong beyond rounding
+// (reference.hpp: a case still decided with float_band is one a routine within its stated
+// bound must get right).
+template <class S>
+void check_no_wrong_beyond_rounding() {
+    for (Family f : all_families) {
+        if (!family_applies<S>(f)) continue;
+        const Metrics m = robust<S>(f, 3000, 17);
+        INFO(shape_name<S>() << " " << family_name(f) << ": " << m.wrong << " wrong of " << m.rays << ", "
+                             << m.within_rounding << " within rounding");
+        CHECK(m.wrong_clear == 0);
+    }
+}
+
+}  // namespace
+
+TEST_CASE("stability: robust routines are never wrong beyond rounding, in any family", "[stability]") {
+    check_no_wrong_beyond_rounding<collision::Sphere>();
+    check_no_wrong_beyond_rounding<collision::Aabb>();
+    check_no_wrong_beyond_rounding<collision::Cylinder>();
+    check_no_wrong_beyond_rounding<collision::Capsule>();
+    check_no_wrong_beyond_rounding<collision::OrientedCapsule>();
+    check_no_wrong_beyond_rounding<collision::Ellipsoid>();
+    check_no_wrong_beyond_rounding<collision::Plane>();
+    check_no_wrong_beyond_rounding<collision::Disk>();
+    check_no_wrong_beyond_rounding<collision::Quad>();  // its edges family: the [!mayfail] test below
+    check_no_wrong_beyond_rounding<collision::Triangle>();
+}
+
+TEST_CASE("stability: robust box and cylinder never let a ray from inside out through an edge or rim",
+          "[stability]") {
+    CHECK(robust<collision::Aabb>(Family::Edges, 20000, 23).leaks == 0);
+    CHECK(robust<collision::Cylinder>(Family::Edges, 20000, 23).leaks == 0);
+}
+
+// Known defect, measured: a closed cube of six collision::Quad faces leaks rays aimed at its
+// corners and edges (`sweeptrace accuracy`: 158 of 20,224 rays, 0.78%), although the faces'
+// corners are bit-identical. The quad test is not watertight the way the triangle test is.
+// Tagged [!mayfail] so it is reported on every run without failing the suite until fixed.
+TEST_CASE("stability: robust quads never leak through a closed cube at its edges and corners",
+          "[stability][!mayfail]") {
+    const auto cubes = make_closed_meshes<collision::Quad>(10000, 11);
+    const Metrics m = run_closed_meshes(variant_of<collision::Quad>("robust", &collision::intersect), cubes);
+    INFO("leaks " << m.leaks << " of " << m.rays);
+    CHECK(m.leaks == 0);
+}
