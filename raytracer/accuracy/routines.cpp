@@ -4,6 +4,7 @@
 #include <memory>
 
 #include "collision/intersect.hpp"
+#include "collision/thesis/intersect.hpp"
 #include "raytracer/accel/embree_reference.hpp"
 #include "raytracer/accuracy/thread_timer.hpp"
 
@@ -65,11 +66,15 @@ Variant<collision::Triangle> embree_triangle_variant(bool robust) {
 
 namespace {
 
-// The variants measured per shape: the robust default of collision/ for every shape, Embree's
-// test beside it for triangles.
+// The variants measured per shape: the robust default of collision/ for every shape, the
+// thesis-faithful one of collision/thesis/ where the thesis has the shape, Embree's test beside
+// them for triangles.
 template <class S>
 std::vector<Variant<S>> variants_for() {
     std::vector<Variant<S>> v{variant_of<S>("robust", &collision::intersect)};
+    if constexpr (!std::is_same_v<S, collision::Quad>) {  // the thesis has no quad
+        v.push_back(variant_of<S>("thesis", &collision::thesis::intersect));
+    }
     if constexpr (std::is_same_v<S, collision::Triangle>) {
         v.push_back(embree_triangle_variant(false));
         v.push_back(embree_triangle_variant(true));
