@@ -185,6 +185,8 @@ Metrics run_cases(const Variant<S>& v, Family f, const std::vector<Case<S>>& cas
         const double seconds = v.batch(shapes, rays, out);
         m = score(shapes, rays, out);
         m.seconds = seconds;
+        // Every edges ray starts inside a closed shape: each miss is a leak.
+        if (f == Family::Edges) m.leaks = m.wrong - m.false_hits;
     }
     m.shape = shape_name<S>();
     m.variant = v.name;
