@@ -1,0 +1,141 @@
+#!/usr/bin/python3
+"""Charts for docs/ from the CSVs that `sweeptrace accuracy` writes (run by tools/make-docs.sh).
+
+Usage: /usr/bin/python3 tools/charts.py DOCS_DIR
+Reads whichever of accuracy.csv, structures.csv, mesh-methods.csv, mesh-comparison.csv exist in
+DOCS_DIR and writes one PNG per chart beside them. Debian's matplotlib (python3-matplotlib) is
+installed for /usr/bin/python3, hence the explicit interpreter.
+"""
+import csv
+import os
+import sys
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+
+FLOOR = 1e-9  # zero errors are drawn on this line of the log axes, labelled "0"
+
+
+def read(path):
+    with open(path, newline="") as f:
+        return list(csv.DictReader(f))
+
+
+def save(fig, docs, name):
+    path = os.path.join(docs, name)
+    fig.savefig(path, dpi=110, bbox_inches="tight")
+    plt.close(fig)
+    print("wrote", path)
+
+
+VARIANT_MARKER = {"robust": "o", "thesis": "x", "embree": "^", "embree-robust": "v"}
+
+
+def speed_vs_error(docs):
+    rows = read(os.path.join(docs, "accuracy.csv"))
+    shapes = sorted({r["shape"] for r in rows})
+    colours = {s: plt.cm.tab10(i % 10) for i, s in enumerate(shapes)}
+    fig, axes = plt.subplots(1, 2, figsize=(13, 5.2))
+    # x: throughput on the uniform family (single thread). y, left: share of rays, over every
+    # family, answered wrong beyond rounding; right: worst p99 relative t error over the
+    # families where the answer is a hit on the same surface (uniform, far, huge, tiny).
+    by_routine = {}
+    for r in rows:
+        by_routine.setdefault((r["shape"], r["variant"]), []).append(r)
+    for (shape, variant), rs in sorted(by_routine.items()):
+        uniform = [r for r in rs if r["family"] == "uniform"]
+        if not uniform:
+            continue
+        speed = float(uniform[0]["mrays_per_s"])
+        decided = sum(int(r["rays"]) - int(r["boundary"]) for r in rs if r["family"] != "edges")
+        wrong = sum(int(r["wrong_clear"]) for r in rs if r["family"] != "edges")
+        leaks = sum(int(r["leaks"]) for r in rs)
+        rays_edges = sum(int(r["rays"]) for r in rs if r["family"] == "edges")
+        wrong_rate = (wrong + leaks) / max(1, decided + rays_edges)
+        t_p99 = max(float(r["t_rel_p99"]) for r in rs if r["family"] in ("uniform", "far", "huge", "tiny"))
+        kw = dict(color=colours[shape], marker=VARIANT_MARKER.get(variant, "s"), s=60)
+        axes[0].scatter(speed, max(wrong_rate, FLOOR), **kw)
+        axes[1].scatter(speed, max(t_p99, FLOOR), **kw)
+        for ax, y in ((axes[0], wrong_rate), (axes[1], t_p99)):
+            ax.annotate(f"{shape}", (speed, max(y, FLOOR)), fontsize=6, alpha=0.7, xytext=(3, 3),
+                        textcoords="offset points")
+    for ax, title in ((axes[0], "wrong hit/miss beyond rounding + leaks (share of rays, all families)"),
+                      (axes[1], "relative t error, p99 (worst of uniform/far/huge/tiny)")):
+        ax.set_xscale("log")
+        ax.set_yscale("log")
+        ax.set_xlabel("Mrays/s, one thread (uniform family)")
+        ax.set_title(title, fontsize=10)
+        ax.axhline(FLOOR, color="grey", lw=0.5, ls=":")
+        ax.text(ax.get_xlim()[0], FLOOR, " 0", va="bottom", fontsize=8, color="grey")
+        ax.grid(True, which="both", alpha=0.2)
+    handles = [plt.Line2D([], [], ls="", marker=m, color="k", label=v) for v, m in VARIANT_MARKER.items()]
+    handles += [plt.Line2D([], [], ls="", marker="s", color=colours[s], label=s) for s in shapes]
+    axes[1].legend(handles=handles, fontsize=7, loc="center left", bbox_to_anchor=(1.02, 0.5))
+    fig.suptitle("Every ray-shape intersector: speed against error (sweeptrace accuracy)")
+    save(fig, docs, "speed-vs-error.png")
+
+
+def structures(docs):
+    rows = read(os.path.join(docs, "structures.csv"))
+    names = []
+    for r in rows:
+        if r["structure"] not in names:
+            names.append(r["structure"])
+    fig, axes = plt.subplots(1, 2, figsize=(12, 4.6))
+    for name in names:
+        rs = [r for r in rows if r["structure"] == name]
+        x = [int(r["triangles"]) for r in rs]
+        axes[0].plot(x, [float(r["mrays_per_s"]) for r in rs], marker="o", label=name)
+        axes[1].plot(x, [max(float(r["build_s"]), 1e-6) for r in rs], marker="o", label=name)
+    for ax, label in ((axes[0], "Mrays/s, one thread"), (axes[1], "build time, s (wall)")):
+        ax.set_xscale("log")
+        ax.set_yscale("log")
+        ax.set_xlabel("triangles (icosphere)")
+        ax.set_ylabel(label)
+        ax.grid(True, which="both", alpha=0.2)
+    axes[0].legend(fontsize=8)
+    fig.suptitle("The thesis's structures redone for rays: speed and build time against size")
+    save(fig, docs, "accelerators-vs-size.png")
+
+
+def mesh_leaks(docs):
+    rows = [r for r in read(os.path.join(docs, "mesh-methods.csv")) if int(r["inside_rays"]) > 0]
+    if not rows:
+        return
+    meshes = []
+    for r in rows:
+        if r["mesh"] not in meshes:
+            meshes.append(r["mesh"])
+    methods = ["native", "embree", "embree-robust"]
+    fig, ax = plt.subplots(figsize=(10, 4.2))
+    width = 0.8 / len(methods)
+    for i, m in enumerate(methods):
+        ys = []
+        for mesh in meshes:
+            r = next((r for r in rows if r["mesh"] == mesh and r["method"] == m), None)
+            ys.append(100.0 * int(r["leaks"]) / int(r["inside_rays"]) if r else 0.0)
+        ax.bar([k + i * width for k in range(len(meshes))], ys, width, label=m)
+        for k, y in enumerate(ys):
+            ax.text(k + i * width, y, "0" if y == 0 else f"{y:.2g}", ha="center", va="bottom", fontsize=7)
+    ax.set_xticks([k + width for k in range(len(meshes))])
+    ax.set_xticklabels(meshes, fontsize=8)
+    ax.set_ylabel("% of rays from inside that escape")
+    ax.set_title("Leaks through closed meshes: rays from inside aimed at vertices and edges")
+    ax.legend(fontsize=8)
+    save(fig, docs, "mesh-leaks.png")
+
+
+def main():
+    if len(sys.argv) != 2 or not os.path.isdir(sys.argv[1]):
+        sys.exit("usage: /usr/bin/python3 tools/charts.py DOCS_DIR")
+    docs = sys.argv[1]
+    charts = (("accuracy.csv", speed_vs_error), ("structures.csv", structures), ("mesh-methods.csv", mesh_leaks))
+    for csv_name, chart in charts:
+        if os.path.exists(os.path.join(docs, csv_name)):
+            chart(docs)
+
+
+if __name__ == "__main__":
+    main()
