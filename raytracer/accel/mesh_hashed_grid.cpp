@@ -6,6 +6,7 @@
 #include <glm/geometric.hpp>
 
 #include "collision/intersect.hpp"
+#include "collision/mesh_mesh.hpp"
 
 namespace sweeptrace {
 
@@ -29,11 +30,7 @@ float mean_edge(const collision::TriangleMesh& mesh) {
 MeshHashedGrid::MeshHashedGrid(const collision::TriangleMesh& mesh, float cell_size)
     : mesh_(&mesh), grid_(cell_size > 0.0f ? cell_size : mean_edge(mesh)) {
     for (std::uint32_t t = 0; t < mesh.triangle_count(); ++t) {
-        const collision::Triangle tri = mesh.triangle(t);
-        collision::Bounds3 box;
-        box.extend(tri.a);
-        box.extend(tri.b);
-        box.extend(tri.c);
+        const collision::Bounds3 box = collision::triangle_bounds(mesh, t);
         bounds_.extend(box);
         grid_.insert(t, box.lo, box.hi);
     }

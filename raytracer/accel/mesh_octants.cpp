@@ -3,6 +3,7 @@
 #include <utility>
 
 #include "collision/intersect.hpp"
+#include "collision/mesh_mesh.hpp"
 
 namespace sweeptrace {
 
@@ -21,22 +22,14 @@ collision::Bounds3 octant_box(const collision::Bounds3& b, const glm::vec3& mid,
 }  // namespace
 
 MeshOctants::MeshOctants(const collision::TriangleMesh& mesh) : mesh_(&mesh) {
-    for (const glm::vec3& v : mesh.vertices) bounds_.extend(v);
+    bounds_ = collision::mesh_bounds(mesh);
     mid_ = 0.5f * (bounds_.lo + bounds_.hi);
     for (std::uint32_t t = 0; t < mesh.triangle_count(); ++t) {
-        const collision::Triangle tri = mesh.triangle(t);
-        collision::Bounds3 box;
-        box.extend(tri.a);
-        box.extend(tri.b);
-        box.extend(tri.c);
+        const collision::Bounds3 box = collision::triangle_bounds(mesh, t);
         // Listed by box overlap (closed intervals), so a triangle on the split plane is in both
         // halves: the thesis's vertex rule can drop a large triangle from an octant it crosses.
         for (int i = 0; i < 8; ++i) {
-            const collision::Bounds3 o = octant_box(bounds_, mid_, i);
-            if (box.lo.x <= o.hi.x && box.hi.x >= o.lo.x && box.lo.y <= o.hi.y && box.hi.y >= o.lo.y &&
-                box.lo.z <= o.hi.z && box.hi.z >= o.lo.z) {
-                octants_[i].push_back(t);
-            }
+            if (collision::boxes_overlap(box, octant_box(bounds_, mid_, i))) octants_[i].push_back(t);
         }
     }
 }

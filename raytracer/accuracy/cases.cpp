@@ -67,11 +67,7 @@ glm::vec3 offset_origin(const vec3& p, const vec3& error, const vec3& normal, co
     return o;
 }
 
-namespace {
-
-float uniform(Rng& rng, float lo, float hi) { return std::uniform_real_distribution<float>(lo, hi)(rng); }
-
-vec3 unit_vector(Rng& rng) {
+glm::vec3 unit_vector(Rng& rng) {
     std::normal_distribution<float> g(0.0f, 1.0f);
     for (;;) {
         const vec3 v(g(rng), g(rng), g(rng));
@@ -79,6 +75,11 @@ vec3 unit_vector(Rng& rng) {
         if (l > 1e-3f) return v / l;
     }
 }
+
+namespace {
+
+float uniform(Rng& rng, float lo, float hi) { return std::uniform_real_distribution<float>(lo, hi)(rng); }
+
 
 vec3 in_ball(Rng& rng) { return unit_vector(rng) * std::cbrt(uniform(rng, 0.0f, 1.0f)); }
 vec3 in_cube(Rng& rng) { return vec3(uniform(rng, -1, 1), uniform(rng, -1, 1), uniform(rng, -1, 1)); }

@@ -75,6 +75,9 @@ bool shape_is_closed();
 template <class Shape>
 const char* shape_name();
 
+// A uniformly distributed unit vector.
+glm::vec3 unit_vector(Rng& rng);
+
 // pbrt's origin offset for a secondary ray: move `p` along the normal by the projection of its
 // error bound, toward the side `dir` points to, then one float further away in each component.
 glm::vec3 offset_origin(const glm::vec3& p, const glm::vec3& error, const glm::vec3& normal, const glm::vec3& dir);

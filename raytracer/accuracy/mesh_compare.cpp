@@ -15,6 +15,7 @@
 
 #include "collision/float_error.hpp"
 #include "collision/intersect.hpp"
+#include "collision/mesh_mesh.hpp"
 #include "raytracer/accel/embree_reference.hpp"
 #include "raytracer/accel/mesh_bvh.hpp"
 #include "raytracer/accuracy/cases.hpp"
@@ -113,14 +114,6 @@ std::vector<Method> make_methods(const collision::TriangleMesh& mesh, std::vecto
     return methods;
 }
 
-vec3 unit_vector(Rng& rng) {
-    std::normal_distribution<float> g(0.0f, 1.0f);
-    for (;;) {
-        const vec3 v(g(rng), g(rng), g(rng));
-        const float l = glm::length(v);
-        if (l > 1e-3f) return v / l;
-    }
-}
 
 // A point of the mesh to aim at: a vertex, or a point of an edge (within rounding).
 vec3 mesh_target(Rng& rng, const collision::TriangleMesh& mesh, bool vertex) {
@@ -184,12 +177,7 @@ void count(MeshComparison& c, Where w) {
 std::vector<vec3> inside_points(Rng& rng, const collision::TriangleMesh& mesh, const collision::Bounds3& box,
                                 std::size_t wanted) {
     std::vector<collision::Bounds3> boxes(mesh.triangle_count());
-    for (std::size_t f = 0; f < boxes.size(); ++f) {
-        const collision::Triangle t = mesh.triangle(f);
-        boxes[f].extend(t.a);
-        boxes[f].extend(t.b);
-        boxes[f].extend(t.c);
-    }
+    for (std::size_t f = 0; f < boxes.size(); ++f) boxes[f] = collision::triangle_bounds(mesh, f);
     std::vector<vec3> points;
     std::uniform_real_distribution<float> u(0.0f, 1.0f);
     for (int attempt = 0; attempt < 2000 && points.size() < wanted; ++attempt) {
@@ -260,8 +248,7 @@ MeshReport compare_meshes(const std::vector<NamedMesh>& meshes, std::size_t rays
         std::vector<std::unique_ptr<EmbreeTriangles>> embrees;
         const std::vector<Method> methods = make_methods(mesh, bvhs, embrees);
         const EdgeMap edges(mesh);
-        collision::Bounds3 box;
-        for (const vec3& v : mesh.vertices) box.extend(v);
+        const collision::Bounds3 box = collision::mesh_bounds(mesh);
         const vec3 centre = 0.5f * (box.lo + box.hi);
         const float radius = 0.5f * glm::length(box.hi - box.lo);
 

@@ -29,7 +29,19 @@ struct Traced {
 
 using Tracer = std::function<Traced(const Ray&)>;
 
-// Builds one structure (timed) and returns its tracer; `keep` owns what the tracer uses.
+// The tracer of a structure with intersect(ray, hit, triangle).
+template <class T>
+Tracer tracer_of(std::shared_ptr<T> s, std::shared_ptr<void>& keep) {
+    keep = s;
+    return [s](const Ray& r) {
+        Traced out;
+        collision::RayHit h;
+        out.hit = s->intersect(r, h, out.triangle);
+        return out;
+    };
+}
+
+// Builds one structure (timed by the caller) and returns its tracer; `keep` owns what it uses.
 Tracer build(const std::string& name, const collision::TriangleMesh& mesh, std::shared_ptr<void>& keep) {
     if (name == "brute-force") {
         return [&mesh](const Ray& ray) {
@@ -45,36 +57,9 @@ Tracer build(const std::string& name, const collision::TriangleMesh& mesh, std::
             return out;
         };
     }
-    if (name == "octants") {
-        auto s = std::make_shared<MeshOctants>(mesh);
-        keep = s;
-        return [s](const Ray& r) {
-            Traced out;
-            collision::RayHit h;
-            out.hit = s->intersect(r, h, out.triangle);
-            return out;
-        };
-    }
-    if (name == "hashed-grid") {
-        auto s = std::make_shared<MeshHashedGrid>(mesh);
-        keep = s;
-        return [s](const Ray& r) {
-            Traced out;
-            collision::RayHit h;
-            out.hit = s->intersect(r, h, out.triangle);
-            return out;
-        };
-    }
-    if (name == "bvh") {
-        auto s = std::make_shared<MeshBvh>(mesh);
-        keep = s;
-        return [s](const Ray& r) {
-            Traced out;
-            collision::RayHit h;
-            out.hit = s->intersect(r, h, out.triangle);
-            return out;
-        };
-    }
+    if (name == "octants") return tracer_of(std::make_shared<MeshOctants>(mesh), keep);
+    if (name == "hashed-grid") return tracer_of(std::make_shared<MeshHashedGrid>(mesh), keep);
+    if (name == "bvh") return tracer_of(std::make_shared<MeshBvh>(mesh), keep);
     auto s = std::make_shared<EmbreeTriangles>(mesh, false);
     keep = s;
     return [s](const Ray& r) {
