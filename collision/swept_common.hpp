@@ -65,6 +65,37 @@ TimeOfImpact cast_against(const glm::vec3& start, const glm::vec3& motion, const
     return r;
 }
 
+// The nearest hit of `ray` on the parts bounding a triangle grown by a ball (thesis 3.2.5): the
+// triangle moved by +offset and -offset (offset = unit normal * radius) and the three edge
+// capsules of that radius, each cast with the given ray tests (robust or thesis). With
+// `face_normals_outward` the faces' normals are set to +-offset's direction (the grown set's
+// outward side); otherwise the triangle test's normal is kept as returned.
+template <class TriangleTest, class CapsuleTest>
+bool nearest_on_grown_triangle(const Ray& ray, const Triangle& t, const glm::vec3& offset, float radius,
+                               bool face_normals_outward, TriangleTest triangle_test, CapsuleTest capsule_test,
+                               RayHit& best) {
+    bool found = false;
+    auto consider = [&](bool hit, const RayHit& h) {
+        if (hit && (!found || h.t < best.t)) {
+            best = h;
+            found = true;
+        }
+    };
+    for (const float side : {1.0f, -1.0f}) {
+        const glm::vec3 o = offset * side;
+        RayHit h;
+        const bool hit = triangle_test(ray, Triangle{t.a + o, t.b + o, t.c + o}, h);
+        if (face_normals_outward) h.normal = glm::normalize(o);
+        consider(hit, h);
+    }
+    const glm::vec3 v[3] = {t.a, t.b, t.c};
+    for (int i = 0; i < 3; ++i) {
+        RayHit h;
+        consider(capsule_test(ray, OrientedCapsule{v[i], v[(i + 1) % 3], radius}, h), h);
+    }
+    return found;
+}
+
 inline bool earlier(const TimeOfImpact& a, const TimeOfImpact& b) { return a.hit && (!b.hit || a.t < b.t); }
 
 }  // namespace collision::detail

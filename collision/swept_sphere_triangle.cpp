@@ -33,25 +33,9 @@ TimeOfImpact sweep(const Sphere& moving, const glm::vec3& motion, const Triangle
     const glm::vec3 offset = glm::vec3(glm::normalize(n)) * r;
     const Ray ray = motion_ray(moving.center, motion);
     RayHit best;
-    bool found = false;
-    auto consider = [&](bool hit, const RayHit& h) {
-        if (hit && (!found || h.t < best.t)) {
-            best = h;
-            found = true;
-        }
-    };
-    for (const float side : {1.0f, -1.0f}) {
-        const glm::vec3 o = offset * side;
-        RayHit h;
-        const bool hit = intersect(ray, Triangle{still.a + o, still.b + o, still.c + o}, h);
-        h.normal = glm::normalize(o);  // the face's outward side, whatever its winding
-        consider(hit, h);
-    }
-    const glm::vec3 v[3] = {still.a, still.b, still.c};
-    for (int i = 0; i < 3; ++i) {
-        RayHit h;
-        consider(intersect(ray, OrientedCapsule{v[i], v[(i + 1) % 3], r}, h), h);
-    }
+    const bool found = nearest_on_grown_triangle(
+        ray, still, offset, r, true, [](const Ray& q, const Triangle& t, RayHit& h) { return intersect(q, t, h); },
+        [](const Ray& q, const OrientedCapsule& c, RayHit& h) { return intersect(q, c, h); }, best);
     if (!found) return {};
     TimeOfImpact res;
     res.hit = true;

@@ -5,6 +5,7 @@
 
 #include "collision/overlap.hpp"
 #include "collision/ray.hpp"
+#include "collision/swept_common.hpp"
 #include "collision/thesis/intersect.hpp"
 
 namespace collision::thesis {
@@ -23,7 +24,7 @@ TimeOfImpact from_hit(const RayHit& h, const glm::vec3& point) {
 
 TimeOfImpact sweep(const Sphere& moving, const glm::vec3& motion, const Sphere& still) {
     RayHit h;
-    if (!intersect(segment(moving.center, moving.center + motion), Sphere{still.center, moving.radius + still.radius}, h))
+    if (!thesis::intersect(segment(moving.center, moving.center + motion), Sphere{still.center, moving.radius + still.radius}, h))
         return {};
     return from_hit(h, still.center + glm::normalize(h.point - still.center) * still.radius);
 }
@@ -32,23 +33,10 @@ TimeOfImpact sweep(const Sphere& moving, const glm::vec3& motion, const Triangle
     const Ray ray = segment(moving.center, moving.center + motion);
     const glm::vec3 offset = glm::normalize(glm::cross(still.b - still.a, still.c - still.a)) * moving.radius;
     RayHit best;
-    bool found = false;
-    auto consider = [&](bool hit, const RayHit& h) {
-        if (hit && (!found || h.t < best.t)) {
-            best = h;
-            found = true;
-        }
-    };
-    for (const float side : {1.0f, -1.0f}) {
-        const glm::vec3 o = offset * side;
-        RayHit h;
-        consider(intersect(ray, Triangle{still.a + o, still.b + o, still.c + o}, h), h);
-    }
-    const glm::vec3 v[3] = {still.a, still.b, still.c};
-    for (int i = 0; i < 3; ++i) {
-        RayHit h;
-        consider(intersect(ray, OrientedCapsule{v[i], v[(i + 1) % 3], moving.radius}, h), h);
-    }
+    const bool found = collision::detail::nearest_on_grown_triangle(
+        ray, still, offset, moving.radius, false,
+        [](const Ray& q, const Triangle& t, RayHit& h) { return thesis::intersect(q, t, h); },
+        [](const Ray& q, const OrientedCapsule& c, RayHit& h) { return thesis::intersect(q, c, h); }, best);
     if (!found) return {};
     return from_hit(best, closest_point(still, ray.at(best.t)));
 }
