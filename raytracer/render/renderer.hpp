@@ -37,15 +37,27 @@ struct RenderStats {
     std::uint64_t rays = 0;     // every ray traced (camera, bounce, shadow)
     bool cancelled = false;
     int completed_spp = 0;      // samples per pixel in the returned image
+    // Samples whose radiance came out NaN or infinite, counted and replaced by black so one bad
+    // path cannot poison a pixel; non-zero means a bug worth reporting.
+    std::uint64_t nonfinite_samples = 0;
 };
 
 struct RenderResult {
     Image image;  // mean radiance per pixel of the completed samples
+    // Estimated variance of each pixel's mean, per channel: the unbiased sample variance of the
+    // pixel's samples divided by completed_spp (zero when completed_spp < 2). For tests whose
+    // tolerances come from the noise (z-tests on pixel or block means).
+    Image variance;
     RenderStats stats;
 };
 
 // Same scene + options (seed, spp, max_depth, sampling) give the same image bit for bit whatever
 // `threads` is: every pixel sample draws from its own random stream.
+// The image size is scene.film's; spp and max_depth are the options'. Rendering runs in passes of
+// one sample per pixel; when `cancel` is set, the pass in flight is dropped, so every pixel of
+// the returned image holds the same completed_spp samples (0: a black image), and the image is
+// bit for bit the one a render with spp = completed_spp gives.
+// Throws std::invalid_argument for a film smaller than 1x1, spp < 1, max_depth < 1, threads < 0.
 RenderResult render(const Scene& scene, const Accel& accel, const RenderOptions& options);
 
 }  // namespace sweeptrace

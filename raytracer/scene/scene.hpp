@@ -43,6 +43,10 @@ struct Material {
     float roughness = 0.0f;    // Metal: 0 = perfect mirror
     float ior = 1.5f;          // Dielectric
     glm::vec3 emission{0.0f};  // radiance leaving the front side; any material may emit
+    // Emit from the back side too (e.g. the inside of a closed emissive sphere). The front is the
+    // side the outward geometric normal points to: outside of closed shapes, edge_u x edge_v for
+    // quads, the disk's normal, (b - a) x (c - a) for triangles and mesh faces.
+    bool two_sided_emission = false;
     std::string name;
 };
 

@@ -1,0 +1,169 @@
+#include "raytracer/render/bsdf.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace sweeptrace {
+
+ShadingContext make_shading_context(const SurfaceHit& hit, const glm::vec3& wo) {
+    const bool front = glm::dot(wo, hit.normal) >= 0.0f;
+    const float side = front ? 1.0f : -1.0f;
+    ShadingContext ctx{Frame(side * hit.shading_normal), side * hit.normal, glm::vec3(0.0f), front};
+    ctx.wo_local = ctx.frame.to_local(wo);
+    return ctx;
+}
+
+bool is_delta(const Material& m) {
+    return m.type == Material::Type::Dielectric || (m.type == Material::Type::Metal && m.roughness == 0.0f);
+}
+
+float fresnel_dielectric(float cos_i, float eta, float& cos_t) {
+    const float sin2_t = (1.0f - cos_i * cos_i) / (eta * eta);
+    if (sin2_t >= 1.0f) {
+        cos_t = 0.0f;
+        return 1.0f;
+    }
+    cos_t = std::sqrt(1.0f - sin2_t);
+    const float r_par = (eta * cos_i - cos_t) / (eta * cos_i + cos_t);
+    const float r_perp = (cos_i - eta * cos_t) / (cos_i + eta * cos_t);
+    return 0.5f * (r_par * r_par + r_perp * r_perp);
+}
+
+namespace {
+
+glm::vec3 schlick(const glm::vec3& f0, float cos_d) {
+    const float m = std::clamp(1.0f - cos_d, 0.0f, 1.0f);
+    const float m2 = m * m;
+    return f0 + (glm::vec3(1.0f) - f0) * (m2 * m2 * m);
+}
+
+float metal_alpha(const Material& m) { return std::max(m.roughness * m.roughness, kMinMetalAlpha); }
+
+// GGX normal distribution for a unit half vector h in the local frame, written with
+// sin^2/alpha^2 + cos^2 (not 1 + cos^2 (alpha^2 - 1)) to avoid cancellation at small alpha.
+float ggx_d(const glm::vec3& h, float alpha) {
+    const float a2 = alpha * alpha;
+    const float e = (h.x * h.x + h.y * h.y) / a2 + h.z * h.z;
+    return 1.0f / (kPi * a2 * e * e);
+}
+
+// Smith Lambda for GGX; infinite at grazing (so G1 = 0 there).
+float ggx_lambda(const glm::vec3& w, float alpha) {
+    const float z2 = w.z * w.z;
+    if (z2 == 0.0f) return INFINITY;
+    const float a2t2 = alpha * alpha * (w.x * w.x + w.y * w.y) / z2;
+    return 0.5f * (std::sqrt(1.0f + a2t2) - 1.0f);
+}
+
+// Heitz 2018, "Sampling the GGX Distribution of Visible Normals": a microfacet normal with
+// density D_wo(h) = G1(wo) max(0, wo.h) D(h) / wo.z.
+glm::vec3 sample_ggx_vndf(const glm::vec3& wo, float alpha, float u1, float u2) {
+    const glm::vec3 vh = glm::normalize(glm::vec3(alpha * wo.x, alpha * wo.y, wo.z));
+    const float lensq = vh.x * vh.x + vh.y * vh.y;
+    const glm::vec3 t1 = lensq > 0.0f ? glm::vec3(-vh.y, vh.x, 0.0f) / std::sqrt(lensq) : glm::vec3(1.0f, 0.0f, 0.0f);
+    const glm::vec3 t2 = glm::cross(vh, t1);
+    const float r = std::sqrt(u1);
+    const float phi = 2.0f * kPi * u2;
+    const float p1 = r * std::cos(phi);
+    const float s = 0.5f * (1.0f + vh.z);
+    const float p2 = (1.0f - s) * std::sqrt(std::max(0.0f, 1.0f - p1 * p1)) + s * r * std::sin(phi);
+    const glm::vec3 nh = p1 * t1 + p2 * t2 + std::sqrt(std::max(0.0f, 1.0f - p1 * p1 - p2 * p2)) * vh;
+    return glm::normalize(glm::vec3(alpha * nh.x, alpha * nh.y, std::max(0.0f, nh.z)));
+}
+
+// Reflection must stay on wo's side of both the shading and the geometric normal.
+bool valid_reflection(const ShadingContext& ctx, const glm::vec3& wi_local, const glm::vec3& wi) {
+    return ctx.wo_local.z > 0.0f && wi_local.z > 0.0f && glm::dot(wi, ctx.ng) > 0.0f;
+}
+
+}  // namespace
+
+BsdfEval eval_bsdf(const Material& m, const ShadingContext& ctx, const glm::vec3& wi) {
+    BsdfEval e;
+    switch (m.type) {
+        case Material::Type::Diffuse: {
+            const glm::vec3 wl = ctx.frame.to_local(wi);
+            if (!valid_reflection(ctx, wl, wi)) return e;
+            e.f_cos = m.albedo * (kInvPi * wl.z);
+            e.pdf = kInvPi * wl.z;
+            return e;
+        }
+        case Material::Type::Metal: {
+            if (m.roughness == 0.0f) return e;
+            const glm::vec3 wl = ctx.frame.to_local(wi);
+            if (!valid_reflection(ctx, wl, wi)) return e;
+            const glm::vec3& wo = ctx.wo_local;
+            const float alpha = metal_alpha(m);
+            const glm::vec3 h = glm::normalize(wo + wl);
+            const float d = ggx_d(h, alpha);
+            const float lo = ggx_lambda(wo, alpha), li = ggx_lambda(wl, alpha);
+            const float g2 = 1.0f / (1.0f + lo + li);
+            const float g1 = 1.0f / (1.0f + lo);
+            e.f_cos = schlick(m.albedo, glm::dot(wl, h)) * (d * g2 / (4.0f * wo.z));
+            e.pdf = d * g1 / (4.0f * wo.z);
+            return e;
+        }
+        case Material::Type::Dielectric:
+        case Material::Type::Emissive:
+            return e;
+    }
+    return e;
+}
+
+bool sample_bsdf(const Material& m, const ShadingContext& ctx, float u0, float u1, float u2, BsdfSample& out) {
+    const glm::vec3& wo = ctx.wo_local;
+    switch (m.type) {
+        case Material::Type::Diffuse: {
+            const glm::vec3 wl = cosine_hemisphere(u1, u2);
+            const glm::vec3 wi = ctx.frame.to_world(wl);
+            if (!valid_reflection(ctx, wl, wi)) return false;
+            out = BsdfSample{wi, m.albedo, kInvPi * wl.z, false};
+            return out.pdf > 0.0f;
+        }
+        case Material::Type::Metal: {
+            if (wo.z <= 0.0f) return false;
+            if (m.roughness == 0.0f) {
+                const glm::vec3 wl(-wo.x, -wo.y, wo.z);
+                const glm::vec3 wi = ctx.frame.to_world(wl);
+                if (!valid_reflection(ctx, wl, wi)) return false;
+                out = BsdfSample{wi, schlick(m.albedo, wo.z), 1.0f, true};
+                return true;
+            }
+            const float alpha = metal_alpha(m);
+            const glm::vec3 h = sample_ggx_vndf(wo, alpha, u1, u2);
+            const float wo_h = glm::dot(wo, h);
+            const glm::vec3 wl = 2.0f * wo_h * h - wo;
+            const glm::vec3 wi = ctx.frame.to_world(wl);
+            if (!valid_reflection(ctx, wl, wi)) return false;
+            const float lo = ggx_lambda(wo, alpha), li = ggx_lambda(wl, alpha);
+            // f cos / pdf = F G2 / G1(wo): D and the Jacobian cancel.
+            const float g_ratio = (1.0f + lo) / (1.0f + lo + li);
+            out = BsdfSample{wi, schlick(m.albedo, wo_h) * g_ratio, ggx_d(h, alpha) / (4.0f * wo.z * (1.0f + lo)), false};
+            return out.pdf > 0.0f;
+        }
+        case Material::Type::Dielectric: {
+            if (wo.z <= 0.0f) return false;
+            // eta = n_transmitted / n_incident: entering from the front means going into the medium.
+            const float eta = ctx.front ? m.ior : 1.0f / m.ior;
+            float cos_t = 0.0f;
+            const float f = fresnel_dielectric(std::min(wo.z, 1.0f), eta, cos_t);
+            if (u0 < f) {
+                const glm::vec3 wl(-wo.x, -wo.y, wo.z);
+                const glm::vec3 wi = ctx.frame.to_world(wl);
+                if (glm::dot(wi, ctx.ng) <= 0.0f) return false;
+                out = BsdfSample{wi, glm::vec3(1.0f), f, true};
+                return true;
+            }
+            const glm::vec3 wl(-wo.x / eta, -wo.y / eta, -cos_t);
+            const glm::vec3 wi = glm::normalize(ctx.frame.to_world(wl));
+            if (glm::dot(wi, ctx.ng) >= 0.0f) return false;
+            out = BsdfSample{wi, m.albedo / (eta * eta), 1.0f - f, true};
+            return true;
+        }
+        case Material::Type::Emissive:
+            return false;
+    }
+    return false;
+}
+
+}  // namespace sweeptrace

@@ -1,0 +1,79 @@
+#pragma once
+// Scattering by the scene's materials. One switch on Material::Type per call, no virtual dispatch
+// and no allocation.
+//
+// Conventions: directions are unit vectors pointing away from the surface (wo toward where the
+// light goes, wi toward where it comes from). Lobes are evaluated in a frame around the shading
+// normal turned to wo's side of the geometric normal; reflection additionally requires wi on
+// wo's side of the *geometric* normal and transmission the other side, so interpolated normals
+// never let light leak through a surface.
+//
+// - Diffuse: Lambert, f = albedo / pi, cosine-weighted sampling.
+// - Metal: GGX (Trowbridge-Reitz) microfacet reflection with height-correlated Smith masking,
+//   Schlick Fresnel with F0 = albedo, visible-normal sampling (Heitz 2018), alpha = roughness^2
+//   clamped below at kMinMetalAlpha. Single scattering only: very rough metal loses the energy of
+//   multiple bounces between microfacets (up to ~40% at roughness 1), as in pbrt-v3.
+//   roughness == 0 is a perfect mirror (a delta lobe).
+// - Dielectric: smooth interface, exact Fresnel for unpolarised light, reflection or refraction
+//   chosen with probability F (total internal reflection when no refracted direction exists),
+//   inside/outside decided by the geometric normal. Refraction is tinted by albedo and scales
+//   radiance by 1/eta^2 (radiance is not conserved across a refractive boundary, pbrt §16.1).
+// - Emissive: a pure emitter, black (absorbs everything it does not emit).
+// Emission itself is not part of the BSDF; see emitted_radiance().
+#include <glm/vec3.hpp>
+
+#include "raytracer/geometry/surface_hit.hpp"
+#include "raytracer/render/sampling.hpp"
+#include "raytracer/scene/scene.hpp"
+
+namespace sweeptrace {
+
+// Narrower lobes than alpha = 1e-3 (about 0.06 degrees) are not resolved by any pixel; the clamp
+// keeps GGX's 1/alpha^2 peak and tan^2/alpha^2 terms far inside float range.
+inline constexpr float kMinMetalAlpha = 1e-3f;
+
+struct ShadingContext {
+    Frame frame;         // around the shading normal, on wo's side of the geometric normal
+    glm::vec3 ng;        // geometric normal on wo's side
+    glm::vec3 wo_local;  // wo in `frame`
+    bool front = true;   // wo is on the outward (front) side of the geometric normal
+};
+
+ShadingContext make_shading_context(const SurfaceHit& hit, const glm::vec3& wo);
+
+struct BsdfEval {
+    glm::vec3 f_cos{0.0f};  // f(wo, wi) |cos theta_i|
+    float pdf = 0.0f;       // solid-angle density of sample_bsdf producing wi
+};
+
+struct BsdfSample {
+    glm::vec3 wi{0.0f};
+    glm::vec3 weight{0.0f};  // f |cos theta_i| / pdf (for delta lobes: the lobe's weight)
+    float pdf = 0.0f;        // solid-angle density; for delta lobes the discrete probability
+    bool delta = false;
+};
+
+// True when the material scatters only into isolated directions (no light sampling possible).
+bool is_delta(const Material& m);
+// False for materials that absorb everything (the path ends there).
+inline bool scatters(const Material& m) { return m.type != Material::Type::Emissive; }
+
+// Zero (and pdf 0) for delta lobes and for wi that the material cannot scatter into.
+BsdfEval eval_bsdf(const Material& m, const ShadingContext& ctx, const glm::vec3& wi);
+
+// Returns false when no direction was produced (absorbed, or the sample fell below the surface).
+bool sample_bsdf(const Material& m, const ShadingContext& ctx, float u0, float u1, float u2, BsdfSample& out);
+
+// Radiance the material emits from a point with outward geometric normal `n` toward `w`
+// (unit, pointing away from the surface). Front side only unless Material::two_sided_emission.
+inline glm::vec3 emitted_radiance(const Material& m, const glm::vec3& n, const glm::vec3& w) {
+    const float c = glm::dot(n, w);
+    return (c > 0.0f || (m.two_sided_emission && c < 0.0f)) ? m.emission : glm::vec3(0.0f);
+}
+
+// Exact Fresnel reflectance of a smooth dielectric interface for unpolarised light.
+// cos_i in [0, 1] on the incident side, eta = n_transmitted / n_incident. Returns 1 on total
+// internal reflection and writes cos_t (the refracted cosine, >= 0) otherwise.
+float fresnel_dielectric(float cos_i, float eta, float& cos_t);
+
+}  // namespace sweeptrace

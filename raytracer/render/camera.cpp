@@ -1,0 +1,41 @@
+#include "raytracer/render/camera.hpp"
+
+#include <cmath>
+
+#include <glm/geometric.hpp>
+
+#include "raytracer/render/sampling.hpp"
+
+namespace sweeptrace {
+
+CameraModel::CameraModel(const Camera& c, int width, int height) : origin_(c.position) {
+    forward_ = glm::normalize(c.look_at - c.position);
+    right_ = glm::normalize(glm::cross(forward_, c.up));
+    up_ = glm::cross(right_, forward_);
+    half_height_ = std::tan(0.5f * c.vfov_degrees * kPi / 180.0f);
+    half_width_ = half_height_ * static_cast<float>(width) / static_cast<float>(height);
+    inv_width_ = 1.0f / static_cast<float>(width);
+    inv_height_ = 1.0f / static_cast<float>(height);
+    lens_radius_ = 0.5f * c.aperture;
+    focus_distance_ = c.focus_distance > 0.0f ? c.focus_distance : glm::length(c.look_at - c.position);
+}
+
+collision::Ray CameraModel::generate(float x, float y, float u1, float u2) const {
+    const float sx = (2.0f * x * inv_width_ - 1.0f) * half_width_;
+    const float sy = (1.0f - 2.0f * y * inv_height_) * half_height_;
+    const glm::vec3 dir = forward_ + sx * right_ + sy * up_;  // through the plane at distance 1
+    collision::Ray ray;
+    if (lens_radius_ <= 0.0f) {
+        ray.origin = origin_;
+        ray.dir = glm::normalize(dir);
+        return ray;
+    }
+    // Thin lens: every ray through the same film point meets at the focus plane.
+    const glm::vec3 focus = origin_ + focus_distance_ * dir;
+    const glm::vec2 lens = lens_radius_ * concentric_disk(u1, u2);
+    ray.origin = origin_ + lens.x * right_ + lens.y * up_;
+    ray.dir = glm::normalize(focus - ray.origin);
+    return ray;
+}
+
+}  // namespace sweeptrace

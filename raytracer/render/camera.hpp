@@ -1,0 +1,29 @@
+#pragma once
+// Primary rays: a pinhole, or a thin lens (aperture diameter > 0) focused at focus_distance
+// (by default the distance to look_at). The vertical field of view spans the film's height; the
+// horizontal extent follows the film's aspect ratio (width / height).
+#include <glm/vec3.hpp>
+
+#include "collision/ray.hpp"
+#include "raytracer/scene/scene.hpp"
+
+namespace sweeptrace {
+
+class CameraModel {
+public:
+    CameraModel(const Camera& camera, int width, int height);
+
+    // The ray through film position (x, y) in pixels (x right, y down, (0, 0) the top-left corner
+    // of the top-left pixel) and lens sample (u1, u2) in [0, 1)^2. Direction is unit length.
+    collision::Ray generate(float x, float y, float u1, float u2) const;
+
+private:
+    glm::vec3 origin_;
+    glm::vec3 right_, up_, forward_;  // orthonormal camera frame
+    float half_width_ = 1.0f, half_height_ = 1.0f;  // image plane extent at distance 1
+    float inv_width_ = 1.0f, inv_height_ = 1.0f;
+    float lens_radius_ = 0.0f;
+    float focus_distance_ = 1.0f;
+};
+
+}  // namespace sweeptrace

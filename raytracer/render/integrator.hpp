@@ -1,0 +1,56 @@
+#pragma once
+// Unidirectional path tracing: the radiance arriving along one camera ray.
+//
+// At every path vertex, light is gathered two ways, combined by multiple importance sampling
+// with the power heuristic (Veach 1997, ch. 9):
+//   - next event estimation: a point on a light (LightSet), a shadow ray, weighted against the
+//     density with which the BSDF would have sampled that direction;
+//   - BSDF sampling: the next vertex, if emissive, contributes weighted against the density with
+//     which NEE from the previous vertex would have sampled it.
+// Delta lobes (mirror, glass) take no NEE and give the BSDF-sampled ray full weight; the camera
+// ray and escaped rays (the background is not a sampled light) too. Sampling::BsdfOnly turns NEE
+// off and gives every emitter hit full weight: an independent estimator of the same integral.
+//
+// Depth: max_depth counts path vertices after the camera, the emitting vertex included, so
+// max_depth = 1 shows only emitters (and the background) seen directly. Both strategies stop at
+// the same path length, so NeeMis and BsdfOnly estimate exactly the same truncated sum.
+// Russian roulette from the third bounce on: continue with probability min(1, max(throughput)),
+// dividing the throughput by it (unbiased).
+#include <cstdint>
+
+#include <glm/vec3.hpp>
+
+#include "collision/ray.hpp"
+#include "raytracer/accel/accel.hpp"
+#include "raytracer/render/lights.hpp"
+#include "raytracer/render/random.hpp"
+#include "raytracer/render/renderer.hpp"
+#include "raytracer/scene/scene.hpp"
+
+namespace sweeptrace {
+
+// Radiance of the background seen along unit direction `dir`. Sky: horizon below the horizon,
+// blended linearly to the zenith by dir.y above it.
+glm::vec3 background_radiance(const Background& bg, const glm::vec3& dir);
+
+class PathIntegrator {
+public:
+    PathIntegrator(const Scene& scene, const Accel& accel, const LightSet& lights, int max_depth, Sampling sampling,
+                   PlantedDefect defect);
+
+    // `ray` must have a unit direction. Adds every ray traced to `rays`.
+    glm::vec3 radiance(collision::Ray ray, Rng& rng, std::uint64_t& rays) const;
+
+private:
+    collision::Ray continue_ray(const SurfaceHit& hit, const glm::vec3& dir) const;
+    collision::Ray shadow_ray(const SurfaceHit& hit, const glm::vec3& target, const glm::vec3& target_error) const;
+
+    const Scene& scene_;
+    const Accel& accel_;
+    const LightSet& lights_;
+    int max_depth_;
+    Sampling sampling_;
+    PlantedDefect defect_;
+};
+
+}  // namespace sweeptrace

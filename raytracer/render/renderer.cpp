@@ -1,0 +1,204 @@
+#include "raytracer/render/renderer.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <condition_variable>
+#include <cmath>
+#include <exception>
+#include <mutex>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include <glm/common.hpp>
+#include <glm/vec3.hpp>
+#include <tbb/blocked_range.h>
+#include <tbb/global_control.h>
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+
+#include "raytracer/render/camera.hpp"
+#include "raytracer/render/integrator.hpp"
+#include "raytracer/render/lights.hpp"
+#include "raytracer/render/random.hpp"
+
+namespace sweeptrace {
+
+namespace {
+
+constexpr int kTileSize = 16;
+
+// The render runs in passes of one sample per pixel over the whole image. A cancel request
+// abandons the pass in flight, so the returned image always holds the same number of samples in
+// every pixel (completed_spp), never a patchwork of tiles with more samples than others.
+class PassRenderer {
+public:
+    PassRenderer(const Scene& scene, const Accel& accel, const RenderOptions& opt)
+        : opt_(opt),
+          width_(scene.film.width),
+          height_(scene.film.height),
+          tiles_x_((width_ + kTileSize - 1) / kTileSize),
+          tiles_y_((height_ + kTileSize - 1) / kTileSize),
+          lights_(scene),
+          camera_(scene.camera, width_, height_),
+          integrator_(scene, accel, lights_, opt.max_depth, opt.sampling, opt.defect),
+          sum_(static_cast<std::size_t>(width_) * height_, glm::dvec3(0.0)),
+          sum_sq_(sum_.size(), glm::dvec3(0.0)),
+          pass_(sum_.size()) {}
+
+    void run() {
+        const int threads = opt_.threads > 0 ? opt_.threads : tbb::task_arena::automatic;
+        // TBB caps workers at the core count; an explicit --threads above it is honoured (a
+        // user asked for it, and the determinism tests run 3 threads on 2 cores).
+        std::optional<tbb::global_control> allow;
+        if (opt_.threads > tbb::this_task_arena::max_concurrency())
+            allow.emplace(tbb::global_control::max_allowed_parallelism, static_cast<std::size_t>(opt_.threads));
+        tbb::task_arena arena(threads);
+        arena.execute([this] {
+            const int tiles = tiles_x_ * tiles_y_;
+            for (int s = 0; s < opt_.spp; ++s) {
+                if (cancelled()) break;
+                tiles_done_.store(0, std::memory_order_relaxed);
+                std::atomic<bool> abandoned{false};
+                tbb::parallel_for(tbb::blocked_range<int>(0, tiles, 1), [&](const tbb::blocked_range<int>& r) {
+                    for (int t = r.begin(); t < r.end(); ++t) {
+                        if (cancelled()) {
+                            abandoned.store(true, std::memory_order_relaxed);
+                            return;
+                        }
+                        render_tile(t, s);
+                        tiles_done_.fetch_add(1, std::memory_order_relaxed);
+                    }
+                });
+                if (abandoned.load()) break;
+                tbb::parallel_for(tbb::blocked_range<std::size_t>(0, sum_.size(), 4096),
+                                  [&](const tbb::blocked_range<std::size_t>& r) {
+                                      for (std::size_t i = r.begin(); i < r.end(); ++i) {
+                                          const glm::dvec3 v(pass_[i]);
+                                          sum_[i] += v;
+                                          sum_sq_[i] += v * v;
+                                      }
+                                  });
+                completed_spp_.store(s + 1, std::memory_order_release);
+            }
+        });
+    }
+
+    double fraction_done() const {
+        const int tiles = tiles_x_ * tiles_y_;
+        const double pass = static_cast<double>(tiles_done_.load(std::memory_order_relaxed)) / tiles;
+        return std::min(1.0, (completed_spp_.load(std::memory_order_acquire) + std::min(pass, 1.0)) / opt_.spp);
+    }
+
+    RenderResult result(double seconds) const {
+        RenderResult res;
+        res.image = Image(width_, height_);
+        res.variance = Image(width_, height_);
+        const int spp = completed_spp_.load();
+        for (std::size_t i = 0; spp > 0 && i < sum_.size(); ++i) {
+            const glm::dvec3 mean = sum_[i] / double(spp);
+            res.image.pixels[i] = glm::vec3(mean);
+            if (spp > 1) {
+                const glm::dvec3 var = glm::max(sum_sq_[i] - double(spp) * mean * mean, glm::dvec3(0.0)) / double(spp - 1);
+                res.variance.pixels[i] = glm::vec3(var / double(spp));
+            }
+        }
+        res.stats.seconds = seconds;
+        res.stats.completed_spp = spp;
+        res.stats.samples = static_cast<std::uint64_t>(spp) * sum_.size();
+        res.stats.rays = rays_.load();
+        res.stats.nonfinite_samples = nonfinite_.load();
+        res.stats.cancelled = spp < opt_.spp;
+        return res;
+    }
+
+private:
+    bool cancelled() const { return opt_.cancel != nullptr && opt_.cancel->load(std::memory_order_relaxed); }
+
+    void render_tile(int tile, int sample) {
+        const int x0 = (tile % tiles_x_) * kTileSize, y0 = (tile / tiles_x_) * kTileSize;
+        const int x1 = std::min(x0 + kTileSize, width_), y1 = std::min(y0 + kTileSize, height_);
+        std::uint64_t rays = 0, nonfinite = 0;
+        for (int y = y0; y < y1; ++y) {
+            for (int x = x0; x < x1; ++x) {
+                const std::size_t pixel = static_cast<std::size_t>(y) * width_ + x;
+                Rng rng(opt_.seed, pixel, static_cast<std::uint64_t>(sample));
+                const float fx = static_cast<float>(x) + rng.uniform();
+                const float fy = static_cast<float>(y) + rng.uniform();
+                const float l1 = rng.uniform(), l2 = rng.uniform();
+                glm::vec3 l = integrator_.radiance(camera_.generate(fx, fy, l1, l2), rng, rays);
+                if (!std::isfinite(l.x) || !std::isfinite(l.y) || !std::isfinite(l.z)) {
+                    l = glm::vec3(0.0f);
+                    ++nonfinite;
+                }
+                pass_[pixel] = l;
+            }
+        }
+        rays_.fetch_add(rays, std::memory_order_relaxed);
+        if (nonfinite != 0) nonfinite_.fetch_add(nonfinite, std::memory_order_relaxed);
+    }
+
+    const RenderOptions& opt_;
+    int width_, height_, tiles_x_, tiles_y_;
+    LightSet lights_;
+    CameraModel camera_;
+    PathIntegrator integrator_;
+    std::vector<glm::dvec3> sum_;   // per-pixel sum over completed passes, added in pass order
+    std::vector<glm::dvec3> sum_sq_;  // per-pixel sum of squares, for the variance
+    std::vector<glm::vec3> pass_;   // the pass in flight
+    std::atomic<int> completed_spp_{0};
+    std::atomic<int> tiles_done_{0};
+    std::atomic<std::uint64_t> rays_{0}, nonfinite_{0};
+};
+
+}  // namespace
+
+RenderResult render(const Scene& scene, const Accel& accel, const RenderOptions& options) {
+    if (scene.film.width < 1 || scene.film.height < 1)
+        throw std::invalid_argument("render: film size must be at least 1x1, got " + std::to_string(scene.film.width) +
+                                    "x" + std::to_string(scene.film.height));
+    if (options.spp < 1) throw std::invalid_argument("render: spp must be at least 1");
+    if (options.max_depth < 1) throw std::invalid_argument("render: max_depth must be at least 1");
+    if (options.threads < 0) throw std::invalid_argument("render: threads must be >= 0");
+
+    const auto start = std::chrono::steady_clock::now();
+    PassRenderer renderer(scene, accel, options);
+    if (!options.progress) {
+        renderer.run();
+    } else {
+        // The work runs on its own thread so that progress is always reported from the caller's.
+        std::mutex m;
+        std::condition_variable cv;
+        bool done = false;
+        std::exception_ptr error;
+        std::thread worker([&] {
+            try {
+                renderer.run();
+            } catch (...) {
+                error = std::current_exception();
+            }
+            {
+                std::lock_guard lock(m);
+                done = true;
+            }
+            cv.notify_all();
+        });
+        {
+            std::unique_lock lock(m);
+            while (!cv.wait_for(lock, std::chrono::milliseconds(100), [&] { return done; })) {
+                lock.unlock();
+                options.progress(renderer.fraction_done());
+                lock.lock();
+            }
+        }
+        worker.join();
+        if (error) std::rethrow_exception(error);
+        options.progress(renderer.fraction_done());
+    }
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return renderer.result(seconds);
+}
+
+}  // namespace sweeptrace

@@ -1,0 +1,181 @@
+// Light sampling: every shape's sampler produces the density pdf() reports for the same point,
+// and the densities integrate to the true area (or solid angle).
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <string>
+
+#include <glm/geometric.hpp>
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "raytracer/render/lights.hpp"
+#include "raytracer/render/random.hpp"
+#include "raytracer/render/sampling.hpp"
+#include "render_test_scenes.hpp"
+#include "render_test_stats.hpp"
+
+using namespace sweeptrace;
+using sweeptrace::test::Estimate;
+using sweeptrace::test::z_bound;
+
+namespace {
+
+Scene single_light(const Shape& shape, const glm::mat4& m, glm::vec3 emission = glm::vec3(1.0f)) {
+    Scene s;
+    Material mat;
+    mat.type = Material::Type::Emissive;
+    mat.emission = emission;
+    s.materials.push_back(mat);
+    Object o;
+    o.shape = shape;
+    o.transform = Transform::from_matrix(m);
+    s.objects.push_back(o);
+    return s;
+}
+
+const glm::mat4 kTilted = glm::rotate(glm::translate(glm::mat4(1.0f), {0.3f, -0.2f, 0.5f}), 0.7f,
+                                      glm::normalize(glm::vec3(1.0f, 2.0f, 0.5f)));
+
+// From shading point p: E[1/p_area] over light samples (front and back alike) is the light's
+// world area; pdf(p, hit) at each sampled point equals the density it was sampled with.
+double sampled_area(const Scene& scene, const glm::vec3& p, std::uint64_t seed, Estimate& est) {
+    Scene both = scene;
+    both.materials[0].two_sided_emission = true;  // so back-facing samples are returned too
+    const LightSet lights(both);
+    REQUIRE(lights.size() == 1);
+    Rng rng(seed, 0, 0);
+    for (int i = 0; i < 100000; ++i) {
+        LightSample ls;
+        const bool ok = lights.sample(p, rng.uniform(), rng.uniform(), rng.uniform(), rng.uniform(), ls);
+        if (!ok) {
+            est.add(0.0);
+            continue;
+        }
+        SurfaceHit h;
+        h.point = ls.point;
+        h.normal = ls.normal;
+        h.object = 0;
+        const float cos_l = std::abs(glm::dot(ls.normal, ls.wi));
+        // Same point, same normal; pdf() recomputes the light's cosine as dot(n, w) / |w| instead
+        // of dot(n, w / |w|): a few ulps apart, relatively 1/cos_l times more in the cosine.
+        REQUIRE(lights.pdf(p, h) == Approx(ls.pdf).epsilon(1e-6 + 1e-6 / cos_l));
+        est.add(double(ls.distance) * ls.distance / (double(ls.pdf) * cos_l));
+    }
+    return est.mean;
+}
+
+double spheroid_area(double a, double c) {  // prolate, c > a
+    const double e = std::sqrt(1.0 - a * a / (c * c));
+    return 2.0 * M_PI * a * a * (1.0 + c / (a * e) * std::asin(e));
+}
+
+}  // namespace
+
+TEST_CASE("lights: area sampling of every shape integrates to its world area", "[render][lights]") {
+    struct Case {
+        std::string name;
+        Shape shape;
+        glm::mat4 m;
+        double area;
+    };
+    const glm::mat4 stretch_y = glm::scale(glm::mat4(1.0f), {1.0f, 2.0f, 1.0f});
+    const glm::mat4 scaled2 = glm::scale(kTilted, glm::vec3(2.0f));
+    const Case cases[] = {
+        {"quad", collision::Quad{{0, 0, 0}, {1, 0, 0}, {0.5f, 0, 2}}, kTilted, 2.0},
+        {"sheared quad", collision::Quad{{0, 0, 0}, {1, 0, 0}, {0, 0, 2}}, glm::scale(kTilted, {1.0f, 3.0f, 0.5f}), 1.0},
+        {"disk", collision::Disk{{1, 0, 0}, glm::normalize(glm::vec3(1, 1, 0)), 0.5f}, kTilted, M_PI * 0.25},
+        {"stretched disk", collision::Disk{{0, 0, 0}, {0, 0, 1}, 1.0f}, glm::scale(kTilted, {3.0f, 1.0f, 1.0f}), 3.0 * M_PI},
+        {"triangle", collision::Triangle{{0, 0, 0}, {2, 0, 0}, {0, 3, 0}}, kTilted, 3.0},
+        {"stretched sphere", collision::Sphere{{0, 0, 0}, 1.0f}, stretch_y, spheroid_area(1.0, 2.0)},
+        {"ellipsoid", collision::Ellipsoid{{0.5f, 0, 0}, {1.0f, 2.0f, 1.0f}}, kTilted, spheroid_area(1.0, 2.0)},
+        {"box", collision::Aabb{{0, 0, 0}, {1, 2, 3}}, glm::scale(kTilted, {2.0f, 1.0f, 1.0f}),
+         2.0 * (2 * 2 + 2 * 3 + 2 * 3)},
+        {"cylinder", collision::Cylinder{{0, 0, 0}, 0.5f, 2.0f}, scaled2, 4.0 * 2.0 * M_PI * 0.5 * (0.5 + 2.0)},
+        {"capsule", collision::Capsule{{0, 1, 0}, 0.5f, 1.0f}, kTilted, 2.0 * M_PI * 0.5 * 1.0 + 4.0 * M_PI * 0.25},
+    };
+    std::uint64_t seed = 100;
+    for (const Case& c : cases) {
+        INFO(c.name);
+        Estimate est;
+        sampled_area(single_light(c.shape, c.m), {5.0f, 4.0f, 3.0f}, ++seed, est);
+        CHECK(std::abs(est.mean - c.area) < z_bound(20) * est.standard_error() + 1e-6 * c.area);
+        CHECK(est.standard_error() < 0.05 * c.area);  // the test has power
+    }
+}
+
+TEST_CASE("lights: a mesh light is sampled uniformly over its transformed surface", "[render][lights]") {
+    Scene s = single_light(MeshInstance{0}, glm::scale(kTilted, {1.0f, 2.0f, 1.0f}));
+    Mesh mesh;
+    // Two triangles of areas 0.5 and 2 (before the y-stretch, which doubles both: they lie in z=0
+    // spanning x and y).
+    mesh.triangles.vertices = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {3, 0, 0}, {5, 0, 0}, {3, 2, 0}};
+    mesh.triangles.indices = {{0, 1, 2}, {3, 4, 5}};
+    s.meshes.push_back(mesh);
+    Estimate est;
+    sampled_area(s, {5.0f, 4.0f, 3.0f}, 7, est);
+    CHECK(std::abs(est.mean - 5.0) < z_bound(1) * est.standard_error() + 1e-6);
+}
+
+TEST_CASE("lights: a similar-transformed sphere is sampled in its cone, points visible, E[1/pdf] = solid angle", "[render][lights]") {
+    const glm::mat4 m = glm::scale(kTilted, glm::vec3(1.5f));
+    const Scene s = single_light(collision::Sphere{{1, 0, 0}, 0.4f}, m);
+    const LightSet lights(s);
+    const glm::vec3 c = glm::vec3(m * glm::vec4(1, 0, 0, 1));
+    const float r = 0.6f;
+    for (float dist : {1.0f, 3.0f, 300.0f}) {
+        const glm::vec3 p = c + dist * glm::normalize(glm::vec3(1.0f, 0.5f, -0.2f));
+        Rng rng(9, 0, 0);
+        Estimate solid;
+        const double cos_max = std::sqrt(1.0 - (double)r * r / ((double)dist * dist));
+        for (int i = 0; i < 20000; ++i) {
+            LightSample ls;
+            REQUIRE(lights.sample(p, rng.uniform(), rng.uniform(), rng.uniform(), rng.uniform(), ls));
+            // On the sphere to float accuracy of its coordinates (gamma(5) (|c| + r) each).
+            REQUIRE(std::abs(glm::length(ls.point - c) - r) < 1e-5f * (glm::length(c) + r));
+            REQUIRE(glm::dot(ls.normal, p - ls.point) >= -1e-5f * dist);  // the visible side
+            // Inside the cone: the direction's angle to the centre is at most theta_max.
+            REQUIRE(glm::dot(ls.wi, glm::normalize(c - p)) >= cos_max - 1e-6);
+            SurfaceHit h;
+            h.point = ls.point;
+            h.normal = ls.normal;
+            REQUIRE(lights.pdf(p, h) == Approx(ls.pdf).epsilon(1e-6));
+            solid.add(1.0 / ls.pdf);
+        }
+        CHECK(solid.mean == Approx(2.0 * M_PI * (1.0 - cos_max)).epsilon(1e-4));
+    }
+}
+
+TEST_CASE("lights: selection follows power, and pdf() of a non-light is zero", "[render][lights]") {
+    Scene s;
+    Material dim, bright, plain;
+    dim.emission = glm::vec3(1.0f);
+    bright.emission = glm::vec3(3.0f);
+    s.materials = {dim, bright, plain};
+    const auto add = [&](const Shape& shape, std::uint32_t mat) {
+        Object o;
+        o.shape = shape;
+        o.material = mat;
+        s.objects.push_back(o);
+    };
+    add(collision::Quad{{0, 5, 0}, {1, 0, 0}, {0, 0, 1}}, 0);   // power 1 x area 1, facing down
+    add(collision::Quad{{3, 5, 0}, {1, 0, 0}, {0, 0, 2}}, 1);   // power 3 x area 2
+    add(collision::Sphere{{0, 0, 0}, 1.0f}, 2);                 // not a light
+    const LightSet lights(s);
+    REQUIRE(lights.size() == 2);
+    CHECK(lights.selection_probability(0) == Approx(1.0f / 7.0f));
+    CHECK(lights.selection_probability(1) == Approx(6.0f / 7.0f));
+    CHECK(lights.selection_probability(2) == 0.0f);
+    Rng rng(1, 0, 0);
+    Estimate picked_first;
+    for (int i = 0; i < 20000; ++i) {
+        LightSample ls;
+        REQUIRE(lights.sample({0.5f, 0, 0.5f}, rng.uniform(), rng.uniform(), rng.uniform(), rng.uniform(), ls));
+        picked_first.add(ls.point.x < 2.0f ? 1.0 : 0.0);
+    }
+    CHECK(std::abs(picked_first.mean - 1.0 / 7.0) < z_bound(1) * picked_first.standard_error());
+    SurfaceHit h;
+    h.object = 2;
+    h.point = {0, 1, 0};
+    h.normal = {0, 1, 0};
+    CHECK(lights.pdf({0, 3, 0}, h) == 0.0f);
+}
