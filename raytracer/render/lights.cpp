@@ -53,7 +53,10 @@ glm::vec3 affine_error(const glm::mat3& l, const glm::vec3& t, const glm::vec3& 
 
 }  // namespace
 
-LightSet::LightSet(const Scene& scene) : scene_(&scene), light_of_object_(scene.objects.size(), -1) {
+LightSet::LightSet(const Scene& scene, PlantedDefect defect)
+    : scene_(&scene),
+      normal_sign_(defect == PlantedDefect::FlippedNormals ? -1.0f : 1.0f),
+      light_of_object_(scene.objects.size(), -1) {
     std::vector<float> weights;
     for (std::uint32_t i = 0; i < scene.objects.size(); ++i) {
         const Object& obj = scene.objects[i];
@@ -285,8 +288,8 @@ bool LightSet::sample(const glm::vec3& p, float u_select, float u_part, float u1
                 out.pdf = l.probability * uniform_cone_pdf(omc);
                 out.point = q;
                 out.point_error = err;
-                out.normal = n;
-                out.radiance = emitted_radiance(*l.material, n, -out.wi);
+                out.normal = normal_sign_ * n;
+                out.radiance = emitted_radiance(*l.material, out.normal, -out.wi);
                 return out.pdf > 0.0f && std::isfinite(out.pdf) && luminance(out.radiance) > 0.0f;
             }
             n = uniform_sphere(u1, u2);
@@ -351,8 +354,8 @@ bool LightSet::sample(const glm::vec3& p, float u_select, float u_part, float u1
     out.pdf = l.probability * area_pdf * d2 / cos_l;
     out.point = q;
     out.point_error = err;
-    out.normal = n;
-    out.radiance = emitted_radiance(*l.material, n, -out.wi);
+    out.normal = normal_sign_ * n;
+    out.radiance = emitted_radiance(*l.material, out.normal, -out.wi);
     return std::isfinite(out.pdf) && luminance(out.radiance) > 0.0f;
 }
 

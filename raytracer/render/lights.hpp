@@ -29,6 +29,7 @@
 #include <glm/vec3.hpp>
 
 #include "raytracer/geometry/surface_hit.hpp"
+#include "raytracer/render/renderer.hpp"
 #include "raytracer/scene/scene.hpp"
 
 namespace sweeptrace {
@@ -45,7 +46,9 @@ struct LightSample {
 
 class LightSet {
 public:
-    explicit LightSet(const Scene& scene);
+    // PlantedDefect::FlippedNormals turns the sampled points' normals inward too, so the planted
+    // bug acts on light sampling as it does on the intersector's hits.
+    explicit LightSet(const Scene& scene, PlantedDefect defect = PlantedDefect::None);
 
     bool empty() const { return lights_.empty(); }
     std::size_t size() const { return lights_.size(); }
@@ -88,6 +91,7 @@ private:
                         glm::vec3& err_obj) const;
 
     const Scene* scene_ = nullptr;
+    float normal_sign_ = 1.0f;                  // -1 under PlantedDefect::FlippedNormals
     std::vector<Light> lights_;
     std::vector<float> cdf_;                    // cumulative selection weights, normalised
     std::vector<std::int32_t> light_of_object_; // object index -> light index or -1

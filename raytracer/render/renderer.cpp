@@ -41,7 +41,7 @@ public:
           height_(scene.film.height),
           tiles_x_((width_ + kTileSize - 1) / kTileSize),
           tiles_y_((height_ + kTileSize - 1) / kTileSize),
-          lights_(scene),
+          lights_(scene, opt.defect),
           camera_(scene.camera, width_, height_),
           integrator_(scene, accel, lights_, opt.max_depth, opt.sampling, opt.defect),
           sum_(static_cast<std::size_t>(width_) * height_, glm::dvec3(0.0)),

@@ -283,7 +283,11 @@ TEST_CASE("render: the planted FlippedNormals defect turns one-sided lights away
     const double good = image_mean(render(s, accel, o).image).g;
     o.defect = PlantedDefect::FlippedNormals;
     const double bad = image_mean(render(s, accel, o).image).g;
-    CHECK(bad < 0.5 * good);
+    // Both lights emit from their fronts only; with every normal inward the quad light shines up
+    // (onto the wall above it only) and the sphere light into itself: the image goes nearly black.
+    INFO("mean green: " << good << " -> " << bad);
+    CHECK(good > 0.05);
+    CHECK(bad < 0.05 * good);
 }
 
 TEST_CASE("render: invalid options are rejected", "[render]") {
