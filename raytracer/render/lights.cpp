@@ -51,6 +51,22 @@ glm::vec3 affine_error(const glm::mat3& l, const glm::vec3& t, const glm::vec3& 
     return gamma(3) * (al * glm::abs(p) + glm::abs(t)) + al * err;
 }
 
+// The cone a sphere (centre c, radius r) subtends from p, or false when p is inside it. Both
+// sample() and pdf() decide cone-or-area through this one function, so they always agree.
+struct Cone {
+    float dc2 = 0.0f, sin2_max = 0.0f, omc = 0.0f;  // |p - c|^2, sin^2(theta_max), 1 - cos(theta_max)
+};
+bool cone_from(const glm::vec3& c, float r, const glm::vec3& p, Cone& cone) {
+    const glm::vec3 to_p = p - c;
+    cone.dc2 = glm::dot(to_p, to_p);
+    const float r2 = r * r;
+    if (!(cone.dc2 > r2)) return false;
+    cone.sin2_max = r2 / cone.dc2;
+    const float cos_max = std::sqrt(std::max(0.0f, 1.0f - cone.sin2_max));
+    cone.omc = cone.sin2_max / (1.0f + cos_max);  // 1 - cos, without cancellation for small cones
+    return true;
+}
+
 }  // namespace
 
 LightSet::LightSet(const Scene& scene, PlantedDefect defect)
@@ -181,6 +197,11 @@ LightSet::LightSet(const Scene& scene, PlantedDefect defect)
     if (!cdf_.empty()) cdf_.back() = 1.0f;
 }
 
+// Nanson's formula: dA_world = |det L| / |L^T n| dA_object for world normal n.
+float LightSet::surface_area_pdf(const Light& l, const glm::vec3& n) {
+    return l.area_pdf * glm::length(glm::transpose(l.linear) * n) * l.inv_abs_det;
+}
+
 float LightSet::selection_probability(std::uint32_t object) const {
     return is_light(object) ? lights_[static_cast<std::size_t>(light_of_object_[object])].probability : 0.0f;
 }
@@ -254,16 +275,14 @@ bool LightSet::sample(const glm::vec3& p, float u_select, float u_part, float u1
     float area_pdf = l.area_pdf;
     switch (l.kind) {
         case Kind::SphereCone: {
-            const glm::vec3 to_p = p - l.origin;
-            const float dc2 = glm::dot(to_p, to_p);
-            const float r2 = l.radius * l.radius;
-            if (dc2 > r2) {
+            Cone cone;
+            if (cone_from(l.origin, l.radius, p, cone)) {
                 // Cone sampling (pbrt-v3 §14.2): a direction in the subtended cone, then the
                 // point where it first meets the sphere, found through the angle at the centre.
-                const float dc = std::sqrt(dc2);
-                const float sin2_max = r2 / dc2;
-                const float cos_max = std::sqrt(std::max(0.0f, 1.0f - sin2_max));
-                const float omc = sin2_max / (1.0f + cos_max);
+                const float dc = std::sqrt(cone.dc2);
+                const float sin2_max = cone.sin2_max;
+                const float omc = cone.omc;
+                const glm::vec3 to_p = p - l.origin;
                 const glm::vec3 d = uniform_cone(u1, u2, omc);
                 const float sin2_t = d.x * d.x + d.y * d.y;
                 const float cos_t = d.z;
@@ -323,7 +342,7 @@ bool LightSet::sample(const glm::vec3& p, float u_select, float u_part, float u1
             q = l.linear * po + l.origin;
             err = affine_error(l.linear, l.origin, po, erro);
             n = glm::normalize(l.normal_to_world * no);
-            area_pdf = l.area_pdf * glm::length(glm::transpose(l.linear) * n) * l.inv_abs_det;
+            area_pdf = surface_area_pdf(l, n);
             break;
         }
         case Kind::Mesh: {
@@ -365,18 +384,12 @@ float LightSet::pdf(const glm::vec3& p, const SurfaceHit& hit) const {
     float area_pdf = l.area_pdf;
     switch (l.kind) {
         case Kind::SphereCone: {
-            const glm::vec3 to_p = p - l.origin;
-            const float dc2 = glm::dot(to_p, to_p);
-            const float r2 = l.radius * l.radius;
-            if (dc2 > r2) {  // the same branch sample() takes
-                const float sin2_max = r2 / dc2;
-                const float cos_max = std::sqrt(std::max(0.0f, 1.0f - sin2_max));
-                return l.probability * uniform_cone_pdf(sin2_max / (1.0f + cos_max));
-            }
+            Cone cone;
+            if (cone_from(l.origin, l.radius, p, cone)) return l.probability * uniform_cone_pdf(cone.omc);
             break;
         }
         case Kind::Surface:
-            area_pdf = l.area_pdf * glm::length(glm::transpose(l.linear) * hit.normal) * l.inv_abs_det;
+            area_pdf = surface_area_pdf(l, hit.normal);
             break;
         default:
             break;

@@ -87,6 +87,7 @@ private:
         const Material* material = nullptr;
     };
 
+    static float surface_area_pdf(const Light& l, const glm::vec3& world_normal);
     bool sample_surface(const Light& l, float u_part, float u1, float u2, glm::vec3& p_obj, glm::vec3& n_obj,
                         glm::vec3& err_obj) const;
 

@@ -60,7 +60,6 @@ public:
             const int tiles = tiles_x_ * tiles_y_;
             for (int s = 0; s < opt_.spp; ++s) {
                 if (cancelled()) break;
-                tiles_done_.store(0, std::memory_order_relaxed);
                 std::atomic<bool> abandoned{false};
                 tbb::parallel_for(tbb::blocked_range<int>(0, tiles, 1), [&](const tbb::blocked_range<int>& r) {
                     for (int t = r.begin(); t < r.end(); ++t) {
@@ -86,10 +85,10 @@ public:
         });
     }
 
+    // Tiles finished over all passes: only grows, so progress never steps back.
     double fraction_done() const {
-        const int tiles = tiles_x_ * tiles_y_;
-        const double pass = static_cast<double>(tiles_done_.load(std::memory_order_relaxed)) / tiles;
-        return std::min(1.0, (completed_spp_.load(std::memory_order_acquire) + std::min(pass, 1.0)) / opt_.spp);
+        const double total = static_cast<double>(tiles_x_) * tiles_y_ * opt_.spp;
+        return std::min(1.0, static_cast<double>(tiles_done_.load(std::memory_order_relaxed)) / total);
     }
 
     RenderResult result(double seconds) const {
@@ -149,7 +148,7 @@ private:
     std::vector<glm::dvec3> sum_sq_;  // per-pixel sum of squares, for the variance
     std::vector<glm::vec3> pass_;   // the pass in flight
     std::atomic<int> completed_spp_{0};
-    std::atomic<int> tiles_done_{0};
+    std::atomic<std::int64_t> tiles_done_{0};
     std::atomic<std::uint64_t> rays_{0}, nonfinite_{0};
 };
 
