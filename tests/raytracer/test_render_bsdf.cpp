@@ -212,7 +212,7 @@ TEST_CASE("bsdf: dielectric reflects with probability F, refracts by Snell's law
     }
 }
 
-TEST_CASE("bsdf: emission leaves the front side only unless two-sided; emissive material is black", "[render][bsdf]") {
+TEST_CASE("bsdf: emission leaves the front side only unless two-sided, emissive material is black", "[render][bsdf]") {
     Material m;
     m.type = Material::Type::Emissive;
     m.emission = {1, 2, 3};

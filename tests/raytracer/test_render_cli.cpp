@@ -100,7 +100,7 @@ std::string slurp(const fs::path& f) {
 
 }  // namespace
 
-TEST_CASE("render cli: renders to the scene's name in the current directory; --width alone keeps the aspect", "[render][cli]") {
+TEST_CASE("render cli: renders to the scene's name in the current directory, --width alone keeps the aspect", "[render][cli]") {
     const fs::path dir = fresh_dir("default-name");
     write_scene(dir / "ball.json");
     const Run r = run_in(dir, {"render", "ball.json", "--quiet"});

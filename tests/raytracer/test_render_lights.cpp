@@ -116,7 +116,7 @@ TEST_CASE("lights: a mesh light is sampled uniformly over its transformed surfac
     CHECK(std::abs(est.mean - 5.0) < z_bound(1) * est.standard_error() + 1e-6);
 }
 
-TEST_CASE("lights: a similar-transformed sphere is sampled in its cone, points visible, E[1/pdf] = solid angle", "[render][lights]") {
+TEST_CASE("lights: a similar-transformed sphere is sampled in its cone, points visible, mean 1/pdf = solid angle", "[render][lights]") {
     const glm::mat4 m = glm::scale(kTilted, glm::vec3(1.5f));
     const Scene s = single_light(collision::Sphere{{1, 0, 0}, 0.4f}, m);
     const LightSet lights(s);

@@ -26,7 +26,7 @@ TEST_CASE("rng: a stream depends only on (seed, pixel, sample), and neighbouring
     CHECK(firsts.size() >= 1023);
 }
 
-TEST_CASE("rng: uniform() lies in [0, 1) with mean 1/2 and variance 1/12", "[render][rng]") {
+TEST_CASE("rng: uniform() lies in 0 <= u < 1 with mean 1/2 and variance 1/12", "[render][rng]") {
     Estimate mean, sq;
     for (std::uint64_t pixel = 0; pixel < 2000; ++pixel) {
         Rng r(1, pixel, 0);
