@@ -101,6 +101,9 @@ TEST_CASE("swept capsule-capsule: side, rounded ends, coaxial, start overlap, de
     // 1.77 from the core's top, but inside the grown capsule's bounding cylinder.)
     CHECK((sweep(Cylinder{{-5, 2.8f, 1.2f}, 0.5f, 4}, {10, 0, 0}, Cylinder{{0, 0, 0}, 1, 2}).hit));
     CHECK_FALSE((sweep(Capsule{{-5, 2.8f, 1.2f}, 0.5f, 1}, {10, 0, 0}, still).hit));
+    r = sweep(Capsule{{-5, 0, 1.5f}, 0.5f, 1}, {10, 0, 0}, still);  // exactly tangent to the side
+    REQUIRE(r.hit);
+    CHECK(r.t == Approx(0.5f));
     r = sweep(Capsule{{0.5f, 0, 0}, 0.5f, 1}, {10, 0, 0}, still);  // overlapping at start
     REQUIRE(r.hit);
     CHECK(r.t == 0.0f);

@@ -24,6 +24,10 @@ TEST_CASE("swept sphere-sphere: hit, miss, tangent, overlap at start, degenerate
     CHECK_FALSE(sweep(Sphere{{-5, 0, 0}, 1}, {2, 0, 0}, still).hit);    // stops short
     CHECK_FALSE(sweep(Sphere{{-5, 2.1f, 0}, 1}, {10, 0, 0}, still).hit);  // passes above
     CHECK_FALSE(sweep(Sphere{{-5, 0, 0}, 1}, {-10, 0, 0}, still).hit);  // moves away
+    r = sweep(Sphere{{-5, 2, 0}, 1}, {10, 0, 0}, still);  // exactly tangent: closed sets touch
+    REQUIRE(r.hit);
+    CHECK(r.t == Approx(0.5f));
+    CHECK(r.normal.y == Approx(1.0f));
     r = sweep(Sphere{{-5, 0, 0}, 1}, {3, 0, 0}, still);  // reaches contact exactly at t = 1
     REQUIRE(r.hit);
     CHECK(r.t == 1.0f);
