@@ -254,6 +254,11 @@ std::string Node::string() const {
     return value_->get<std::string>();
 }
 
+bool Node::boolean() const {
+    if (!value_->is_boolean()) fail("must be true or false, got " + describe_type(*value_));
+    return value_->get<bool>();
+}
+
 glm::vec3 Node::vec3() const {
     if (!value_->is_array() || value_->size() != 3)
         fail("must be an array of 3 numbers [x, y, z], got " + (value_->is_array() ? shown() : describe_type(*value_)));

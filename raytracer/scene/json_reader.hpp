@@ -48,6 +48,7 @@ public:
     std::int64_t integer(std::int64_t lo, std::int64_t hi) const;
     std::uint64_t unsigned_integer() const;
     std::string string() const;
+    bool boolean() const;
     glm::vec3 vec3() const;                      // [x, y, z], each finite
     glm::vec3 vec3_at_least(float lo) const;     // each component >= lo
     glm::vec3 nonzero_vec3() const;              // not the zero vector (a direction)

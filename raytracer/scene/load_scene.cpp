@@ -92,19 +92,19 @@ Material read_material(const Node& node, const std::string& name) {
     Material m;
     m.name = name;
     if (type == "diffuse") {
-        node.require_object({"type", "albedo", "emission"});
+        node.require_object({"type", "albedo", "emission", "two_sided"});
         m.type = Material::Type::Diffuse;
     } else if (type == "metal") {
-        node.require_object({"type", "albedo", "roughness", "emission"});
+        node.require_object({"type", "albedo", "roughness", "emission", "two_sided"});
         m.type = Material::Type::Metal;
         if (auto r = node.find("roughness")) m.roughness = r->number_in(0.0f, 1.0f);
     } else if (type == "dielectric") {
-        node.require_object({"type", "ior", "albedo", "emission"});
+        node.require_object({"type", "ior", "albedo", "emission", "two_sided"});
         m.type = Material::Type::Dielectric;
         m.albedo = glm::vec3(1.0f);  // clear glass unless tinted
         if (auto ior = node.find("ior")) m.ior = ior->number_at_least(0.0f, false);
     } else if (type == "emissive") {
-        node.require_object({"type", "emission"});
+        node.require_object({"type", "emission", "two_sided"});
         m.type = Material::Type::Emissive;
         m.albedo = glm::vec3(0.0f);  // a light absorbs what reaches it
     } else {
@@ -118,6 +118,7 @@ Material read_material(const Node& node, const std::string& name) {
     } else if (m.type == Material::Type::Emissive) {
         node.at("emission");  // reports it missing
     }
+    if (auto two_sided = node.find("two_sided")) m.two_sided_emission = two_sided->boolean();
     return m;
 }
 

@@ -150,6 +150,8 @@ TEST_CASE("scene errors: sizes, ranges and degenerate geometry", "[scene][errors
                Catch::Contains("materials.m.roughness: must be in [0, 1]"));
     CHECK_THAT(load_error(dir, scene_text(kSphere, R"({ "m": { "type": "dielectric", "ior": 0 } })")),
                Catch::Contains("materials.m.ior: must be > 0"));
+    CHECK_THAT(load_error(dir, scene_text(kSphere, R"({ "m": { "type": "emissive", "emission": [1, 1, 1], "two_sided": 1 } })")),
+               Catch::Contains("materials.m.two_sided: must be true or false, got a number"));
     CHECK_THAT(load_error(dir, scene_text(kSphere, R"({ "m": { "type": "emissive" } })")),
                Catch::Contains("materials.m.emission: missing (required)"));
     CHECK_THAT(load_error(dir, scene_text(kSphere, R"({ "m": { "type": "emissive", "emission": [0, 0, 0] } })")),

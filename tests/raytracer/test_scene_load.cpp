@@ -93,6 +93,20 @@ TEST_CASE("scenes: the Cornell box has quad walls, a quad light and two rotated 
     CHECK(corner.y == Approx(0.0f).margin(1e-3));
 }
 
+TEST_CASE("scenes: emission is one-sided unless the material says two_sided", "[scene]") {
+    TempDir dir;
+    const Scene scene = load_scene(dir.write("s.json", R"({
+      "camera": { "position": [0, 0, 5], "look_at": [0, 0, 0] },
+      "film": { "width": 4, "height": 4 },
+      "materials": { "one": { "type": "emissive", "emission": [1, 2, 3] },
+                     "two": { "type": "emissive", "emission": [1, 2, 3], "two_sided": true } },
+      "objects": [] })"));
+    REQUIRE(scene.materials.size() == 2);
+    CHECK_FALSE(scene.materials[0].two_sided_emission);  // names sort: "one" first
+    CHECK(scene.materials[1].two_sided_emission);
+    CHECK(scene.materials[1].emission == glm::vec3(1.0f, 2.0f, 3.0f));
+}
+
 TEST_CASE("scenes: one OBJ used by two objects is loaded once", "[scene][obj]") {
     TempDir dir;
     dir.write("meshes/tri.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
