@@ -2,7 +2,8 @@
 """Charts for docs/ from the CSVs that `sweeptrace accuracy` writes (run by tools/make-docs.sh).
 
 Usage: /usr/bin/python3 tools/charts.py DOCS_DIR
-Reads whichever of accuracy.csv, structures.csv, mesh-methods.csv, mesh-comparison.csv exist in
+Reads whichever of accuracy.csv, structures.csv, mesh-methods.csv, tessellation.csv,
+convergence.csv exist in
 DOCS_DIR and writes one PNG per chart beside them. Debian's matplotlib (python3-matplotlib) is
 installed for /usr/bin/python3, hence the explicit interpreter.
 """
@@ -127,11 +128,73 @@ def mesh_leaks(docs):
     save(fig, docs, "mesh-leaks.png")
 
 
+def tessellation(docs):
+    rows = read(os.path.join(docs, "tessellation.csv"))
+    shapes = []
+    for r in rows:
+        if r["shape"] not in shapes:
+            shapes.append(r["shape"])
+    colours = {s: plt.cm.tab10(i % 10) for i, s in enumerate(shapes)}
+    fig, axes = plt.subplots(1, 2, figsize=(12, 4.6))
+    for shape in shapes:
+        c = colours[shape]
+        for accel, ls in (("bvh", "-"), ("embree", "--")):
+            mesh = [r for r in rows if r["shape"] == shape and r["accel"] == accel and r["representation"] == "mesh"]
+            analytic = [r for r in rows if r["shape"] == shape and r["accel"] == accel and r["representation"] == "analytic"]
+            x = [int(r["triangles"]) for r in mesh]
+            if accel == "bvh":
+                axes[0].plot(x, [max(float(r["rmse_vs_analytic"]), FLOOR) for r in mesh], ls, marker="o", color=c,
+                             label=shape)
+                if analytic:
+                    axes[0].axhline(float(analytic[0]["rmse_vs_converged"]), color=c, lw=0.8, ls=":")
+            axes[1].plot(x, [float(r["seconds"]) for r in mesh], ls, marker="o", color=c,
+                         label=f"{shape} mesh, {accel}")
+            if analytic:
+                axes[1].axhline(float(analytic[0]["seconds"]), color=c, lw=0.8, ls=ls)
+    axes[0].set_title("image RMSE of the mesh against the analytic render\n(same seed; dotted: the analytic "
+                      "render's own noise)", fontsize=9)
+    axes[1].set_title("build + render, CPU s (horizontal lines: analytic)", fontsize=9)
+    for ax in axes:
+        ax.set_xscale("log")
+        ax.set_yscale("log")
+        ax.set_xlabel("triangles")
+        ax.grid(True, which="both", alpha=0.2)
+    axes[0].legend(fontsize=8)
+    axes[1].legend(fontsize=6)
+    fig.suptitle("Model no more than a scene needs: analytic against tessellated")
+    save(fig, docs, "tessellated-vs-analytic.png")
+
+
+def convergence(docs):
+    rows = read(os.path.join(docs, "convergence.csv"))
+    scenes = []
+    for r in rows:
+        if r["scene"] not in scenes:
+            scenes.append(r["scene"])
+    fig, axes = plt.subplots(1, len(scenes), figsize=(6 * len(scenes), 4.6), squeeze=False)
+    for ax, scene in zip(axes[0], scenes):
+        for sampling in ("nee-mis", "bsdf-only"):
+            for accel, ls in (("bvh", "-"), ("embree", "--")):
+                rs = [r for r in rows if r["scene"] == scene and r["sampling"] == sampling and r["accel"] == accel]
+                ax.plot([float(r["seconds"]) for r in rs], [float(r["rmse"]) for r in rs], ls, marker="o",
+                        label=f"{sampling}, {accel}")
+        ax.set_xscale("log")
+        ax.set_yscale("log")
+        ax.set_xlabel("build + render, CPU s (all threads)")
+        ax.set_ylabel("RMSE against the reference")
+        ax.set_title(scene)
+        ax.grid(True, which="both", alpha=0.2)
+        ax.legend(fontsize=8)
+    fig.suptitle("Convergence: image error against time (1, 2, 4 ... spp)")
+    save(fig, docs, "convergence.png")
+
+
 def main():
     if len(sys.argv) != 2 or not os.path.isdir(sys.argv[1]):
         sys.exit("usage: /usr/bin/python3 tools/charts.py DOCS_DIR")
     docs = sys.argv[1]
-    charts = (("accuracy.csv", speed_vs_error), ("structures.csv", structures), ("mesh-methods.csv", mesh_leaks))
+    charts = (("accuracy.csv", speed_vs_error), ("structures.csv", structures), ("mesh-methods.csv", mesh_leaks),
+              ("tessellation.csv", tessellation), ("convergence.csv", convergence))
     for csv_name, chart in charts:
         if os.path.exists(os.path.join(docs, csv_name)):
             chart(docs)

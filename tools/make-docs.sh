@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Regenerates every CSV, Markdown table and chart in docs/ from a Release build: the one command
-# behind docs/RESULTS.md. About 5 minutes on 2 cores. Needs ../shared/meshes beside the checkout
+# behind docs/RESULTS.md. About 10 minutes on 2 cores. Needs ../shared/meshes beside the checkout
 # (or SWEEPTRACE_MESHES=dir) for the mesh comparison; without it that part is skipped.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -25,5 +25,13 @@ if [ -d "$meshes" ]; then
 else
   echo "make-docs: $meshes not found, mesh comparison skipped" >&2
 fi
+
+echo "== analytic against tessellated, rendered" >&2
+"$st" accuracy --tessellation --size 96 --spp 16 --reference-spp 256 --max-exponent 6 --seed 1 \
+  --csv docs/tessellation.csv --markdown docs/tessellation.md >/dev/null
+
+echo "== convergence" >&2
+"$st" accuracy --convergence scenes/cornell-box.json scenes/smallpt.json --size 96 --spp 64 --reference-spp 1024 \
+  --csv docs/convergence.csv --markdown docs/convergence.md >/dev/null
 
 /usr/bin/python3 tools/charts.py docs

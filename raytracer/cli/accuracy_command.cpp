@@ -3,12 +3,16 @@
 // double reference. Prints the Markdown table; --csv / --markdown also save it.
 // With --meshes DIR: the native BVH against Embree (default and robust) on real meshes instead.
 // With --structures: the thesis's structures redone for rays, speed against triangle count.
+// With --tessellation: the same objects analytic and tessellated, rendered.
+// With --convergence SCENE...: image error against time, BSDF-only / NEE+MIS, BVH / Embree.
+#include <filesystem>
 #include <iostream>
 #include <memory>
 #include <string>
 #include <vector>
 
 #include "raytracer/accuracy/mesh_compare.hpp"
+#include "raytracer/accuracy/render_studies.hpp"
 #include "raytracer/accuracy/report.hpp"
 #include "raytracer/accuracy/routines.hpp"
 #include "raytracer/accuracy/structures.hpp"
@@ -29,6 +33,9 @@ struct AccuracyOptions {
     bool structures = false;
     int max_level = 8;
     double budget = 0.5;
+    bool tessellation = false;
+    std::vector<std::string> convergence;
+    int size = 96, spp = 16, reference_spp = 256, max_exponent = 6;
 };
 
 void run(const AccuracyOptions& o) {
@@ -36,6 +43,28 @@ void run(const AccuracyOptions& o) {
         if (!path->empty()) accuracy::check_writable(*path);
     }
     if (!o.methods_csv.empty() && o.meshes.empty()) throw InputError("--methods-csv: only with --meshes");
+    if (int(o.structures) + int(!o.meshes.empty()) + int(o.tessellation) + int(!o.convergence.empty()) > 1) {
+        throw InputError("--structures, --meshes, --tessellation and --convergence: choose one");
+    }
+    if (o.tessellation) {
+        const auto rows = accuracy::tessellation_study(o.size, o.spp, o.reference_spp, o.max_exponent, unsigned(o.seed));
+        accuracy::write_tessellation_markdown(std::cout, rows);
+        if (!o.csv.empty()) accuracy::save_file(o.csv, [&](std::ostream& f) { accuracy::write_tessellation_csv(f, rows); });
+        if (!o.markdown.empty()) {
+            accuracy::save_file(o.markdown, [&](std::ostream& f) { accuracy::write_tessellation_markdown(f, rows); });
+        }
+        return;
+    }
+    if (!o.convergence.empty()) {
+        std::vector<std::filesystem::path> scenes(o.convergence.begin(), o.convergence.end());
+        const auto rows = accuracy::convergence_study(scenes, o.size, o.spp, o.reference_spp);
+        accuracy::write_convergence_markdown(std::cout, rows);
+        if (!o.csv.empty()) accuracy::save_file(o.csv, [&](std::ostream& f) { accuracy::write_convergence_csv(f, rows); });
+        if (!o.markdown.empty()) {
+            accuracy::save_file(o.markdown, [&](std::ostream& f) { accuracy::write_convergence_markdown(f, rows); });
+        }
+        return;
+    }
     if (o.structures) {
         if (!o.meshes.empty()) throw InputError("--structures and --meshes: choose one");
         const auto rows = accuracy::measure_structures(2, o.max_level, o.rays, o.budget, o.seed);
@@ -92,6 +121,19 @@ void add_accuracy_command(CLI::App& app, int& exit_code) {
         ->check(CLI::Range(2, 9));
     cmd->add_option("--budget", options->budget, "With --structures: seconds of tracing per structure and size")
         ->check(CLI::Range(0.001, 600.0));
+    cmd->add_flag("--tessellation", options->tessellation,
+                  "Render sphere, cylinder, capsule, ellipsoid analytic and tessellated (1e2 .. 10^max-exponent triangles)");
+    cmd->add_option("--max-exponent", options->max_exponent, "With --tessellation: up to 10^this triangles")
+        ->check(CLI::Range(2, 7));
+    cmd->add_option("--convergence", options->convergence, "Image error against time for these scene files")
+        ->check(CLI::ExistingFile);
+    cmd->add_option("--size", options->size, "With --tessellation / --convergence: image width in pixels")
+        ->check(CLI::Range(8, 4096));
+    cmd->add_option("--spp", options->spp,
+                    "With --tessellation: samples per pixel; with --convergence: the largest of 1, 2, 4 ...")
+        ->check(CLI::Range(1, 1 << 16));
+    cmd->add_option("--reference-spp", options->reference_spp, "Samples per pixel of the converged reference render")
+        ->check(CLI::Range(1, 1 << 20));
     cmd->callback([options, &exit_code] {
         run(*options);
         exit_code = 0;
