@@ -31,7 +31,7 @@ echo "== analytic against tessellated, rendered" >&2
   --csv docs/tessellation.csv --markdown docs/tessellation.md >/dev/null
 
 echo "== convergence" >&2
-"$st" accuracy --convergence scenes/cornell-box.json scenes/smallpt.json --size 96 --spp 64 --reference-spp 1024 \
+"$st" accuracy --convergence scenes/cornell-box.json scenes/smallpt.json --size 64 --spp 32 --reference-spp 512 \
   --csv docs/convergence.csv --markdown docs/convergence.md >/dev/null
 
 /usr/bin/python3 tools/charts.py docs
