@@ -1,6 +1,7 @@
-// `sweeptrace bench SCENE [--rays N]`: the native BVH against Embree on the same scene and the
-// same rays, one single-threaded run each: build time, Mrays/s (primary rays through the camera
-// plus one random bounce from each primary hit), their ratio, bytes per triangle. It prints
+// `sweeptrace bench SCENE [--rays N] [--threads N] [--spp N]`: the native BVH against Embree on
+// the same scene and the same rays, one single-threaded run each: build time, Mrays/s (primary
+// rays through the camera plus one random bounce from each primary hit), their ratio, bytes per
+// triangle; then samples/s of a short render at 1 and up to --threads threads. It prints
 // figures; it asserts nothing.
 //
 // Ray rates are given per second of the tracing thread's CPU time (and wall time beside it):
@@ -14,15 +15,14 @@
 #include <string>
 #include <vector>
 
-#include <cmath>
-
 #include <glm/geometric.hpp>
-#include <glm/trigonometric.hpp>
 
 #include "raytracer/accel/bvh_accel.hpp"
 #include "raytracer/accel/embree_accel.hpp"
 #include "raytracer/cli/commands.hpp"
 #include "raytracer/input_error.hpp"
+#include "raytracer/render/camera.hpp"
+#include "raytracer/render/renderer.hpp"
 #include "raytracer/scene/load_scene.hpp"
 
 namespace sweeptrace {
@@ -31,6 +31,8 @@ namespace {
 struct BenchArgs {
     std::string scene;
     int rays = 200000;
+    int threads = 2;
+    int spp = 2;
 };
 
 double thread_cpu_seconds() {
@@ -46,22 +48,15 @@ double wall_seconds() {
 // Primary rays through uniformly random film points, and from each primary hit (found with
 // `accel`) one ray leaving it in a uniformly random direction of the normal's hemisphere.
 std::vector<collision::Ray> make_rays(const Scene& scene, const Accel& accel, int primaries, std::uint64_t seed) {
-    // Pinhole primary rays through uniformly random points of the film (the renderer's own
-    // camera adds the lens; for timing the structures a pinhole is the same load).
-    const Camera& cam = scene.camera;
-    const glm::vec3 forward = glm::normalize(cam.look_at - cam.position);
-    const glm::vec3 right = glm::normalize(glm::cross(forward, cam.up));
-    const glm::vec3 up = glm::cross(right, forward);
-    const float half_h = std::tan(0.5f * glm::radians(cam.vfov_degrees));
-    const float half_w = half_h * static_cast<float>(scene.film.width) / static_cast<float>(scene.film.height);
+    const CameraModel camera(scene.camera, scene.film.width, scene.film.height);
     std::mt19937_64 rng(seed);
     std::uniform_real_distribution<float> u(0.0f, 1.0f);
     std::normal_distribution<float> gauss(0.0f, 1.0f);
     std::vector<collision::Ray> rays;
     rays.reserve(2 * static_cast<std::size_t>(primaries));
     for (int i = 0; i < primaries; ++i) {
-        const float sx = (2.0f * u(rng) - 1.0f) * half_w, sy = (2.0f * u(rng) - 1.0f) * half_h;
-        const collision::Ray primary{cam.position, glm::normalize(forward + sx * right + sy * up)};
+        const collision::Ray primary = camera.generate(u(rng) * static_cast<float>(scene.film.width),
+                                                      u(rng) * static_cast<float>(scene.film.height), u(rng), u(rng));
         rays.push_back(primary);
         SurfaceHit hit;
         if (!accel.intersect(primary, hit)) continue;
@@ -92,6 +87,8 @@ TraceResult trace_all(const Accel& accel, const std::vector<collision::Ray>& ray
 
 void run_bench(const BenchArgs& args) {
     if (args.rays < 1) throw InputError("bench: --rays must be >= 1, got " + std::to_string(args.rays));
+    if (args.threads < 1) throw InputError("bench: --threads must be >= 1, got " + std::to_string(args.threads));
+    if (args.spp < 1) throw InputError("bench: --spp must be >= 1, got " + std::to_string(args.spp));
     const Scene scene = load_scene(args.scene);
 
     double w0 = wall_seconds();
@@ -126,15 +123,31 @@ void run_bench(const BenchArgs& args) {
     std::printf("%-8s %14.3f %15.3f %10zu\n", native.name().c_str(), mrays / a.cpu, mrays / a.wall, a.hits);
     std::printf("%-8s %14.3f %15.3f %10zu\n", embree->name().c_str(), mrays / b.cpu, mrays / b.wall, b.hits);
     std::printf("native / embree: %.2fx (cpu time), %.2fx (wall time)\n", b.cpu / a.cpu, b.wall / a.wall);
+
+    for (int threads : {1, args.threads}) {
+        RenderOptions options;
+        options.spp = args.spp;
+        options.max_depth = scene.film.max_depth;
+        options.threads = threads;
+        options.seed = scene.seed;
+        const RenderResult result = render(scene, native, options);
+        std::printf("render %dx%d, %d spp, %d thread%s: %.2f s, %.0f samples/s, %.2f Mrays/s\n", scene.film.width,
+                    scene.film.height, args.spp, threads, threads == 1 ? "" : "s", result.stats.seconds,
+                    static_cast<double>(result.stats.samples) / result.stats.seconds,
+                    1e-6 * static_cast<double>(result.stats.rays) / result.stats.seconds);
+        if (threads == args.threads) break;
+    }
 }
 
 }  // namespace
 
 void add_bench_command(CLI::App& app, int& exit_code) {
     auto args = std::make_shared<BenchArgs>();
-    auto* cmd = app.add_subcommand("bench", "Time the native BVH against Embree on a scene (prints figures)");
+    auto* cmd = app.add_subcommand("bench", "Time the native BVH against Embree on a scene, and a short render (prints figures)");
     cmd->add_option("scene", args->scene, "Scene file (JSON)")->required();
     cmd->add_option("--rays", args->rays, "Primary rays (each hit adds one bounce ray)")->capture_default_str();
+    cmd->add_option("--threads", args->threads, "Most threads for the render timing")->capture_default_str();
+    cmd->add_option("--spp", args->spp, "Samples per pixel of the render timing")->capture_default_str();
     cmd->callback([args, &exit_code] {
         run_bench(*args);
         exit_code = 0;
