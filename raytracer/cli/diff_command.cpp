@@ -106,8 +106,9 @@ void add_diff_command(CLI::App& app, int& exit_code) {
                     "Largest accepted mean delta E of the blurred CIELAB metric (default: not checked)")
         ->check(CLI::NonNegativeNumber);
     cmd->add_option("--noise", args->noise,
-                    "A second render of A with another seed and the same spp: also run the noise-aware block "
-                    "z-test of mean(A, NOISE) against B (the image tests' criterion)");
+                    "A second render of A with another seed and the same spp (.pfm/.exr: unclamped): also run the "
+                    "noise-aware block z-test of mean(A, NOISE) against B (the image tests' criterion; 8x8 blocks, "
+                    "family-wise false alarm 1e-4)");
     cmd->add_flag("--linear", args->linear, "Compare linear values, unclamped (HDR .pfm/.exr)");
     cmd->callback([args, &exit_code] { exit_code = run_diff(*args); });
 }

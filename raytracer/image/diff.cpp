@@ -157,9 +157,9 @@ MeanAndVariance combine_halves(const Image& a, const Image& b) {
     require_same_size(a, b);
     MeanAndVariance r{Image(a.width, a.height), Image(a.width, a.height)};
     for (std::size_t i = 0; i < a.pixels.size(); ++i) {
-        const glm::vec3 ca = glm::clamp(a.pixels[i], 0.0f, 1.0f), cb = glm::clamp(b.pixels[i], 0.0f, 1.0f);
-        r.mean.pixels[i] = 0.5f * (ca + cb);
-        r.variance.pixels[i] = 0.25f * (ca - cb) * (ca - cb);
+        r.mean.pixels[i] = 0.5f * (a.pixels[i] + b.pixels[i]);
+        const glm::vec3 d = a.pixels[i] - b.pixels[i];
+        r.variance.pixels[i] = 0.25f * d * d;
     }
     return r;
 }
@@ -174,66 +174,97 @@ double normal_two_sided_quantile(double p) {
     return 0.5 * (lo + hi);
 }
 
-BlockTestResult block_test(const Image& golden, const Image& actual, const Image& actual_variance,
+BlockTestResult block_test(const Image& reference, const Image& actual, const Image& actual_variance,
                            const BlockTestOptions& options) {
-    require_same_size(golden, actual);
-    require_same_size(golden, actual_variance);
+    require_same_size(reference, actual);
+    require_same_size(reference, actual_variance);
     if (options.block <= 0) throw InputError("block size must be positive");
+    if (options.mask && options.mask->size() != reference.pixels.size())
+        throw InputError("block test mask has " + std::to_string(options.mask->size()) + " entries for " +
+                         std::to_string(reference.pixels.size()) + " pixels");
     BlockTestResult r;
     const int B = options.block;
-    r.blocks_x = (golden.width + B - 1) / B;
-    r.blocks_y = (golden.height + B - 1) / B;
-    const double tests = 3.0 * r.blocks_x * r.blocks_y;
-    r.z_limit = options.z_limit > 0.0 ? options.z_limit : normal_two_sided_quantile(options.false_alarm / tests);
-    for (int by = 0; by < r.blocks_y; ++by)
-        for (int bx = 0; bx < r.blocks_x; ++bx) {
-            glm::dvec3 sum_a(0.0), sum_g(0.0), sum_var(0.0), sum_q(0.0);
-            int count = 0;
-            bool broken = false;
-            for (int y = by * B; y < std::min(golden.height, (by + 1) * B); ++y)
-                for (int x = bx * B; x < std::min(golden.width, (bx + 1) * B); ++x) {
-                    const glm::vec3& a = actual.at(x, y);
-                    if (!finite(a) || !finite(actual_variance.at(x, y))) broken = true;
-                    sum_a += glm::clamp(glm::dvec3(a), 0.0, 1.0);
-                    const glm::vec3 g = glm::clamp(golden.at(x, y), 0.0f, 1.0f);
-                    sum_g += glm::dvec3(g);
-                    sum_var += glm::dvec3(actual_variance.at(x, y));
-                    if (options.golden_is_8bit)
-                        for (int c = 0; c < 3; ++c) sum_q[c] += quantisation_bound(g[c]);
-                    ++count;
-                }
-            bool block_over = false;
-            for (int c = 0; c < 3; ++c) {
-                const double d = (sum_a[c] - sum_g[c]) / count;
-                const double excess = std::max(0.0, std::abs(d) - sum_q[c] / count);
-                const double sigma = std::sqrt(sum_var[c] * (1.0 + options.golden_noise_ratio)) / count;
-                double z = 0.0;
-                if (broken)
-                    z = std::numeric_limits<double>::infinity();
-                else if (excess > 0.0)
-                    z = sigma > 0.0 ? excess / sigma : std::numeric_limits<double>::infinity();
-                if (z > r.z_limit) block_over = true;
-                if (z > r.max_z || (r.max_z == 0.0 && bx == 0 && by == 0 && c == 0)) {
-                    r.max_z = z;
-                    r.worst_bx = bx;
-                    r.worst_by = by;
-                    r.worst_channel = c;
-                    r.worst_difference = d;
-                    r.worst_sigma = sigma;
-                }
-            }
-            r.blocks_over += block_over;
+    r.blocks_x = (reference.width + B - 1) / B;
+    r.blocks_y = (reference.height + B - 1) / B;
+    r.block_z.assign(static_cast<std::size_t>(r.blocks_x) * r.blocks_y, -1.0);
+    // Blocks first, so the Bonferroni count is the number of tests actually made.
+    struct Sums {
+        glm::dvec3 actual{0.0}, reference{0.0}, variance{0.0}, bound{0.0};
+        int count = 0;
+        bool broken = false;
+    };
+    std::vector<Sums> sums(r.block_z.size());
+    for (int y = 0; y < reference.height; ++y)
+        for (int x = 0; x < reference.width; ++x) {
+            const std::size_t i = static_cast<std::size_t>(y) * reference.width + x;
+            if (options.mask && !(*options.mask)[i]) continue;
+            const glm::vec3& g = reference.pixels[i];
+            if (options.golden_is_8bit && std::max({g.x, g.y, g.z}) >= 1.0f) continue;
+            Sums& s = sums[static_cast<std::size_t>(y / B) * r.blocks_x + x / B];
+            const glm::vec3& a = actual.pixels[i];
+            const glm::vec3& v = actual_variance.pixels[i];
+            if (!finite(a) || !finite(v) || !finite(g)) s.broken = true;
+            s.actual += glm::dvec3(a);
+            s.reference += glm::dvec3(g);
+            s.variance += glm::dvec3(v);
+            for (int c = 0; c < 3; ++c)
+                s.bound[c] += options.relative_tolerance * std::abs(g[c]) +
+                              (options.golden_is_8bit ? quantisation_bound(g[c]) : 0.0);
+            ++s.count;
         }
+    for (const Sums& s : sums) r.blocks_tested += s.count > 0;
+    const double tests = 3.0 * static_cast<double>(std::max<std::size_t>(1, r.blocks_tested));
+    r.z_limit = options.z_limit > 0.0 ? options.z_limit : normal_two_sided_quantile(options.false_alarm / tests);
+    bool first = true;
+    for (std::size_t b = 0; b < sums.size(); ++b) {
+        const Sums& s = sums[b];
+        if (s.count == 0) continue;
+        double block_max = 0.0;
+        for (int c = 0; c < 3; ++c) {
+            const double d = (s.actual[c] - s.reference[c]) / s.count;
+            const double excess = std::max(0.0, std::abs(d) - s.bound[c] / s.count);
+            const double sigma = std::sqrt(s.variance[c] * (1.0 + options.reference_noise_ratio)) / s.count;
+            double z = 0.0;
+            if (s.broken || !std::isfinite(d))
+                z = std::numeric_limits<double>::infinity();
+            else if (excess > 0.0)
+                z = sigma > 0.0 ? excess / sigma : std::numeric_limits<double>::infinity();
+            block_max = std::max(block_max, z);
+            if (first || z > r.max_z) {
+                first = false;
+                r.max_z = z;
+                r.worst_bx = static_cast<int>(b % r.blocks_x);
+                r.worst_by = static_cast<int>(b / r.blocks_x);
+                r.worst_channel = c;
+                r.worst_difference = d;
+                r.worst_sigma = sigma;
+            }
+        }
+        r.block_z[b] = block_max;
+        r.blocks_over += block_max > r.z_limit;
+    }
     return r;
+}
+
+Image block_z_heatmap(const BlockTestResult& result, int width, int height, int block) {
+    Image out(width, height);
+    for (int y = 0; y < height; ++y)
+        for (int x = 0; x < width; ++x) {
+            const std::size_t b = static_cast<std::size_t>(y / block) * result.blocks_x + x / block;
+            const double z = b < result.block_z.size() ? result.block_z[b] : -1.0;
+            const glm::vec3 c = z < 0.0 ? glm::vec3(0.2f) : false_colour(z / (2.0 * result.z_limit));
+            out.at(x, y) = {srgb_decode(c.r), srgb_decode(c.g), srgb_decode(c.b)};
+        }
+    return out;
 }
 
 std::string BlockTestResult::summary() const {
     char text[400];
     std::snprintf(text, sizeof text,
                   "block test: max z %.2f (limit %.2f, %s) at block (%d, %d) channel %c: mean difference %+.5f, "
-                  "sigma %.5f; %zu of %d blocks over",
+                  "sigma %.5f; %zu of %zu blocks over",
                   max_z, z_limit, pass() ? "pass" : "FAIL", worst_bx, worst_by, "RGB"[worst_channel], worst_difference,
-                  worst_sigma, blocks_over, blocks_x * blocks_y);
+                  worst_sigma, blocks_over, blocks_tested);
     return text;
 }
 

@@ -2,7 +2,9 @@
 // Comparing two images: plain metrics for `sweeptrace diff`, a false-colour heatmap, and a
 // noise-aware block test for comparing a Monte Carlo render against a golden image.
 #include <cstddef>
+#include <cstdint>
 #include <string>
+#include <vector>
 
 #include "raytracer/image/image.hpp"
 
@@ -44,40 +46,54 @@ DiffMetrics compare_images(const Image& a, const Image& b, const DiffOptions& op
 // yellow to red at `scale` and above; non-finite pixels are magenta.
 Image difference_heatmap(const Image& a, const Image& b, const DiffOptions& options, double scale);
 
-// Noise-aware comparison of a render against a golden image (the image tests' criterion).
-// Both are compared in linear radiance clamped to [0, 1] (a PNG golden cannot hold more) and
-// averaged over block x block pixel blocks, per channel. For each block and channel
-//   excess = max(0, |mean(actual) - mean(golden)| - quantisation bound of the golden's block mean)
-//   z      = excess / sqrt(Var(mean(actual)) * (1 + golden_noise_ratio))
-// with Var from `actual_variance` (per-pixel variance of the actual estimate; pixels independent).
-// The render is rejected when any z exceeds `z_limit`, by default the two-sided normal quantile
-// for a family-wise false-alarm rate `false_alarm` over all blocks and channels (Bonferroni).
+// Noise-aware comparison of a Monte Carlo render against a reference (a golden image or an
+// analytic image), the criterion of the image and convergence tests. Linear radiance, unclamped,
+// averaged over block x block pixel blocks, per channel, over the pixels that take part. For each
+// block and channel
+//   excess = max(0, |mean(actual) - mean(reference)| - mean(deterministic bound))
+//   z      = excess / sqrt(Var(mean(actual)) * (1 + reference_noise_ratio))
+// with Var from `actual_variance` (per-pixel variance of the actual pixel means; pixels are
+// independent, so a block mean's variance is their sum over count^2). The deterministic bound
+// per pixel is the 8-bit rounding of a PNG reference (half a code step through the sRGB curve)
+// plus relative_tolerance x |reference|. The render is rejected when any z exceeds `z_limit`, by
+// default the two-sided normal quantile for a family-wise false-alarm rate `false_alarm` over
+// all blocks and channels (Bonferroni).
 struct BlockTestOptions {
     int block = 8;
-    bool golden_is_8bit = true;       // add the golden's 8-bit sRGB rounding bound
-    double golden_noise_ratio = 0.0;  // Var(golden) / Var(actual): spp_actual / spp_golden
+    // The reference is an 8-bit sRGB PNG: add its rounding bound, and leave out pixels where it
+    // is saturated (a channel at 1): there it only says "1 or more".
+    bool golden_is_8bit = true;
+    double reference_noise_ratio = 0.0;  // Var(reference) / Var(actual), e.g. spp_actual / spp_golden
+    double relative_tolerance = 0.0;     // deterministic allowance, e.g. float rounding of an analytic value
     double false_alarm = 1e-4;
-    double z_limit = 0.0;             // 0 = derive from false_alarm
+    double z_limit = 0.0;                // 0 = derive from false_alarm
+    const std::vector<std::uint8_t>* mask = nullptr;  // optional: 0 = leave this pixel out
 };
 
 struct BlockTestResult {
     int blocks_x = 0, blocks_y = 0;
+    std::size_t blocks_tested = 0;     // blocks with at least one pixel taking part
     double z_limit = 0.0;
-    double max_z = 0.0;               // worst block and channel
+    double max_z = 0.0;                // worst block and channel
     int worst_bx = 0, worst_by = 0, worst_channel = 0;
-    double worst_difference = 0.0;    // mean(actual) - mean(golden) there
+    double worst_difference = 0.0;     // mean(actual) - mean(reference) there
     double worst_sigma = 0.0;
-    std::size_t blocks_over = 0;      // blocks with any channel over the limit
+    std::size_t blocks_over = 0;       // blocks with any channel over the limit
+    std::vector<double> block_z;       // per block (row-major), largest over channels; -1 if not tested
     bool pass() const { return max_z <= z_limit; }
     std::string summary() const;
 };
 
-BlockTestResult block_test(const Image& golden, const Image& actual, const Image& actual_variance,
+BlockTestResult block_test(const Image& reference, const Image& actual, const Image& actual_variance,
                            const BlockTestOptions& options = {});
+
+// False colour of a block test, one block per `block` x `block` pixels: black at z = 0 to red at
+// twice the limit (so the limit itself is green-yellow); blocks not tested are dark grey.
+Image block_z_heatmap(const BlockTestResult& result, int width, int height, int block);
 
 // Two independent renders of the same thing (equal spp, different seeds) -> their mean and the
 // per-pixel variance of that mean, estimated as (a - b)^2 / 4 (E[(a-b)^2] = 2 Var(a) = 4 Var(mean)).
-// Both halves are clamped to [0, 1] first, as block_test compares clamped values.
+// A one-degree-of-freedom estimate per pixel; block_test pools block x block of them.
 struct MeanAndVariance {
     Image mean, variance;
 };

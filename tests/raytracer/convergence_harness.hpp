@@ -1,0 +1,73 @@
+#pragma once
+// Small scenes with a known answer, built in code, and the z-test of a render against the
+// answer (block_test with an analytic reference: no 8-bit rounding, variance from the render).
+#include <cmath>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "raytracer/accel/accel.hpp"
+#include "raytracer/image/diff.hpp"
+#include "raytracer/render/renderer.hpp"
+#include "raytracer/scene/scene.hpp"
+
+namespace sweeptrace::testing {
+
+inline Scene empty_scene(int width, int height) {
+    Scene scene;
+    scene.film.width = width;
+    scene.film.height = height;
+    return scene;
+}
+
+inline std::uint32_t add_material(Scene& scene, Material m) {
+    scene.materials.push_back(std::move(m));
+    return static_cast<std::uint32_t>(scene.materials.size() - 1);
+}
+
+inline Material diffuse(float rho) {
+    Material m;
+    m.type = Material::Type::Diffuse;
+    m.albedo = glm::vec3(rho);
+    return m;
+}
+
+inline void add_object(Scene& scene, Shape shape, std::uint32_t material, const glm::mat4& to_world, std::string name) {
+    Object o;
+    o.shape = shape;
+    o.material = material;
+    o.transform = Transform::from_matrix(to_world);
+    o.name = std::move(name);
+    scene.objects.push_back(std::move(o));
+}
+
+// A convex closed mesh: the icosahedron subdivided `levels` times, vertices pushed onto the unit
+// sphere, counter-clockwise seen from outside (outward normals).
+collision::TriangleMesh icosphere(int levels);
+
+inline RenderResult render_with(const Scene& scene, AccelKind kind, int spp, int max_depth, std::uint64_t seed,
+                                Sampling sampling = Sampling::NeeMis) {
+    const auto accel = make_accel(kind, scene);
+    RenderOptions options;
+    options.spp = spp;
+    options.max_depth = max_depth;
+    options.seed = seed;
+    options.sampling = sampling;
+    return render(scene, *accel, options);
+}
+
+// block_test against an analytic image: a family-wise false alarm of 1e-4 over every block and
+// channel, `relative_tolerance` the float rounding of the renderer's estimate (stated per test).
+inline BlockTestResult test_against_truth(const Image& truth, const RenderResult& r, int block,
+                                          double relative_tolerance, const std::vector<std::uint8_t>* mask) {
+    BlockTestOptions options;
+    options.block = block;
+    options.golden_is_8bit = false;
+    options.relative_tolerance = relative_tolerance;
+    options.mask = mask;
+    return block_test(truth, r.image, r.variance, options);
+}
+
+}  // namespace sweeptrace::testing

@@ -1,0 +1,109 @@
+// Every scene with both accelerators against its golden, and the mutation checks: the same
+// comparison must reject renders with a planted defect and accept a render with another seed.
+// Criterion and thresholds: reference_images/README.md.
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+#include <glm/geometric.hpp>
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "golden_harness.hpp"
+
+using namespace sweeptrace;
+using namespace sweeptrace::testing;
+
+namespace {
+
+constexpr std::uint64_t test_seed = 1;  // the goldens use another seed (goldens.txt)
+
+void check_scene(const std::string& scene_name, AccelKind accel, const char* accel_name) {
+    const GoldenSpec& spec = golden_spec(scene_name);
+    const Scene scene = load_golden_scene(spec);
+    const RenderResult result = render_for_test(scene, accel, spec, test_seed);
+    REQUIRE(result.stats.nonfinite_samples == 0);
+    const GoldenVerdict v = compare_to_golden(spec, result, scene_name + "-" + accel_name, true);
+    INFO(v.block.summary());
+    CHECK(v.accepted());
+}
+
+std::size_t object_named(const Scene& scene, const std::string& name) {
+    for (std::size_t i = 0; i < scene.objects.size(); ++i)
+        if (scene.objects[i].name == name) return i;
+    FAIL("scene has no object named " << name);
+    return 0;
+}
+
+void expect_rejected(const GoldenSpec& spec, const Scene& scene, const std::string& label,
+                     PlantedDefect defect = PlantedDefect::None) {
+    const RenderResult result = render_for_test(scene, AccelKind::Bvh, spec, test_seed, defect);
+    const GoldenVerdict v = compare_to_golden(spec, result, label, false);
+    INFO(v.block.summary());
+    CHECK_FALSE(v.accepted());
+    // Printed so the margin (max z over the limit) is on record in the test log.
+    WARN(label << ": " << v.block.summary());
+}
+
+}  // namespace
+
+#define GOLDEN_TEST(scene, tag)                                                                               \
+    TEST_CASE("golden " scene " bvh", "[image][golden]") { check_scene(scene, AccelKind::Bvh, "bvh"); }      \
+    TEST_CASE("golden " scene " embree", "[image][golden]") { check_scene(scene, AccelKind::Embree, "embree"); }
+
+GOLDEN_TEST("cornell-box", cornell)
+GOLDEN_TEST("smallpt", smallpt)
+GOLDEN_TEST("primitives", primitives)
+GOLDEN_TEST("mesh", mesh)
+GOLDEN_TEST("default", default)
+
+TEST_CASE("golden mutation: another seed is accepted", "[image][golden][mutation]") {
+    const GoldenSpec& spec = golden_spec("cornell-box");
+    const Scene scene = load_golden_scene(spec);
+    const RenderResult result = render_for_test(scene, AccelKind::Bvh, spec, 777);
+    const GoldenVerdict v = compare_to_golden(spec, result, "mutation-other-seed", true);
+    WARN("other seed: " << v.block.summary());
+    CHECK(v.accepted());
+}
+
+TEST_CASE("golden mutation: flipped normals are rejected", "[image][golden][mutation]") {
+    const GoldenSpec& spec = golden_spec("cornell-box");
+    expect_rejected(spec, load_golden_scene(spec), "mutation-flipped-normals", PlantedDefect::FlippedNormals);
+}
+
+TEST_CASE("golden mutation: no ray offset (acne) is rejected", "[image][golden][mutation]") {
+    const GoldenSpec& spec = golden_spec("cornell-box");
+    expect_rejected(spec, load_golden_scene(spec), "mutation-no-ray-offset", PlantedDefect::NoRayOffset);
+}
+
+TEST_CASE("golden mutation: a light removed is rejected", "[image][golden][mutation]") {
+    const GoldenSpec& spec = golden_spec("cornell-box");
+    Scene scene = load_golden_scene(spec);
+    scene.objects.erase(scene.objects.begin() + static_cast<std::ptrdiff_t>(object_named(scene, "light")));
+    expect_rejected(spec, scene, "mutation-light-removed");
+}
+
+TEST_CASE("golden mutation: a material swapped is rejected", "[image][golden][mutation]") {
+    // The short box takes the red wall's material and the red wall the white: a local change on
+    // the box and a global one on the wall's colour bleeding.
+    const GoldenSpec& spec = golden_spec("cornell-box");
+    Scene scene = load_golden_scene(spec);
+    std::swap(scene.objects[object_named(scene, "short box")].material,
+              scene.objects[object_named(scene, "left wall")].material);
+    expect_rejected(spec, scene, "mutation-material-swapped");
+}
+
+TEST_CASE("golden mutation: one object shifted by 3 pixels is rejected", "[image][golden][mutation]") {
+    // The tall box moves along the camera's right vector by the width of 3 pixels at its depth.
+    const GoldenSpec& spec = golden_spec("cornell-box");
+    Scene scene = load_golden_scene(spec);
+    Object& box = scene.objects[object_named(scene, "tall box")];
+    const glm::vec3 centre = glm::vec3(box.transform.to_world * glm::vec4(std::get<collision::Aabb>(box.shape).center, 1.0f));
+    const Camera& cam = scene.camera;
+    const glm::vec3 forward = glm::normalize(cam.look_at - cam.position);
+    const glm::vec3 right = glm::normalize(glm::cross(forward, cam.up));
+    const float depth = glm::dot(centre - cam.position, forward);
+    const float pixel = 2.0f * depth * std::tan(glm::radians(0.5f * cam.vfov_degrees)) / static_cast<float>(spec.height);
+    box.transform = Transform::from_matrix(glm::translate(glm::mat4(1.0f), 3.0f * pixel * right) * box.transform.to_world);
+    expect_rejected(spec, scene, "mutation-object-shifted");
+}
