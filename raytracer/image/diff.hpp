@@ -51,23 +51,27 @@ Image difference_heatmap(const Image& a, const Image& b, const DiffOptions& opti
 // averaged over block x block pixel blocks, per channel, over the pixels that take part. For each
 // block and channel
 //   excess = max(0, |mean(actual) - mean(reference)| - mean(deterministic bound))
-//   z      = excess / sqrt(Var(mean(actual)) * (1 + reference_noise_ratio))
-// with Var from `actual_variance` (per-pixel variance of the actual pixel means; pixels are
-// independent, so a block mean's variance is their sum over count^2). The deterministic bound
-// per pixel is the 8-bit rounding of a PNG reference (half a code step through the sRGB curve)
-// plus relative_tolerance x |reference|. The render is rejected when any z exceeds `z_limit`, by
-// default the two-sided normal quantile for a family-wise false-alarm rate `false_alarm` over
-// all blocks and channels (Bonferroni).
+//   z      = excess / sqrt(sum over pixels of max(Var_actual, Var_null) * (1 + reference_noise_ratio)) * count
+// Var_actual is the render's own estimate of its pixel means' variance; Var_null (optional) the
+// variance the render's pixel means should have if it is correct, from the reference's sample
+// variance. The larger of the two per pixel guards both ways against rare, bright paths: those
+// the render happened to catch inflate its own estimate, those it happened to miss are in the
+// reference's. Pixels are independent, so a block mean's variance is the sum over count^2.
+// The deterministic bound per pixel is the 8-bit rounding of a PNG reference (half a code step
+// through the sRGB curve) plus relative_tolerance x |reference|. A PNG reference channel at 255
+// only says "1 or more": there the test is one-sided (only a render below 1 differs).
+// The render is rejected when any z exceeds `z_limit`, by default the two-sided normal quantile
+// for a family-wise false-alarm rate `false_alarm` over all tested blocks and channels
+// (Bonferroni).
 struct BlockTestOptions {
     int block = 8;
-    // The reference is an 8-bit sRGB PNG: add its rounding bound, and leave out pixels where it
-    // is saturated (a channel at 1): there it only says "1 or more".
-    bool golden_is_8bit = true;
+    bool golden_is_8bit = true;          // reference is an 8-bit sRGB PNG (see above)
     double reference_noise_ratio = 0.0;  // Var(reference) / Var(actual), e.g. spp_actual / spp_golden
     double relative_tolerance = 0.0;     // deterministic allowance, e.g. float rounding of an analytic value
     double false_alarm = 1e-4;
     double z_limit = 0.0;                // 0 = derive from false_alarm
     const std::vector<std::uint8_t>* mask = nullptr;  // optional: 0 = leave this pixel out
+    const Image* null_variance = nullptr;             // optional Var_null per pixel (see above)
 };
 
 struct BlockTestResult {

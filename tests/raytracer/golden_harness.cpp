@@ -86,6 +86,29 @@ const GoldenSpec& golden_spec(const std::string& scene) {
     throw std::runtime_error("reference_images/goldens.txt has no line for " + scene);
 }
 
+std::filesystem::path golden_image_path(const GoldenSpec& spec) {
+    return source_dir / "reference_images" / (spec.scene + ".png");
+}
+
+std::filesystem::path golden_variance_path(const GoldenSpec& spec) {
+    return source_dir / "reference_images" / (spec.scene + "-variance.exr");
+}
+
+void make_golden(const GoldenSpec& spec) {
+    const Scene scene = load_golden_scene(spec);
+    const auto accel = make_accel(AccelKind::Bvh, scene);
+    RenderOptions options;
+    options.spp = spec.golden_spp;
+    options.max_depth = spec.max_depth;
+    options.seed = spec.golden_seed;
+    RenderResult r = render(scene, *accel, options);
+    if (r.stats.nonfinite_samples != 0)
+        throw std::runtime_error(spec.scene + ": " + std::to_string(r.stats.nonfinite_samples) + " non-finite samples");
+    for (auto& p : r.variance.pixels) p *= static_cast<float>(spec.golden_spp);  // per sample
+    write_image(r.image, golden_image_path(spec));  // PNG: clamped to [0, 1], sRGB, as `render -o x.png`
+    write_image(r.variance, golden_variance_path(spec));
+}
+
 Scene load_golden_scene(const GoldenSpec& spec) {
     Scene scene = load_scene(source_dir / "scenes" / (spec.scene + ".json"));
     scene.film.width = spec.width;
@@ -107,12 +130,17 @@ RenderResult render_for_test(const Scene& scene, AccelKind accel, const GoldenSp
 
 GoldenVerdict compare_to_golden(const GoldenSpec& spec, const RenderResult& result, const std::string& label,
                                 bool expect_accept) {
-    const std::filesystem::path golden_path = source_dir / "reference_images" / (spec.scene + ".png");
+    const std::filesystem::path golden_path = golden_image_path(spec);
     const Image golden = read_image(golden_path);
     BlockTestOptions options;
     options.block = spec.block;
     options.golden_is_8bit = true;
     options.reference_noise_ratio = static_cast<double>(spec.test_spp) / spec.golden_spp;
+    // The golden's per-sample variance, scaled to the test's spp: what the render's pixel means
+    // should scatter by if it is right (block_test takes the larger of this and its own).
+    Image null_variance = read_image(golden_variance_path(spec));
+    for (auto& p : null_variance.pixels) p /= static_cast<float>(spec.test_spp);
+    options.null_variance = &null_variance;
     GoldenVerdict v;
     v.block = block_test(golden, result.image, result.variance, options);
     v.metrics = compare_images(result.image, golden);

@@ -27,6 +27,15 @@ struct GoldenSpec {
 std::vector<GoldenSpec> read_golden_specs();
 const GoldenSpec& golden_spec(const std::string& scene);
 
+// reference_images/<scene>.png, and <scene>-variance.exr: the golden render's per-sample variance
+// per pixel and channel (linear, float), the noise a correct render must show.
+std::filesystem::path golden_image_path(const GoldenSpec& spec);
+std::filesystem::path golden_variance_path(const GoldenSpec& spec);
+
+// Renders the golden (BVH, golden_spp, golden_seed) and writes both files. Only
+// tools/make-goldens.sh calls this (through a hidden test case); tests never do.
+void make_golden(const GoldenSpec& spec);
+
 // scenes/<scene>.json with the film size and depth of the spec.
 Scene load_golden_scene(const GoldenSpec& spec);
 

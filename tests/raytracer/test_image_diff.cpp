@@ -140,9 +140,36 @@ TEST_CASE("block test: the golden's 8-bit rounding is tolerated, not more", "[im
 
 TEST_CASE("combine_halves: mean and variance of the mean from two renders", "[image][diff]") {
     Image a = flat(1, 1, glm::vec3(0.2f)), b = flat(1, 1, glm::vec3(0.6f));
-    a.at(0, 0).b = 3.0f;  // clamped to 1 first
+    a.at(0, 0).b = 3.0f;  // linear, unclamped
     const MeanAndVariance mv = combine_halves(a, b);
     CHECK(mv.mean.at(0, 0).r == Approx(0.4f));
     CHECK(mv.variance.at(0, 0).r == Approx(0.04f));
-    CHECK(mv.mean.at(0, 0).b == Approx(0.8f));
+    CHECK(mv.mean.at(0, 0).b == Approx(1.8f));
+    CHECK(mv.variance.at(0, 0).b == Approx(1.44f));
+}
+
+TEST_CASE("block test: a saturated 8-bit golden is one-sided", "[image][diff]") {
+    // Golden pixels at code 255 only say "1 or more": a render at 5 agrees, one at 0.5 does not.
+    const Image golden = flat(16, 16, glm::vec3(1.0f, 0.5f, 0.5f));
+    const Image zero(16, 16);
+    const float g = srgb_decode(std::round(srgb_encode(0.5f) * 255.0f) / 255.0f);
+    CHECK(block_test(golden, flat(16, 16, glm::vec3(5.0f, g, g)), zero).pass());
+    const BlockTestResult dark = block_test(golden, flat(16, 16, glm::vec3(0.5f, g, g)), zero);
+    CHECK_FALSE(dark.pass());
+    CHECK(dark.worst_channel == 0);
+}
+
+TEST_CASE("block test: the reference's variance covers rare paths the render missed", "[image][diff]") {
+    // A render that caught none of a rare bright path reports zero variance; the golden, which
+    // did, says how far a correct render may fall below it.
+    const Image golden = flat(8, 8, glm::vec3(0.01f));
+    const Image zero(8, 8), dark(8, 8);
+    BlockTestOptions options;
+    options.golden_is_8bit = false;
+    CHECK_FALSE(block_test(golden, dark, zero, options).pass());  // variance 0: any difference is infinite z
+    const Image null_variance = flat(8, 8, glm::vec3(0.01f));    // e.g. value 1 with p = 0.01 per sample, 1 spp
+    options.null_variance = &null_variance;
+    const BlockTestResult r = block_test(golden, dark, zero, options);
+    CHECK(r.pass());
+    CHECK(r.max_z == Approx(0.01 / (0.1 / 8)));  // mean difference over sqrt(64 x 0.01) / 64
 }

@@ -5,6 +5,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 
 #include <glm/geometric.hpp>
 #include <glm/gtc/matrix_transform.hpp>
@@ -46,6 +48,21 @@ void expect_rejected(const GoldenSpec& spec, const Scene& scene, const std::stri
 }
 
 }  // namespace
+
+// Hidden (never run by ctest): tools/make-goldens.sh runs it to regenerate reference_images/,
+// for the scenes named in SWEEPTRACE_GOLDEN_SCENES (space-separated; all when unset).
+TEST_CASE("make goldens", "[.make-goldens]") {
+    const char* only = std::getenv("SWEEPTRACE_GOLDEN_SCENES");
+    std::string wanted;
+    if (only && *only) (wanted = " ").append(only).append(" ");
+    for (const GoldenSpec& spec : read_golden_specs()) {
+        if (!wanted.empty() && wanted.find(" " + spec.scene + " ") == std::string::npos) continue;
+        std::printf("make-goldens: %s %dx%d, %d spp, max depth %d, seed %llu\n", spec.scene.c_str(), spec.width,
+                    spec.height, spec.golden_spp, spec.max_depth, static_cast<unsigned long long>(spec.golden_seed));
+        std::fflush(stdout);
+        make_golden(spec);
+    }
+}
 
 #define GOLDEN_TEST(scene, tag)                                                                               \
     TEST_CASE("golden " scene " bvh", "[image][golden]") { check_scene(scene, AccelKind::Bvh, "bvh"); }      \
