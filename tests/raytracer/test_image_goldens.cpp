@@ -28,6 +28,7 @@ void check_scene(const std::string& scene_name, AccelKind accel, const char* acc
     const GoldenVerdict v = compare_to_golden(spec, result, scene_name + "-" + accel_name, true);
     INFO(v.block.summary());
     CHECK(v.accepted());
+    WARN(scene_name << " " << accel_name << ": " << v.block.summary());  // the margin, on record
 }
 
 std::size_t object_named(const Scene& scene, const std::string& name) {
