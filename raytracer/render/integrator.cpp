@@ -43,6 +43,7 @@ glm::vec3 PathIntegrator::radiance(collision::Ray ray, Rng& rng, std::uint64_t& 
     bool full_weight = true;    // the ray that found this vertex gets MIS weight 1
     float prev_pdf = 0.0f;      // BSDF density of that ray (non-delta only)
     glm::vec3 prev_point(0.0f); // where it left
+    std::uint32_t prev_object = LightSet::kNoObject;  // and from which object's surface
     for (int depth = 1;; ++depth) {
         SurfaceHit hit;
         ++rays;
@@ -60,7 +61,7 @@ glm::vec3 PathIntegrator::radiance(collision::Ray ray, Rng& rng, std::uint64_t& 
         const glm::vec3 le = emitted_radiance(mat, hit.normal, wo);
         if (le != glm::vec3(0.0f)) {
             float w = 1.0f;
-            if (nee && !full_weight) w = power_heuristic(prev_pdf, lights_.pdf(prev_point, hit));
+            if (nee && !full_weight) w = power_heuristic(prev_pdf, lights_.pdf(prev_point, prev_object, hit));
             result += beta * le * w;
         }
         if (depth >= max_depth_ || !scatters(mat)) break;
@@ -71,7 +72,7 @@ glm::vec3 PathIntegrator::radiance(collision::Ray ray, Rng& rng, std::uint64_t& 
         if (nee && !delta) {
             const float us = rng.uniform(), up = rng.uniform(), u1 = rng.uniform(), u2 = rng.uniform();
             LightSample ls;
-            if (lights_.sample(hit.point, us, up, u1, u2, ls)) {
+            if (lights_.sample(hit.point, hit.object, us, up, u1, u2, ls)) {
                 const BsdfEval e = eval_bsdf(mat, ctx, ls.wi);
                 if (e.pdf > 0.0f) {
                     ++rays;
@@ -90,6 +91,7 @@ glm::vec3 PathIntegrator::radiance(collision::Ray ray, Rng& rng, std::uint64_t& 
         full_weight = bs.delta;
         prev_pdf = bs.pdf;
         prev_point = hit.point;
+        prev_object = hit.object;
 
         if (depth >= 3) {
             const float q = std::min(1.0f, max_component(beta));

@@ -4,7 +4,10 @@
 //
 // How each shape is sampled (all exactly: the density used in MIS is the one sampled with):
 // - sphere whose transform is a similarity (uniform scale, rotation, translation): uniformly in
-//   the cone of directions it subtends (only visible points); from inside it: uniformly by area;
+//   the cone of directions it subtends (only visible points); from inside it, and from a point
+//   on its own surface (shading point of that same sphere): uniformly by area. A point on the
+//   surface is classified by what it is, never by |p - c|^2 > r^2: rounding puts about a third
+//   of a sphere's own hit points "outside", where the cone degenerates to the point itself;
 // - quad, disk, triangle: uniformly by world area (an affine map keeps them flat, with constant
 //   area scaling);
 // - mesh: a triangle chosen by world area, then uniformly on it (so uniform over the surface);
@@ -58,13 +61,19 @@ public:
     // Probability of choosing the light made of `object` (0 if it is not one).
     float selection_probability(std::uint32_t object) const;
 
-    // A point on a light seen from shading point `p`, from four uniforms in [0, 1). Returns
-    // false when the sample carries no light (back side of a one-sided emitter, degenerate).
-    bool sample(const glm::vec3& p, float u_select, float u_part, float u1, float u2, LightSample& out) const;
+    // Marks a shading point that lies on no object's surface (a camera, a test probe).
+    static constexpr std::uint32_t kNoObject = 0xffffffffu;
 
-    // Solid-angle density (selection included) with which sample(p, ...) produces the light
-    // point `hit`, reached from `p` by a ray. Zero when hit.object is not a light.
-    float pdf(const glm::vec3& p, const SurfaceHit& hit) const;
+    // A point on a light seen from shading point `p`, from four uniforms in [0, 1). `p_object`
+    // is the object whose surface `p` lies on (kNoObject if none): a sphere light samples itself
+    // by area from its own surface. Returns false when the sample carries no light (back side of
+    // a one-sided emitter, degenerate).
+    bool sample(const glm::vec3& p, std::uint32_t p_object, float u_select, float u_part, float u1, float u2,
+                LightSample& out) const;
+
+    // Solid-angle density (selection included) with which sample(p, p_object, ...) produces the
+    // light point `hit`, reached from `p` by a ray. Zero when hit.object is not a light.
+    float pdf(const glm::vec3& p, std::uint32_t p_object, const SurfaceHit& hit) const;
 
 private:
     enum class Kind : std::uint8_t { SphereCone, Parallelogram, Triangle, Ellipse, Surface, Mesh };

@@ -46,7 +46,7 @@ double sampled_area(const Scene& scene, const glm::vec3& p, std::uint64_t seed, 
     Rng rng(seed, 0, 0);
     for (int i = 0; i < 100000; ++i) {
         LightSample ls;
-        const bool ok = lights.sample(p, rng.uniform(), rng.uniform(), rng.uniform(), rng.uniform(), ls);
+        const bool ok = lights.sample(p, LightSet::kNoObject, rng.uniform(), rng.uniform(), rng.uniform(), rng.uniform(), ls);
         if (!ok) {
             est.add(0.0);
             continue;
@@ -58,7 +58,7 @@ double sampled_area(const Scene& scene, const glm::vec3& p, std::uint64_t seed, 
         const float cos_l = std::abs(glm::dot(ls.normal, ls.wi));
         // Same point, same normal; pdf() recomputes the light's cosine as dot(n, w) / |w| instead
         // of dot(n, w / |w|): a few ulps apart, relatively 1/cos_l times more in the cosine.
-        REQUIRE(lights.pdf(p, h) == Approx(ls.pdf).epsilon(1e-6 + 1e-6 / cos_l));
+        REQUIRE(lights.pdf(p, LightSet::kNoObject, h) == Approx(ls.pdf).epsilon(1e-6 + 1e-6 / cos_l));
         est.add(double(ls.distance) * ls.distance / (double(ls.pdf) * cos_l));
     }
     return est.mean;
@@ -129,7 +129,7 @@ TEST_CASE("lights: a similar-transformed sphere is sampled in its cone, points v
         const double cos_max = std::sqrt(1.0 - (double)r * r / ((double)dist * dist));
         for (int i = 0; i < 20000; ++i) {
             LightSample ls;
-            REQUIRE(lights.sample(p, rng.uniform(), rng.uniform(), rng.uniform(), rng.uniform(), ls));
+            REQUIRE(lights.sample(p, LightSet::kNoObject, rng.uniform(), rng.uniform(), rng.uniform(), rng.uniform(), ls));
             // On the sphere to float accuracy of its coordinates (gamma(5) (|c| + r) each).
             REQUIRE(std::abs(glm::length(ls.point - c) - r) < 1e-5f * (glm::length(c) + r));
             REQUIRE(glm::dot(ls.normal, p - ls.point) >= -1e-5f * dist);  // the visible side
@@ -138,7 +138,7 @@ TEST_CASE("lights: a similar-transformed sphere is sampled in its cone, points v
             SurfaceHit h;
             h.point = ls.point;
             h.normal = ls.normal;
-            REQUIRE(lights.pdf(p, h) == Approx(ls.pdf).epsilon(1e-6));
+            REQUIRE(lights.pdf(p, LightSet::kNoObject, h) == Approx(ls.pdf).epsilon(1e-6));
             solid.add(1.0 / ls.pdf);
         }
         CHECK(solid.mean == Approx(2.0 * M_PI * (1.0 - cos_max)).epsilon(1e-4));
@@ -169,7 +169,7 @@ TEST_CASE("lights: selection follows power, and pdf() of a non-light is zero", "
     Estimate picked_first;
     for (int i = 0; i < 20000; ++i) {
         LightSample ls;
-        REQUIRE(lights.sample({0.5f, 0, 0.5f}, rng.uniform(), rng.uniform(), rng.uniform(), rng.uniform(), ls));
+        REQUIRE(lights.sample({0.5f, 0, 0.5f}, LightSet::kNoObject, rng.uniform(), rng.uniform(), rng.uniform(), rng.uniform(), ls));
         picked_first.add(ls.point.x < 2.0f ? 1.0 : 0.0);
     }
     CHECK(std::abs(picked_first.mean - 1.0 / 7.0) < z_bound(1) * picked_first.standard_error());
@@ -177,5 +177,5 @@ TEST_CASE("lights: selection follows power, and pdf() of a non-light is zero", "
     h.object = 2;
     h.point = {0, 1, 0};
     h.normal = {0, 1, 0};
-    CHECK(lights.pdf({0, 3, 0}, h) == 0.0f);
+    CHECK(lights.pdf({0, 3, 0}, LightSet::kNoObject, h) == 0.0f);
 }
