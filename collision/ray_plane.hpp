@@ -30,29 +30,42 @@ struct PlaneCrossing {
     glm::vec3 point_error{0.0f};
 };
 
-// The line o + t d against n.(x - p0) = 0 with n given in double (need not be unit). False for
-// a line parallel to the plane (n.d == 0: also a line lying in it, which touches the plane
+// The line o + t d against n.(x - p0) = 0 with n given in double (need not be unit): t only,
+// without the point (for tests that reject most candidates on t before doing more work). False
+// for a line parallel to the plane (n.d == 0: also a line lying in it, which touches the plane
 // everywhere and has no first crossing), non-finite input, or t outside (tmin, tmax).
-inline bool ray_plane(const Ray& ray, const glm::dvec3& p0, const glm::dvec3& n, PlaneCrossing& out) {
+inline bool ray_plane_t(const Ray& ray, const glm::dvec3& p0, const glm::dvec3& n, PlaneCrossing& out) {
     const glm::dvec3 o(ray.origin), d(ray.dir);
-    const glm::dvec3 to_plane = p0 - o;
     const double denom = glm::dot(n, d);
     if (denom == 0.0 || !std::isfinite(denom)) return false;
-    const double t = glm::dot(n, to_plane) / denom;
+    const double t = glm::dot(n, p0 - o) / denom;
     if (!std::isfinite(t)) return false;
     const float tf = float(t);
     if (!(tf > ray.tmin) || !(tf < ray.tmax)) return false;
     out.t = t;
     out.t_float = tf;
+    return true;
+}
+
+// Completes a crossing found by ray_plane_t: the point and its error. False if the point
+// overflows.
+inline bool ray_plane_point(const Ray& ray, const glm::dvec3& p0, const glm::dvec3& n, PlaneCrossing& out) {
+    const glm::dvec3 o(ray.origin), d(ray.dir);
+    const double t = out.t;
     out.point = o + t * d;
     if (!std::isfinite(out.point.x) || !std::isfinite(out.point.y) || !std::isfinite(out.point.z)) return false;
     const glm::dvec3 an = glm::abs(n);
-    const double s = glm::dot(an, glm::abs(to_plane)) + std::fabs(t) * glm::dot(an, glm::abs(d));
+    const double s = glm::dot(an, glm::abs(p0 - o)) + std::fabs(t) * glm::dot(an, glm::abs(d));
     const double n_len = glm::length(n);
     const double plane_distance = 8.0 * 0x1p-53 * s / n_len;
     // Distance along the unit normal spread per axis (|n_i| / |n|), plus the float rounding.
     out.point_error = glm::vec3(gamma(2) * glm::abs(glm::vec3(out.point)) + glm::vec3(plane_distance * an / n_len));
     return true;
+}
+
+// Both steps: t, point and point_error.
+inline bool ray_plane(const Ray& ray, const glm::dvec3& p0, const glm::dvec3& n, PlaneCrossing& out) {
+    return ray_plane_t(ray, p0, n, out) && ray_plane_point(ray, p0, n, out);
 }
 
 }  // namespace collision::detail

@@ -8,6 +8,8 @@
 // same edge function (negated) in both, so a ray through the edge is inside at least one of
 // them; when an edge function rounds to exactly 0 it is recomputed in double, where the
 // products of floats are exact, so the sign is right. No ray leaks through a closed mesh.
+// collision/intersect_quad.cpp decides with the same shear_vertex / edge_function, so edges
+// shared between quads and triangles (bit-identical endpoints) are watertight as well.
 //
 // Use by an acceleration structure:
 //   TriangleRay tr = prepare_triangle_ray(ray);            // once per ray
@@ -83,28 +85,47 @@ struct TriangleCandidate {
     float b0 = 0.0f, b1 = 0.0f, b2 = 0.0f;  // weights of a, b, c
 };
 
+// A vertex in the ray's sheared frame: x, y after the shear, z before scaling by sz. It depends
+// only on the vertex's floats and the ray, so every face sharing the vertex gets the same values.
+struct ShearedVertex {
+    float x = 0.0f, y = 0.0f, z = 0.0f;
+};
+
+inline ShearedVertex shear_vertex(const Ray& ray, const TriangleRay& tr, const glm::vec3& p) {
+    const glm::vec3 rel = p - ray.origin;
+    return {rel[tr.kx] + tr.sx * rel[tr.kz], rel[tr.ky] + tr.sy * rel[tr.kz], rel[tr.kz]};
+}
+
+// The 2D edge function of the directed edge p -> q (twice the signed area of origin, p, q).
+// The edge q -> p gives exactly the negated value, whichever face (triangle or quad) computes
+// it: that is what makes shared edges watertight. Its sign is exact whenever it is non-zero
+// (rounding is monotone: fl(a) >= fl(b) when a >= b); a zero is re-decided by
+// edge_function_exact.
+inline float edge_function(const ShearedVertex& p, const ShearedVertex& q) { return p.x * q.y - p.y * q.x; }
+
+// Products of floats are exact in double: the sign of the result is exact.
+inline float edge_function_exact(const ShearedVertex& p, const ShearedVertex& q) {
+    return float(double(p.x) * double(q.y) - double(p.y) * double(q.x));
+}
+
 inline bool intersect_triangle_candidate(const Ray& ray, const TriangleRay& tr, const glm::vec3& a,
                                          const glm::vec3& b, const glm::vec3& c, TriangleCandidate& out) {
     if (!tr.valid) return false;
-    const glm::vec3 pa = a - ray.origin, pb = b - ray.origin, pc = c - ray.origin;
     // Shear so the ray is +z (z is scaled later, only if the 2D test passes).
-    const float ax = pa[tr.kx] + tr.sx * pa[tr.kz], ay = pa[tr.ky] + tr.sy * pa[tr.kz];
-    const float bx = pb[tr.kx] + tr.sx * pb[tr.kz], by = pb[tr.ky] + tr.sy * pb[tr.kz];
-    const float cx = pc[tr.kx] + tr.sx * pc[tr.kz], cy = pc[tr.ky] + tr.sy * pc[tr.kz];
-    float e0 = bx * cy - by * cx;  // edge b-c, weight of a
-    float e1 = cx * ay - cy * ax;  // edge c-a, weight of b
-    float e2 = ax * by - ay * bx;  // edge a-b, weight of c
+    const ShearedVertex sa = shear_vertex(ray, tr, a), sb = shear_vertex(ray, tr, b), sc = shear_vertex(ray, tr, c);
+    float e0 = edge_function(sb, sc);  // edge b-c, weight of a
+    float e1 = edge_function(sc, sa);  // edge c-a, weight of b
+    float e2 = edge_function(sa, sb);  // edge a-b, weight of c
     if (e0 == 0.0f || e1 == 0.0f || e2 == 0.0f) {
-        // Products of floats are exact in double: the sign of each edge function is exact.
-        e0 = float(double(bx) * double(cy) - double(by) * double(cx));
-        e1 = float(double(cx) * double(ay) - double(cy) * double(ax));
-        e2 = float(double(ax) * double(by) - double(ay) * double(bx));
+        e0 = edge_function_exact(sb, sc);
+        e1 = edge_function_exact(sc, sa);
+        e2 = edge_function_exact(sa, sb);
     }
     // Two-sided: all edge functions of one sign (zeros allowed: edges and vertices hit).
     if ((e0 < 0.0f || e1 < 0.0f || e2 < 0.0f) && (e0 > 0.0f || e1 > 0.0f || e2 > 0.0f)) return false;
     const float det = e0 + e1 + e2;
     if (det == 0.0f || !std::isfinite(det)) return false;  // ray in the triangle's plane, or NaN
-    const float az = tr.sz * pa[tr.kz], bz = tr.sz * pb[tr.kz], cz = tr.sz * pc[tr.kz];
+    const float az = tr.sz * sa.z, bz = tr.sz * sb.z, cz = tr.sz * sc.z;
     const float t_scaled = e0 * az + e1 * bz + e2 * cz;
     // Range test before dividing (sign of det folded in); NaN fails every comparison.
     const float abs_det = std::fabs(det);
@@ -117,9 +138,9 @@ inline bool intersect_triangle_candidate(const Ray& ray, const TriangleRay& tr, 
     if (ray.tmin >= 0.0f) {
         // pbrt-v4's deltaT: is t certainly > 0? (See the error bound in the header comment.)
         const float max_zt = std::max({std::fabs(az), std::fabs(bz), std::fabs(cz)});
-        const float max_z = std::max({std::fabs(pa[tr.kz]), std::fabs(pb[tr.kz]), std::fabs(pc[tr.kz])});
-        const float max_xt = std::max({std::fabs(ax), std::fabs(bx), std::fabs(cx)});
-        const float max_yt = std::max({std::fabs(ay), std::fabs(by), std::fabs(cy)});
+        const float max_z = std::max({std::fabs(sa.z), std::fabs(sb.z), std::fabs(sc.z)});
+        const float max_xt = std::max({std::fabs(sa.x), std::fabs(sb.x), std::fabs(sc.x)});
+        const float max_yt = std::max({std::fabs(sa.y), std::fabs(sb.y), std::fabs(sc.y)});
         const float delta_z = gamma(3) * max_zt;
         const float delta_x = gamma(5) * (max_xt + max_z);
         const float delta_y = gamma(5) * (max_yt + max_z);

@@ -3,12 +3,14 @@
 // collision/ray_plane.hpp.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <random>
 
 #include "collision/float_error.hpp"
 #include "collision/intersect.hpp"
+#include "collision/triangle_watertight.hpp"
 #include "reference_check.hpp"
 #include "reference_intersect.hpp"
 #include "reference_sampling.hpp"
@@ -149,22 +151,63 @@ void check_disk_case(const Ray& ray, const Disk& k) {
     REQUIRE(why.empty());
 }
 
+// The hit/miss margin of collision/intersect_quad.cpp: the exact edge functions of the exact
+// vertices in the ray's sheared frame (their smallest |e_i| is the reference margin) and the
+// stated tolerance de + 4 R (max|xt| + max|yt|) + 4 R^2, R = gamma(2) max |v_i|.
+struct QuadMargin {
+    Real min_abs_e = 0, tol = 0;
+};
+
+QuadMargin quad_margin(const Ray& ray, const Quad& q) {
+    const collision::TriangleRay tr = collision::prepare_triangle_ray(ray);
+    const vec3l o = widen(ray.origin), d = widen(ray.dir);
+    const Real sx = -d[tr.kx] / d[tr.kz], sy = -d[tr.ky] / d[tr.kz];
+    const vec3l c = widen(q.corner), eu = widen(q.edge_u), ev = widen(q.edge_v);
+    const vec3l v[4] = {c, c + eu, c + eu + ev, c + ev};
+    Real xt[4], yt[4], mx = 0, my = 0, mz = 0, mv = 0;
+    for (int i = 0; i < 4; ++i) {
+        const vec3l p = v[i] - o;
+        xt[i] = p[tr.kx] + sx * p[tr.kz];
+        yt[i] = p[tr.ky] + sy * p[tr.kz];
+        mx = std::max(mx, std::fabs(xt[i]));
+        my = std::max(my, std::fabs(yt[i]));
+        mz = std::max(mz, std::fabs(p[tr.kz]));
+        mv = std::max({mv, std::fabs(v[i].x), std::fabs(v[i].y), std::fabs(v[i].z)});
+    }
+    QuadMargin m;
+    m.min_abs_e = std::numeric_limits<Real>::infinity();
+    for (int i = 0; i < 4; ++i) {
+        const int j = (i + 1) % 4;
+        m.min_abs_e = std::min(m.min_abs_e, std::fabs(xt[i] * yt[j] - yt[i] * xt[j]));
+    }
+    const Real dx = Real(gamma(5)) * (mx + mz), dy = Real(gamma(5)) * (my + mz);
+    const Real de = 2 * (Real(gamma(2)) * mx * my + dy * mx + dx * my);
+    const Real r = Real(gamma(2)) * mv;
+    m.tol = de + 4 * r * (mx + my) + 4 * r * r;
+    return m;
+}
+
 void check_quad_case(const Ray& ray, const Quad& q) {
     RayHit hit;
     const bool got = collision::intersect(ray, q, hit);
     const vec3l corner = widen(q.corner), eu = widen(q.edge_u), ev = widen(q.edge_v);
     const vec3l n = glm::cross(eu, ev);
-    const reference::Crossings ref = reference::quad(widen(ray.origin), widen(ray.dir), corner, eu, ev);
-    reference::ShapeChecks sc = flat_checks(ray, corner, n);
-    // In (s, t) units: the point's error over the parallelogram's smaller height.
+    reference::Crossings ref = reference::quad(widen(ray.origin), widen(ray.dir), corner, eu, ev);
+    // uv comes from the double plane point: its error in (s, t) units is the point's error over
+    // the parallelogram's smaller height.
     const Real height = std::min(glm::length(n) / glm::length(eu), glm::length(n) / glm::length(ev));
-    sc.margin_tol = double_point_error(ray, corner, glm::length(eu) + glm::length(ev)) / height;
+    const Real uv_tol = double_point_error(ray, corner, glm::length(eu) + glm::length(ev)) / height;
+    reference::ShapeChecks sc = flat_checks(ray, corner, n);
+    // Hit/miss is decided by the sheared edge functions (see quad_margin).
+    const QuadMargin qm = quad_margin(ray, q);
+    ref.margin = qm.min_abs_e;
+    sc.margin_tol = qm.tol;
     const std::string why = reference::check_answer(ray, got, hit, ref, sc);
     INFO(why);
     REQUIRE(why.empty());
     if (got && !ref.hits.empty()) {
-        REQUIRE(std::fabs(hit.uv.x - ref.hits[0].u) <= Real(gamma(1)) + sc.margin_tol);
-        REQUIRE(std::fabs(hit.uv.y - ref.hits[0].v) <= Real(gamma(1)) + sc.margin_tol);
+        REQUIRE(std::fabs(hit.uv.x - ref.hits[0].u) <= Real(gamma(1)) + uv_tol);
+        REQUIRE(std::fabs(hit.uv.y - ref.hits[0].v) <= Real(gamma(1)) + uv_tol);
     }
 }
 
@@ -193,4 +236,75 @@ TEST_CASE("flat shapes: random rays agree with the long double reference within 
         check_quad_case(ray, Quad{p0 - 0.5f * size * u, size * u, size * sm.uniform(0.1f, 1.0f) * glm::cross(n, u)});
         check_quad_case(ray, Quad{p0, size * sm.direction(), size * sm.direction()});  // skewed
     }
+}
+
+namespace {
+
+// A closed cube [lo, lo + size] whose faces are Quads (edge_u x edge_v outward) or, where
+// `split` says so, the two triangles (v0, v1, v2), (v0, v2, v3) of that quad's float vertices.
+// Every vertex coordinate is lo_i or lo_i + size_i, bit-identical in every face.
+struct MixedCube {
+    std::vector<Quad> quads;
+    std::vector<collision::Triangle> triangles;
+};
+
+MixedCube mixed_cube(const glm::vec3& lo, float size, unsigned split) {
+    const glm::vec3 x(size, 0, 0), y(0, size, 0), z(0, 0, size);
+    const Quad faces[6] = {{lo, z, y}, {lo + x, y, z}, {lo, x, z}, {lo + y, z, x}, {lo, y, x}, {lo + z, x, y}};
+    MixedCube cube;
+    for (int f = 0; f < 6; ++f) {
+        const Quad& q = faces[f];
+        if (!(split >> f & 1u)) {
+            cube.quads.push_back(q);
+            continue;
+        }
+        const glm::vec3 v1 = q.corner + q.edge_u, v2 = v1 + q.edge_v, v3 = q.corner + q.edge_v;
+        cube.triangles.push_back({q.corner, v1, v2});
+        cube.triangles.push_back({q.corner, v2, v3});
+    }
+    return cube;
+}
+
+bool hits_cube(const MixedCube& cube, const Ray& ray) {
+    RayHit h;
+    for (const Quad& q : cube.quads)
+        if (collision::intersect(ray, q, h)) return true;
+    for (const collision::Triangle& t : cube.triangles)
+        if (collision::intersect(ray, t, h)) return true;
+    return false;
+}
+
+}  // namespace
+
+TEST_CASE("quad: closed cubes of quads, and of quads and triangles, never leak at shared edges and corners",
+          "[intersect][quad][watertight]") {
+    std::mt19937_64 rng(0xf1a70002);
+    sampling::Sampler sm{rng};
+    int rays = 0, leaks = 0;
+    for (int i = 0; i < 400; ++i) {
+        const float size = sm.log_uniform(1e-2f, 1e3f);
+        const glm::vec3 lo = i % 4 == 0 ? glm::vec3(-0.5f * size) : sm.point(1e3f);
+        // Half the cubes all quads, the others a random mix (at least one face split).
+        const unsigned split = i % 2 == 0 ? 0u : 1u + unsigned(sm.uniform(0.0f, 62.99f));
+        const MixedCube cube = mixed_cube(lo, size, split);
+        const glm::vec3 hi = lo + glm::vec3(size), centre = lo + 0.5f * glm::vec3(size);
+        for (int k = 0; k < 32; ++k) {
+            // Targets: a corner, or a point of an edge (its midpoint or anywhere on it).
+            glm::vec3 target(sm.uniform(0, 1) < 0.5f ? lo.x : hi.x, sm.uniform(0, 1) < 0.5f ? lo.y : hi.y,
+                             sm.uniform(0, 1) < 0.5f ? lo.z : hi.z);
+            if (k % 2 == 1) {
+                const int axis = k / 2 % 3;
+                target[axis] = lo[axis] + (k % 4 == 1 ? 0.5f : sm.uniform(0.0f, 1.0f)) * size;
+            }
+            const glm::vec3 inside = k % 3 == 0 ? centre : centre + 0.3f * size * sm.direction();
+            // From inside out, and from outside in along the same line.
+            const Ray out{inside, target - inside};
+            const Ray in{target + (target - inside), inside - target};
+            rays += 2;
+            leaks += !hits_cube(cube, out);
+            leaks += !hits_cube(cube, in);
+        }
+    }
+    INFO("leaks " << leaks << " of " << rays);
+    CHECK(leaks == 0);
 }
