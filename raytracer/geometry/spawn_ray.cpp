@@ -34,30 +34,42 @@ collision::Ray spawn_ray(const SurfaceHit& hit, const glm::vec3& dir) {
                           std::numeric_limits<float>::infinity()};
 }
 
-// The ray runs from the offset origin o to the target with dir = target - o, so t = 1 is the
-// target, and it must stop short of the target's own surface while still seeing every blocker
-// before it. Two things blur where that surface is met along the ray:
-//  - the target point is only known within target +- target_error; along dir that box spans
-//    parameters 1 +- s, s = dot(target_error, |dir|) / |dir|^2 (its support along dir over the
-//    ray's length); a hit reported on the same surface carries a box of the same kind: 2 s;
-//  - the intersector's own t error at the far end, which for curved shapes is larger than the
-//    point error (the point is re-projected, t is not). The largest of collision/'s stated
-//    bounds is the sphere's, gamma(32) ((|f| + r)(1 + r / h) / |d| + |t|) at t = 1 with
-//    f = o - centre. For an origin outside the sphere's radius of the target (r <= |d|),
-//    |f| <= |d| + r <= 2 |d|, and a target facing the ray within 60 degrees (h >= r / 2):
-//    gamma(32) (3 * 3 + 1) = 10 gamma(32), about 2e-5.
-// Plus gamma(3) for forming dir = target - o and o + t dir. So
-//   tmax = 1 - 2 s - 10 gamma(32) - gamma(3).
-// Not covered: targets seen at grazing angles beyond 60 degrees on strongly curved lights,
-// where a false "occluded" is possible (such samples carry a small cosine weight), and a
-// blocker within that last fraction of the segment of the target (it would touch the light).
-collision::Ray spawn_ray_to(const SurfaceHit& hit, const glm::vec3& target, const glm::vec3& target_error) {
+// pbrt-v4's SpawnRayTo(Interaction, Interaction): both ends leave their surfaces. The origin o is
+// pushed off the hit toward the target, the target off its own surface toward o, each by its
+// error bound, so the target's surface (its exact point lies in the target's error box) is met,
+// if at all, only beyond the offset end pt: for a chord of a convex light both o and pt lie
+// inside it and the exact crossing is at t >= 1; for a light seen from outside pt lies in front
+// of the tangent slab. With dir = pt - o (t = 1 is pt) the only way to report the target's own
+// surface before t = 1 is the intersector's t error, and the largest of collision/'s stated
+// bounds is the sphere's: gamma(32) ((|f| + r)(1 + r / h) / |d| + |t|), f = o - centre. At the
+// crossing t ~ 1 the half-chord is h = r cos_t (cos_t the cosine between the ray and the
+// light's normal there, which `target_normal` gives), and |f| <= |dir| + r, so with
+// k = r / |dir| the bound is gamma(32) ((1 + 2 k)(1 + 1 / cos_t) + 1). Two placements bound k:
+// the origin on the same sphere (a chord, |dir| = 2 r cos_t: k = 1 / (2 cos_t)) and an origin
+// at least r away from the light (k <= 1); k = max(1, 1 / (2 cos_t)) covers both. Forming dir
+// and o + t dir rounds the end by gamma(3) |dir| per axis, which moves the crossing by at most
+// gamma(3) sqrt(3) / cos_t in t. So
+//   tmax = 1 - gamma(32) ((1 + 2 k)(1 + 1 / cos_t) + 1) - 2 gamma(3) / cos_t.
+// The margin grows like 1 / cos_t^2 at grazing angles (the real conditioning of a tangent hit:
+// no float method places such a crossing better); a blocker within that last fraction of the
+// segment touches the light anyway. Not covered: an origin closer to a strongly curved light
+// than its radius, seeing it at grazing angles (k above the bound; a false "occluded" is then
+// possible, weighted by a small cosine).
+collision::Ray spawn_ray_to(const SurfaceHit& hit, const glm::vec3& target, const glm::vec3& target_error,
+                            const glm::vec3& target_normal) {
     const glm::vec3 o = offset_origin(hit.point, hit.point_error, hit.normal, target - hit.point);
-    const glm::vec3 dir = target - o;
-    const float len2 = glm::dot(dir, dir);
-    float s = len2 > 0.0f ? glm::dot(target_error, glm::abs(dir)) / len2 : 0.0f;
-    if (!std::isfinite(s)) s = 0.0f;
-    const float tmax = std::max(0.0f, 1.0f - 2.0f * s - 10.0f * collision::gamma(32) - collision::gamma(3));
+    const glm::vec3 pt = offset_origin(target, target_error, target_normal, o - target);
+    const glm::vec3 dir = pt - o;
+    const float len = glm::length(dir);
+    const float cos_t = len > 0.0f ? std::abs(glm::dot(target_normal, dir)) / len : 0.0f;
+    float tmax = 0.0f;  // a tangent or degenerate segment: nothing can be decided, nothing blocks
+    if (cos_t > 0.0f && std::isfinite(cos_t)) {
+        const float inv_cos = 1.0f / cos_t;
+        const float k = std::max(1.0f, 0.5f * inv_cos);
+        const float margin = collision::gamma(32) * ((1.0f + 2.0f * k) * (1.0f + inv_cos) + 1.0f) +
+                             2.0f * collision::gamma(3) * inv_cos;
+        tmax = std::max(0.0f, 1.0f - margin);
+    }
     return collision::Ray{o, dir, 0.0f, tmax};
 }
 

@@ -25,8 +25,13 @@ struct SurfaceHit {
 // (toward the side `dir` points to) by the point's error bound, so it cannot re-hit the surface.
 collision::Ray spawn_ray(const SurfaceHit& hit, const glm::vec3& dir);
 
-// A shadow ray from `hit` toward `target` (itself carrying `target_error`), stopping just short
-// of the target: tmax < 1 along dir = target - origin.
-collision::Ray spawn_ray_to(const SurfaceHit& hit, const glm::vec3& target, const glm::vec3& target_error);
+// A shadow ray from `hit` toward `target` (a point on a light, carrying `target_error`, with the
+// light's unit geometric normal `target_normal`, either orientation). Both ends are pushed off
+// their surfaces by their error bounds (pbrt-v4's SpawnRayTo between two interactions), and the
+// ray stops short of the offset target: tmax < 1 along dir = offset target - origin, backed off
+// by the intersectors' t error bound there, which grows as the target is seen more grazingly
+// (derivation and scope in spawn_ray.cpp).
+collision::Ray spawn_ray_to(const SurfaceHit& hit, const glm::vec3& target, const glm::vec3& target_error,
+                            const glm::vec3& target_normal);
 
 }  // namespace sweeptrace

@@ -25,9 +25,9 @@ collision::Ray PathIntegrator::continue_ray(const SurfaceHit& hit, const glm::ve
     return spawn_ray(hit, dir);
 }
 
-collision::Ray PathIntegrator::shadow_ray(const SurfaceHit& hit, const glm::vec3& target,
-                                          const glm::vec3& target_error) const {
-    collision::Ray r = spawn_ray_to(hit, target, target_error);
+collision::Ray PathIntegrator::shadow_ray(const SurfaceHit& hit, const LightSample& ls) const {
+    const glm::vec3& target = ls.point;
+    collision::Ray r = spawn_ray_to(hit, target, ls.point_error, ls.normal);
     if (defect_ == PlantedDefect::NoRayOffset) {  // planted: the shadow ray starts on the surface
         r.origin = hit.point;
         r.dir = target - hit.point;
@@ -76,7 +76,7 @@ glm::vec3 PathIntegrator::radiance(collision::Ray ray, Rng& rng, std::uint64_t& 
                 const BsdfEval e = eval_bsdf(mat, ctx, ls.wi);
                 if (e.pdf > 0.0f) {
                     ++rays;
-                    if (!accel_.occluded(shadow_ray(hit, ls.point, ls.point_error))) {
+                    if (!accel_.occluded(shadow_ray(hit, ls))) {
                         const float w = power_heuristic(ls.pdf, e.pdf);
                         result += beta * e.f_cos * ls.radiance * (w / ls.pdf);
                     }

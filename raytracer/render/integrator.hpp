@@ -43,7 +43,7 @@ public:
 
 private:
     collision::Ray continue_ray(const SurfaceHit& hit, const glm::vec3& dir) const;
-    collision::Ray shadow_ray(const SurfaceHit& hit, const glm::vec3& target, const glm::vec3& target_error) const;
+    collision::Ray shadow_ray(const SurfaceHit& hit, const LightSample& ls) const;
 
     const Scene& scene_;
     const Accel& accel_;

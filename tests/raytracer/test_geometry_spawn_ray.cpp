@@ -111,9 +111,9 @@ TEST_CASE("spawn_ray_to: a shadow ray stops short of its target and sees blocker
             if (!open_accel.intersect(collision::Ray{a, da}, from)) continue;
             if (!open_accel.intersect(collision::Ray{b, db}, to)) continue;
             const glm::vec3 towards = glm::normalize(to.point - from.point);
-            // Facing each other, the target within 60 degrees of head-on (spawn_ray_to's scope).
+            // Facing each other, the target within 60 degrees of head-on (grazing chords: next test).
             if (glm::dot(towards, from.normal) <= 0.0f || glm::dot(-towards, to.normal) < 0.5f) continue;
-            const collision::Ray shadow = spawn_ray_to(from, to.point, to.point_error);
+            const collision::Ray shadow = spawn_ray_to(from, to.point, to.point_error, to.normal);
             INFO("scale " << scale);
             CHECK(shadow.tmax < 1.0f);
             CHECK(shadow.tmax > 0.99f);
@@ -129,4 +129,55 @@ TEST_CASE("spawn_ray_to: a shadow ray stops short of its target and sees blocker
     }
     CHECK(checked > 500);
     CHECK(blocked_checked > 50);
+}
+
+// Shadow rays between two points of one sphere (from inside a closed spherical light): the chord
+// is exactly unoccluded, however grazing, and the sphere itself must never report it occluded
+// (before both ends were offset, ~2.5 % of chords with cos < 0.1 at the target were). Chords from
+// head-on down to cos ~ 1e-3, at scales 1e-4 to 1e5, centred and far from the origin; a small
+// sphere put around the chord's midpoint must still occlude it.
+TEST_CASE("spawn_ray_to: chords of one sphere are never occluded by it, grazing included", "[geometry][spawn]") {
+    std::mt19937 rng(11);
+    std::uniform_real_distribution<float> u01(0.0f, 1.0f);
+    int checked = 0, grazing = 0, blocked_checked = 0;
+    for (float scale : {1e-4f, 1e-2f, 1.0f, 1e3f, 1e5f}) {
+        for (float offset_factor : {0.0f, 30.0f}) {
+            const glm::vec3 centre = scale * offset_factor * glm::vec3(1.0f, -0.7f, 0.4f);
+            Scene scene;
+            scene.materials.push_back(Material{});
+            scene.objects.push_back(test::object(collision::Sphere{centre, scale}));
+            for (AccelKind kind : {AccelKind::Bvh, AccelKind::Embree}) {
+                const std::unique_ptr<Accel> accel = make_accel(kind, scene);
+                for (int i = 0; i < 400; ++i) {
+                    // The second direction a random angle from the first, log-uniform down to
+                    // ~2e-3 rad: the chord's cosine at both ends is sin(angle / 2).
+                    const glm::vec3 da = test::random_direction(rng);
+                    const float spread = std::pow(10.0f, -2.7f * u01(rng));
+                    const glm::vec3 db = glm::normalize(da + spread * test::random_direction(rng));
+                    SurfaceHit from, to;
+                    REQUIRE(accel->intersect(collision::Ray{centre, da}, from));
+                    REQUIRE(accel->intersect(collision::Ray{centre, db}, to));
+                    const collision::Ray shadow = spawn_ray_to(from, to.point, to.point_error, to.normal);
+                    const float cos_t = std::abs(glm::dot(to.normal, glm::normalize(to.point - from.point)));
+                    INFO("scale " << scale << " offset " << offset_factor << " cos at target " << cos_t);
+                    CHECK_FALSE(accel->occluded(shadow));
+                    ++checked;
+                    if (cos_t < 0.05f) ++grazing;
+                    // A blocker around the midpoint, a quarter of the chord wide, inside the
+                    // part of the segment that tmax keeps (cos >= 0.05: tmax > 0.999).
+                    if (cos_t >= 0.05f && kind == AccelKind::Bvh) {
+                        Scene blocked = scene;
+                        const float chord = glm::length(to.point - from.point);
+                        blocked.objects.push_back(
+                            test::object(collision::Sphere{0.5f * (from.point + to.point), 0.25f * chord}));
+                        CHECK(make_accel(AccelKind::Bvh, blocked)->occluded(shadow));
+                        ++blocked_checked;
+                    }
+                }
+            }
+        }
+    }
+    CHECK(checked == 8000);
+    CHECK(grazing > 1000);
+    CHECK(blocked_checked > 1000);
 }
