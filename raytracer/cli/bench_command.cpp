@@ -97,7 +97,7 @@ void run_bench(const BenchArgs& args) {
     EmbreeOptions single_thread;
     single_thread.build_threads = 1;
     w0 = wall_seconds();
-    const std::unique_ptr<Accel> embree = make_embree_accel(scene, single_thread);
+    std::unique_ptr<Accel> embree = make_embree_accel(scene, single_thread);
     const double embree_build = wall_seconds() - w0;
 
     const std::size_t triangles = native.triangle_count();
@@ -123,6 +123,9 @@ void run_bench(const BenchArgs& args) {
     std::printf("%-8s %14.3f %15.3f %10zu\n", native.name().c_str(), mrays / a.cpu, mrays / a.wall, a.hits);
     std::printf("%-8s %14.3f %15.3f %10zu\n", embree->name().c_str(), mrays / b.cpu, mrays / b.wall, b.hits);
     std::printf("native / embree: %.2fx (cpu time), %.2fx (wall time)\n", b.cpu / a.cpu, b.wall / a.wall);
+    // An Embree device made with "threads=1" caps TBB's parallelism for the whole process while
+    // it lives, which would make the multi-threaded render below run on one core.
+    embree.reset();
 
     for (int threads : {1, args.threads}) {
         RenderOptions options;
