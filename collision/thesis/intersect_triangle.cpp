@@ -9,6 +9,7 @@
 // leak the watertight test removes); denom cancels for slivers (0 or negative: the division
 // gives inf/NaN coordinates, which fail the inside test: no hit). Normal normalize(n); uv
 // (v, w), the weights of b and c; point o + t d; point_error 0. NaN input: no hit.
+#include "collision/thesis/barycentric.hpp"
 #include "collision/thesis/intersect.hpp"
 #include "collision/thesis/textbook.hpp"
 
@@ -20,19 +21,13 @@ bool intersect(const Ray& ray, const Triangle& tri, RayHit& hit) {
     if (!detail::segment_plane(ray, tri.a, n, t)) return false;
     if (!(t > ray.tmin && t < ray.tmax)) return false;
     const glm::vec3 p = ray.at(t);
-    const glm::vec3 v0 = tri.b - tri.a, v1 = tri.c - tri.a, v2 = p - tri.a;
-    const float d00 = glm::dot(v0, v0), d01 = glm::dot(v0, v1), d11 = glm::dot(v1, v1);
-    const float d20 = glm::dot(v2, v0), d21 = glm::dot(v2, v1);
-    const float denom = d00 * d11 - d01 * d01;
-    const float v = (d11 * d20 - d01 * d21) / denom;
-    const float w = (d00 * d21 - d01 * d20) / denom;
-    const float u = 1.0f - v - w;
-    if (!(u >= 0.0f && u <= 1.0f && v >= 0.0f && v <= 1.0f && w >= 0.0f && w <= 1.0f)) return false;
+    const Barycentric bary = barycentric(tri, p);
+    if (!bary.inside()) return false;
     hit.t = t;
     hit.point = p;
     hit.point_error = glm::vec3(0.0f);
     hit.normal = glm::normalize(n);
-    hit.uv = glm::vec2(v, w);
+    hit.uv = glm::vec2(bary.v, bary.w);
     return true;
 }
 

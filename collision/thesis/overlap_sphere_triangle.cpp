@@ -9,6 +9,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "collision/thesis/barycentric.hpp"
 #include "collision/thesis/overlap.hpp"
 
 namespace collision::thesis {
@@ -18,14 +19,7 @@ Contact overlap(const Sphere& s, const Triangle& tri) {
     const glm::vec3 n = glm::normalize(glm::cross(tri.b - tri.a, tri.c - tri.a));
     const float d = glm::dot(s.center - tri.a, n);
     const glm::vec3 p = s.center - n * d;
-    const glm::vec3 d0 = tri.b - tri.a, d1 = tri.c - tri.a, d2 = p - tri.a;
-    const float d00 = glm::dot(d0, d0), d01 = glm::dot(d0, d1), d11 = glm::dot(d1, d1);
-    const float d20 = glm::dot(d2, d0), d21 = glm::dot(d2, d1);
-    const float denom = d00 * d11 - d01 * d01;
-    const float v = (d11 * d20 - d01 * d21) / denom;
-    const float w = (d00 * d21 - d01 * d20) / denom;
-    const float u = 1.0f - v - w;
-    if (u >= 0 && u <= 1 && v >= 0 && v <= 1 && w >= 0 && w <= 1) {
+    if (barycentric(tri, p).inside()) {
         if (std::abs(d) < s.radius) {
             res.hit = true;
             res.displacement = n * ((d < 0 ? -1.0f : 1.0f) * (s.radius - std::abs(d)));
