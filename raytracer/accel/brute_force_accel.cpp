@@ -13,7 +13,7 @@ public:
         collision::Ray clipped = ray;
         bool found = false;
         for (std::uint32_t i = 0; i < scene_.objects.size(); ++i) {
-            if (intersect_object(scene_, i, clipped, hit)) {
+            if (intersect_object(scene_.objects, scene_.meshes, i, clipped, hit)) {
                 clipped.tmax = hit.t < clipped.tmax ? hit.t : clipped.tmax;
                 found = true;
             }
@@ -23,7 +23,7 @@ public:
     bool occluded(const collision::Ray& ray) const override {
         SurfaceHit unused;
         for (std::uint32_t i = 0; i < scene_.objects.size(); ++i)
-            if (intersect_object(scene_, i, ray, unused)) return true;
+            if (intersect_object(scene_.objects, scene_.meshes, i, ray, unused)) return true;
         return false;
     }
     std::size_t memory_bytes() const override { return sizeof(*this); }

@@ -3,7 +3,8 @@
 #include <variant>
 
 #include "raytracer/accel/bvh_traversal.hpp"
-#include "raytracer/accel/object_bounds.hpp"
+#include "raytracer/geometry/object_space.hpp"
+#include "raytracer/geometry/shape.hpp"
 #include "raytracer/geometry/intersect_object.hpp"
 #include "raytracer/geometry/object_space.hpp"
 
@@ -48,7 +49,7 @@ bool BvhAccel::intersect_one(std::uint32_t object_index, const collision::Ray& r
         mesh_hit_to_world(scene_.meshes[instance->mesh], object, object_index, triangle, h, local.t_shift, hit);
         return true;
     }
-    return intersect_object(scene_, object_index, ray, hit);
+    return intersect_object(scene_.objects, scene_.meshes, object_index, ray, hit);
 }
 
 bool BvhAccel::occluded_one(std::uint32_t object_index, const collision::Ray& ray) const {
@@ -56,7 +57,7 @@ bool BvhAccel::occluded_one(std::uint32_t object_index, const collision::Ray& ra
     if (const auto* instance = std::get_if<MeshInstance>(&object.shape))
         return meshes_[instance->mesh]->occluded(to_object_space(object.transform, ray).ray);
     SurfaceHit unused;
-    return intersect_object(scene_, object_index, ray, unused);
+    return intersect_object(scene_.objects, scene_.meshes, object_index, ray, unused);
 }
 
 bool BvhAccel::intersect(const collision::Ray& ray, SurfaceHit& hit) const {

@@ -7,11 +7,11 @@
 #include <variant>
 #include <vector>
 
-#include <embree3/rtcore.h>
 
 #include "collision/triangle_watertight.hpp"
 #include "raytracer/accel/embree_ray.hpp"
-#include "raytracer/accel/object_bounds.hpp"
+#include "raytracer/geometry/object_space.hpp"
+#include "raytracer/geometry/shape.hpp"
 #include "raytracer/geometry/intersect_object.hpp"
 
 namespace sweeptrace {
@@ -78,7 +78,7 @@ void user_intersect(const RTCIntersectFunctionNArguments* args) {
     const auto* user = static_cast<const UserObject*>(args->geometryUserPtr);
     auto* rayhit = reinterpret_cast<RTCRayHit*>(args->rayhit);
     SurfaceHit hit;
-    if (!intersect_object(*user->scene, user->object, to_ray(rayhit->ray), hit)) return;
+    if (!intersect_object(user->scene->objects, user->scene->meshes, user->object, to_ray(rayhit->ray), hit)) return;
     rayhit->ray.tfar = hit.t;
     rayhit->hit.geomID = args->geomID;
     rayhit->hit.primID = args->primID;
@@ -96,7 +96,7 @@ void user_occluded(const RTCOccludedFunctionNArguments* args) {
     const auto* user = static_cast<const UserObject*>(args->geometryUserPtr);
     auto* ray = reinterpret_cast<RTCRay*>(args->ray);
     SurfaceHit hit;
-    if (intersect_object(*user->scene, user->object, to_ray(*ray), hit))
+    if (intersect_object(user->scene->objects, user->scene->meshes, user->object, to_ray(*ray), hit))
         ray->tfar = -std::numeric_limits<float>::infinity();  // Embree's "occluded" mark
 }
 

@@ -6,7 +6,6 @@
 #include <stdexcept>
 #include <string>
 
-#include <embree3/rtcore.h>
 #include <glm/geometric.hpp>
 
 #include "raytracer/accel/embree_ray.hpp"

@@ -28,15 +28,16 @@ void mesh_hit_to_world(const Mesh& mesh, const Object& object, std::uint32_t obj
     hit.shading_normal = glm::dot(ns, hit.normal) < 0.0f ? -ns : ns;
 }
 
-bool intersect_object(const Scene& scene, std::uint32_t object_index, const collision::Ray& world_ray, SurfaceHit& hit) {
-    const Object& object = scene.objects[object_index];
+bool intersect_object(const std::vector<Object>& objects, const std::vector<Mesh>& meshes, std::uint32_t object_index,
+                      const collision::Ray& world_ray, SurfaceHit& hit) {
+    const Object& object = objects[object_index];
     const ObjectRay local = to_object_space(object.transform, world_ray);
     return std::visit(
         [&](const auto& shape) {
             using S = std::decay_t<decltype(shape)>;
             collision::RayHit h;
             if constexpr (std::is_same_v<S, MeshInstance>) {
-                const Mesh& mesh = scene.meshes[shape.mesh];
+                const Mesh& mesh = meshes[shape.mesh];
                 collision::Ray ray = local.ray;
                 std::uint32_t nearest = 0;
                 bool found = false;

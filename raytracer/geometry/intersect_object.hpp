@@ -9,13 +9,17 @@
 #include "collision/hit.hpp"
 #include "collision/ray.hpp"
 #include "raytracer/geometry/surface_hit.hpp"
-#include "raytracer/scene/scene.hpp"
+#include <vector>
+
+#include "raytracer/geometry/object.hpp"
 
 namespace sweeptrace {
 
-// Nearest hit of scene.objects[object] with world_ray.tmin < t < world_ray.tmax; writes `hit`
-// (object and primitive included) only when found.
-bool intersect_object(const Scene& scene, std::uint32_t object, const collision::Ray& world_ray, SurfaceHit& hit);
+// Nearest hit of objects[object] (its mesh, if any, in `meshes`) with world_ray.tmin < t <
+// world_ray.tmax; writes `hit` (object and primitive included) only when found. Takes the two
+// lists a scene holds, not the scene: geometry sits below the scene in the layering.
+bool intersect_object(const std::vector<Object>& objects, const std::vector<Mesh>& meshes, std::uint32_t object,
+                      const collision::Ray& world_ray, SurfaceHit& hit);
 
 // The object-space hit `h` on triangle `triangle` of `mesh`, instanced by `object`, as a world
 // SurfaceHit: what surface_hit_to_world gives, plus the shading normal interpolated from the

@@ -65,11 +65,34 @@ void point_to_world(const Transform& xf, const glm::vec3& p, const glm::vec3& er
         world_error = error;
         return;
     }
-    world_point = apply_affine(xf.to_world, p);
-    const glm::vec3 propagated = glm::abs(glm::vec3(xf.to_world[0])) * error.x +
-                                 glm::abs(glm::vec3(xf.to_world[1])) * error.y +
-                                 glm::abs(glm::vec3(xf.to_world[2])) * error.z;
-    world_error = (1.0f + gamma(3)) * propagated + gamma(3) * affine_magnitude(xf.to_world, p);
+    affine_point_to_world(xf.to_world, p, error, world_point, world_error);
+}
+
+void affine_point_to_world(const glm::mat4& m, const glm::vec3& p, const glm::vec3& error, glm::vec3& world_point,
+                           glm::vec3& world_error) {
+    world_point = apply_affine(m, p);
+    const glm::vec3 propagated =
+        glm::abs(glm::vec3(m[0])) * error.x + glm::abs(glm::vec3(m[1])) * error.y + glm::abs(glm::vec3(m[2])) * error.z;
+    world_error = (1.0f + gamma(3)) * propagated + gamma(3) * affine_magnitude(m, p);
+}
+
+collision::Bounds3 world_bounds(const Transform& xf, const collision::Bounds3& object_box) {
+    if (xf.identity || object_box.empty()) return object_box;
+    collision::Bounds3 out;
+    for (int corner = 0; corner < 8; ++corner) {
+        const glm::vec3 p((corner & 1) ? object_box.hi.x : object_box.lo.x, (corner & 2) ? object_box.hi.y : object_box.lo.y,
+                          (corner & 4) ? object_box.hi.z : object_box.lo.z);
+        glm::vec3 w, err;
+        point_to_world(xf, p, glm::vec3(0.0f), w, err);
+        out.extend(w - err);
+        out.extend(w + err);
+    }
+    // w - err and w + err round too: one more outward step.
+    for (int a = 0; a < 3; ++a) {
+        out.lo[a] = collision::next_float_down(out.lo[a]);
+        out.hi[a] = collision::next_float_up(out.hi[a]);
+    }
+    return out;
 }
 
 void surface_hit_to_world(const Transform& xf, const collision::RayHit& h, float t_shift, SurfaceHit& out) {

@@ -4,6 +4,9 @@
 // has a world-space error bound a secondary ray can be offset by.
 #include <glm/vec3.hpp>
 
+#include <glm/mat4x4.hpp>
+
+#include "collision/bvh.hpp"
 #include "collision/hit.hpp"
 #include "collision/ray.hpp"
 #include "raytracer/geometry/surface_hit.hpp"
@@ -33,6 +36,15 @@ ObjectRay to_object_space(const Transform& xf, const collision::Ray& world);
 // with |M3| the absolute linear part and m3 the translation.
 void point_to_world(const Transform& xf, const glm::vec3& p, const glm::vec3& error, glm::vec3& world_point,
                     glm::vec3& world_error);
+
+// The same for any affine map m (not only an object's transform: a light folds an ellipsoid's
+// radii into its map), with the same evaluation order and bound.
+void affine_point_to_world(const glm::mat4& m, const glm::vec3& p, const glm::vec3& error, glm::vec3& world_point,
+                           glm::vec3& world_error);
+
+// The object-space box mapped to world: the 8 transformed corners, each padded by its
+// transformation error bound (point_to_world), so the result holds the exact image of the box.
+collision::Bounds3 world_bounds(const Transform& xf, const collision::Bounds3& object_box);
 
 // The object-space hit `h` of the ray `to_object_space` made, as a world SurfaceHit: t, point
 // and its error, unit geometric normal by the inverse transpose, uv. The shading normal is set

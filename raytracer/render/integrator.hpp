@@ -23,8 +23,8 @@
 #include "collision/ray.hpp"
 #include "raytracer/accel/accel.hpp"
 #include "raytracer/render/lights.hpp"
+#include "raytracer/render/planted_defect.hpp"
 #include "raytracer/render/random.hpp"
-#include "raytracer/render/renderer.hpp"
 #include "raytracer/scene/scene.hpp"
 
 namespace sweeptrace {

@@ -1,4 +1,5 @@
 #include "raytracer/render/renderer.hpp"
+#include "raytracer/render/planted_defect.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -35,15 +36,15 @@ constexpr int kTileSize = 16;
 // every pixel (completed_spp), never a patchwork of tiles with more samples than others.
 class PassRenderer {
 public:
-    PassRenderer(const Scene& scene, const Accel& accel, const RenderOptions& opt)
+    PassRenderer(const Scene& scene, const Accel& accel, const RenderOptions& opt, PlantedDefect defect)
         : opt_(opt),
           width_(scene.film.width),
           height_(scene.film.height),
           tiles_x_((width_ + kTileSize - 1) / kTileSize),
           tiles_y_((height_ + kTileSize - 1) / kTileSize),
-          lights_(scene, opt.defect),
+          lights_(scene, defect),
           camera_(scene.camera, width_, height_),
-          integrator_(scene, accel, lights_, opt.max_depth, opt.sampling, opt.defect),
+          integrator_(scene, accel, lights_, opt.max_depth, opt.sampling, defect),
           sum_(static_cast<std::size_t>(width_) * height_, glm::dvec3(0.0)),
           sum_sq_(sum_.size(), glm::dvec3(0.0)),
           pass_(sum_.size()) {}
@@ -155,6 +156,11 @@ private:
 }  // namespace
 
 RenderResult render(const Scene& scene, const Accel& accel, const RenderOptions& options) {
+    return render_with_planted_defect(scene, accel, options, PlantedDefect::None);
+}
+
+RenderResult render_with_planted_defect(const Scene& scene, const Accel& accel, const RenderOptions& options,
+                                        PlantedDefect defect) {
     if (scene.film.width < 1 || scene.film.height < 1)
         throw std::invalid_argument("render: film size must be at least 1x1, got " + std::to_string(scene.film.width) +
                                     "x" + std::to_string(scene.film.height));
@@ -163,7 +169,7 @@ RenderResult render(const Scene& scene, const Accel& accel, const RenderOptions&
     if (options.threads < 0) throw std::invalid_argument("render: threads must be >= 0");
 
     const auto start = std::chrono::steady_clock::now();
-    PassRenderer renderer(scene, accel, options);
+    PassRenderer renderer(scene, accel, options, defect);
     if (!options.progress) {
         renderer.run();
     } else {

@@ -15,17 +15,12 @@ enum class Sampling {
     BsdfOnly,  // light found only by BSDF-sampled paths (the reference the MIS test compares to)
 };
 
-// Defects planted on purpose, for the golden-image mutation tests only: they show that the image
-// tests reject a renderer with this bug. Never set by the command line.
-enum class PlantedDefect { None, FlippedNormals, NoRayOffset };
-
 struct RenderOptions {
     int spp = 16;
     int max_depth = 8;
     int threads = 0;  // 0 = all cores
     std::uint64_t seed = 0;
     Sampling sampling = Sampling::NeeMis;
-    PlantedDefect defect = PlantedDefect::None;
     const std::atomic<bool>* cancel = nullptr;  // set (e.g. by SIGINT) to stop early
     // Called now and then from one thread with the fraction done in [0, 1].
     std::function<void(double)> progress;

@@ -177,6 +177,10 @@ Node Node::child(std::string_view key, const nlohmann::json& v) const {
 }
 
 void Node::require_object(std::initializer_list<std::string_view> allowed) const {
+    require_object(std::span<const std::string_view>(allowed.begin(), allowed.size()));
+}
+
+void Node::require_object(std::span<const std::string_view> allowed) const {
     if (!value_->is_object()) fail("must be an object, got " + describe_type(*value_));
     for (const auto& [key, v] : value_->items()) {
         if (std::find(allowed.begin(), allowed.end(), key) != allowed.end()) continue;

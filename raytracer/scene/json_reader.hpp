@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <initializer_list>
 #include <optional>
+#include <span>
 #include <string>
 #include <string_view>
 
@@ -33,6 +34,7 @@ public:
 
     // Object access. `require_object` also rejects any key not in `allowed`, naming that key's path.
     void require_object(std::initializer_list<std::string_view> allowed) const;
+    void require_object(std::span<const std::string_view> allowed) const;
     bool has(std::string_view key) const;
     Node at(std::string_view key) const;  // missing key: "<path>.<key>: missing (required)"
     std::optional<Node> find(std::string_view key) const;

@@ -7,6 +7,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "raytracer/geometry/shape.hpp"
 #include "raytracer/input_error.hpp"
 #include "raytracer/scene/json_reader.hpp"
 #include "raytracer/scene/obj_loader.hpp"
@@ -25,9 +26,7 @@ constexpr std::int64_t kMaxImageSide = 16384;
 constexpr std::int64_t kMaxSpp = 1 << 20;
 constexpr std::int64_t kMaxDepth = 1024;
 
-// Exactly zero in double: the inputs are floats, so differences and cross products of them are
-// (nearly) exact in double, and "zero" here means truly degenerate, not "small".
-bool parallel(const glm::dvec3& a, const glm::dvec3& b) { return glm::cross(a, b) == glm::dvec3(0.0); }
+using scene_keys::parallel;
 
 Camera read_camera(const Node& node) {
     node.require_object({"position", "look_at", "up", "fov", "aperture", "focus_distance"});
@@ -166,36 +165,6 @@ Transform read_transform(const Node& node) {
     }
 }
 
-glm::vec3 center_or_origin(const Node& node) {
-    if (auto c = node.find("center")) return c->vec3();
-    return glm::vec3(0.0f);
-}
-
-collision::Aabb read_box(const Node& node) {
-    const bool by_center = node.has("center") || node.has("size");
-    const bool by_bounds = node.has("min") || node.has("max");
-    if (by_center == by_bounds) node.fail("give either \"center\" and \"size\", or \"min\" and \"max\"");
-    collision::Aabb box;
-    if (by_center) {
-        box.center = center_or_origin(node);
-        const Node size = node.at("size");
-        box.size = size.vec3();
-        for (int k = 0; k < 3; ++k)
-            if (!(box.size[k] > 0.0f)) size.element(static_cast<std::size_t>(k)).number_at_least(0.0f, false);
-    } else {
-        const glm::vec3 lo = node.at("min").vec3();
-        const Node max = node.at("max");
-        const glm::vec3 hi = max.vec3();
-        for (int k = 0; k < 3; ++k)
-            if (!(hi[k] > lo[k]))
-                max.element(static_cast<std::size_t>(k)).fail("must be > min[" + std::to_string(k) + "] (" +
-                                                              scene_json::format_number(lo[k]) + ")");
-        box.center = 0.5f * (lo + hi);
-        box.size = hi - lo;
-    }
-    return box;
-}
-
 class ObjectReader {
 public:
     ObjectReader(Scene& scene, std::map<std::string, std::uint32_t> materials)
@@ -207,72 +176,8 @@ public:
         for (std::size_t i = 0; i < n; ++i) scene_.objects.push_back(read(objects.element(i)));
     }
 
-private:
-    Object read(const Node& node) {
-        if (!node.value().is_object()) node.fail("must be an object with a \"type\"");
-        const Node type_node = node.at("type");
-        const std::string type = type_node.string();
-        Object object;
-        if (type == "sphere") {
-            node.require_object({"type", "material", "transform", "name", "center", "radius"});
-            object.shape = collision::Sphere{center_or_origin(node), node.at("radius").number_at_least(0.0f, false)};
-        } else if (type == "box") {
-            node.require_object({"type", "material", "transform", "name", "center", "size", "min", "max"});
-            object.shape = read_box(node);
-        } else if (type == "cylinder") {
-            node.require_object({"type", "material", "transform", "name", "center", "radius", "height"});
-            object.shape = collision::Cylinder{center_or_origin(node), node.at("radius").number_at_least(0.0f, false),
-                                               node.at("height").number_at_least(0.0f, false)};
-        } else if (type == "capsule") {
-            node.require_object({"type", "material", "transform", "name", "center", "radius", "height"});
-            // height 0 is a sphere: allowed, the hemispheres alone close it.
-            object.shape = collision::Capsule{center_or_origin(node), node.at("radius").number_at_least(0.0f, false),
-                                              node.at("height").number_at_least(0.0f, true)};
-        } else if (type == "ellipsoid") {
-            node.require_object({"type", "material", "transform", "name", "center", "radii"});
-            const Node radii = node.at("radii");
-            const glm::vec3 r = radii.vec3();
-            for (int k = 0; k < 3; ++k)
-                if (!(r[k] > 0.0f)) radii.element(static_cast<std::size_t>(k)).number_at_least(0.0f, false);
-            object.shape = collision::Ellipsoid{center_or_origin(node), r};
-        } else if (type == "disk") {
-            node.require_object({"type", "material", "transform", "name", "center", "normal", "radius"});
-            glm::vec3 normal(0.0f, 1.0f, 0.0f);
-            if (auto n = node.find("normal")) normal = glm::vec3(glm::normalize(glm::dvec3(n->nonzero_vec3())));
-            object.shape = collision::Disk{center_or_origin(node), normal, node.at("radius").number_at_least(0.0f, false)};
-        } else if (type == "quad") {
-            node.require_object({"type", "material", "transform", "name", "corner", "edge_u", "edge_v"});
-            const collision::Quad q{node.at("corner").vec3(), node.at("edge_u").vec3(), node.at("edge_v").vec3()};
-            if (parallel(q.edge_u, q.edge_v)) node.fail("edge_u and edge_v must not be parallel (or zero): the quad has no area");
-            object.shape = q;
-        } else if (type == "triangle") {
-            node.require_object({"type", "material", "transform", "name", "a", "b", "c"});
-            const collision::Triangle t{node.at("a").vec3(), node.at("b").vec3(), node.at("c").vec3()};
-            if (parallel(glm::dvec3(t.b) - glm::dvec3(t.a), glm::dvec3(t.c) - glm::dvec3(t.a)))
-                node.fail("a, b and c are collinear: the triangle has no area");
-            object.shape = t;
-        } else if (type == "mesh") {
-            node.require_object({"type", "material", "transform", "name", "file"});
-            object.shape = MeshInstance{mesh_index(node.at("file"))};
-        } else {
-            type_node.fail("unknown shape type \"" + type +
-                           "\" (known: sphere, box, cylinder, capsule, ellipsoid, disk, quad, triangle, mesh)");
-        }
-
-        const Node material = node.at("material");
-        const std::string material_name = material.string();
-        const auto it = materials_.find(material_name);
-        if (it == materials_.end()) {
-            std::string known;
-            for (const auto& [name, index] : materials_) known += (known.empty() ? "" : ", ") + name;
-            material.fail("unknown material \"" + material_name + "\" (defined: " + (known.empty() ? "none" : known) + ")");
-        }
-        object.material = it->second;
-        if (auto t = node.find("transform")) object.transform = read_transform(*t);
-        object.name = node.has("name") ? node.at("name").string() : node.path() + " (" + type + ")";
-        return object;
-    }
-
+    // The scene's index of the mesh in the OBJ file `file_node` names, loading it the first time
+    // (the mesh shape's home calls this to read its "file" key).
     std::uint32_t mesh_index(const Node& file_node) {
         const std::string relative = file_node.string();
         if (relative.empty()) file_node.fail("must name an OBJ file");
@@ -290,6 +195,42 @@ private:
         const auto index = static_cast<std::uint32_t>(scene_.meshes.size() - 1);
         mesh_by_file_.emplace(key, index);
         return index;
+    }
+
+private:
+    Object read(const Node& node) {
+        if (!node.value().is_object()) node.fail("must be an object with a \"type\"");
+        const Node type_node = node.at("type");
+        const std::string type = type_node.string();
+        Object object;
+        bool type_found = false;
+        Shapes::for_each_home([&](auto home) {
+            using Home = decltype(home);
+            if (type_found || type != Home::kType) return;
+            type_found = true;
+            std::vector<std::string_view> keys{"type", "material", "transform", "name"};
+            keys.insert(keys.end(), Home::kKeys.begin(), Home::kKeys.end());
+            node.require_object(keys);
+            object.shape = Home::read(node, *this);
+        });
+        if (!type_found) {
+            std::string names;
+            Shapes::for_each_home([&](auto home) { names += (names.empty() ? "" : ", ") + std::string(decltype(home)::kType); });
+            type_node.fail("unknown shape type \"" + type + "\" (known: " + names + ")");
+        }
+
+        const Node material = node.at("material");
+        const std::string material_name = material.string();
+        const auto it = materials_.find(material_name);
+        if (it == materials_.end()) {
+            std::string known;
+            for (const auto& [name, index] : materials_) known += (known.empty() ? "" : ", ") + name;
+            material.fail("unknown material \"" + material_name + "\" (defined: " + (known.empty() ? "none" : known) + ")");
+        }
+        object.material = it->second;
+        if (auto t = node.find("transform")) object.transform = read_transform(*t);
+        object.name = node.has("name") ? node.at("name").string() : node.path() + " (" + type + ")";
+        return object;
     }
 
     Scene& scene_;

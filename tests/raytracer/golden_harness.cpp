@@ -124,8 +124,7 @@ RenderResult render_for_test(const Scene& scene, AccelKind accel, const GoldenSp
     options.spp = spec.test_spp;
     options.max_depth = spec.max_depth;
     options.seed = seed;
-    options.defect = defect;
-    return render(scene, *structure, options);
+    return render_with_planted_defect(scene, *structure, options, defect);
 }
 
 GoldenVerdict compare_to_golden(const GoldenSpec& spec, const RenderResult& result, const std::string& label,

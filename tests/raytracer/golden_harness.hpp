@@ -9,6 +9,7 @@
 
 #include "raytracer/accel/accel.hpp"
 #include "raytracer/image/diff.hpp"
+#include "raytracer/render/planted_defect.hpp"
 #include "raytracer/render/renderer.hpp"
 #include "raytracer/scene/scene.hpp"
 

@@ -14,7 +14,8 @@
 #include "raytracer/accel/brute_force_accel.hpp"
 #include "raytracer/accel/bvh_accel.hpp"
 #include "raytracer/accel/embree_accel.hpp"
-#include "raytracer/accel/object_bounds.hpp"
+#include "raytracer/geometry/object_space.hpp"
+#include "raytracer/geometry/shape.hpp"
 
 using namespace sweeptrace;
 

@@ -75,7 +75,7 @@ TEST_CASE("geometry: the world hit point's error bound holds the exact transform
                     std::uniform_real_distribution<float> jitter(-0.5f * scale, 0.5f * scale);
                     const glm::vec3 aim = from_inside ? dir : dir + glm::vec3(jitter(rng), jitter(rng), jitter(rng)) / (4.0f * scale);
                     SurfaceHit hit;
-                    if (!intersect_object(scene, obj, collision::Ray{origin, aim}, hit)) continue;
+                    if (!intersect_object(scene.objects, scene.meshes, obj, collision::Ray{origin, aim}, hit)) continue;
                     ++hits;
                     glm::dvec3 n;
                     const double distance = surface_distance(scene, hit, n);

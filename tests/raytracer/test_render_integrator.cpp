@@ -8,6 +8,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "raytracer/render/planted_defect.hpp"
 #include "raytracer/render/renderer.hpp"
 #include "render_test_scenes.hpp"
 #include "render_test_stats.hpp"
@@ -101,8 +102,7 @@ TEST_CASE("render: the planted NoRayOffset defect makes surfaces re-hit themselv
     const Scene s = furnace_scene(glm::vec3(0.8f), glm::vec3(1.0f));
     const BruteForceAccel accel(s);
     RenderOptions o = options(16);
-    o.defect = PlantedDefect::NoRayOffset;
-    const RenderResult r = render(s, accel, o);
+    const RenderResult r = render_with_planted_defect(s, accel, o, PlantedDefect::NoRayOffset);
     // Without offset, about half the reflected rays start inside the sphere (the point is rounded
     // to float) and re-hit it: the covered pixels go visibly darker than rho L = 0.8.
     CHECK(r.image.at(8, 8).r < 0.76f);
@@ -281,8 +281,7 @@ TEST_CASE("render: the planted FlippedNormals defect turns one-sided lights away
     const BruteForceAccel accel(s);
     RenderOptions o = options(8, 2);
     const double good = image_mean(render(s, accel, o).image).g;
-    o.defect = PlantedDefect::FlippedNormals;
-    const double bad = image_mean(render(s, accel, o).image).g;
+    const double bad = image_mean(render_with_planted_defect(s, accel, o, PlantedDefect::FlippedNormals).image).g;
     // Both lights emit from their fronts only; with every normal inward the quad light shines up
     // (onto the wall above it only) and the sphere light into itself: the image goes nearly black.
     INFO("mean green: " << good << " -> " << bad);

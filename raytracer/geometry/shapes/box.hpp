@@ -1,0 +1,55 @@
+#pragma once
+// The box's home in the renderer: scene keys, object-space bounds, light sampling.
+// Intersection: collision/intersect_aabb.cpp.
+#include <array>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "collision/bvh.hpp"
+#include "collision/shapes.hpp"
+#include "raytracer/geometry/shapes/mesh_instance.hpp"
+#include "raytracer/geometry/shapes/scene_keys.hpp"
+#include "raytracer/geometry/shapes/shape_light.hpp"
+
+namespace sweeptrace {
+
+struct BoxShape {
+    using Geometry = collision::Aabb;
+    static constexpr std::string_view kType = "box";
+    static constexpr std::array<std::string_view, 4> kKeys{"center", "size", "min", "max"};
+    template <class Node, class Loader>
+    static Geometry read(const Node& node, Loader&);
+
+    static collision::Bounds3 object_bounds(const Geometry& g);
+    // ObjectArea: a face chosen by area, then uniform on it.
+    static ShapeLight light(const Geometry& g, const Transform& xf, const std::vector<Mesh>& meshes);
+    static void sample(const Geometry& g, const ShapeLight& l, float u_part, float u1, float u2, SurfacePoint& out);
+};
+
+template <class Node, class Loader>
+BoxShape::Geometry BoxShape::read(const Node& node, Loader&) {
+    const bool by_center = node.has("center") || node.has("size");
+    const bool by_bounds = node.has("min") || node.has("max");
+    if (by_center == by_bounds) node.fail("give either \"center\" and \"size\", or \"min\" and \"max\"");
+    Geometry box;
+    if (by_center) {
+        box.center = scene_keys::center_or_origin(node);
+        box.size = scene_keys::positive_vec3(node.at("size"));
+    } else {
+        const auto min = node.at("min");
+        const glm::vec3 lo = min.vec3();
+        const auto max = node.at("max");
+        const glm::vec3 hi = max.vec3();
+        for (int k = 0; k < 3; ++k)
+            if (!(hi[k] > lo[k]))
+                max.element(static_cast<std::size_t>(k))
+                    .fail("must be > min[" + std::to_string(k) + "] (" +
+                          min.element(static_cast<std::size_t>(k)).shown() + ")");
+        box.center = 0.5f * (lo + hi);
+        box.size = hi - lo;
+    }
+    return box;
+}
+
+}  // namespace sweeptrace

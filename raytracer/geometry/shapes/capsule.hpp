@@ -1,0 +1,36 @@
+#pragma once
+// The capsule's home in the renderer: scene keys, object-space bounds, light sampling.
+// Intersection: collision/intersect_capsule.cpp.
+#include <array>
+#include <string_view>
+#include <vector>
+
+#include "collision/bvh.hpp"
+#include "collision/shapes.hpp"
+#include "raytracer/geometry/shapes/mesh_instance.hpp"
+#include "raytracer/geometry/shapes/scene_keys.hpp"
+#include "raytracer/geometry/shapes/shape_light.hpp"
+
+namespace sweeptrace {
+
+struct CapsuleShape {
+    using Geometry = collision::Capsule;
+    static constexpr std::string_view kType = "capsule";
+    static constexpr std::array<std::string_view, 3> kKeys{"center", "radius", "height"};
+    template <class Node, class Loader>
+    static Geometry read(const Node& node, Loader&);
+
+    static collision::Bounds3 object_bounds(const Geometry& g);
+    // ObjectArea: side or the two hemispheres chosen by area, then uniform.
+    static ShapeLight light(const Geometry& g, const Transform& xf, const std::vector<Mesh>& meshes);
+    static void sample(const Geometry& g, const ShapeLight& l, float u_part, float u1, float u2, SurfacePoint& out);
+};
+
+template <class Node, class Loader>
+CapsuleShape::Geometry CapsuleShape::read(const Node& node, Loader&) {
+    // height 0 is a sphere: allowed, the hemispheres alone close it.
+    return {scene_keys::center_or_origin(node), node.at("radius").number_at_least(0.0f, false),
+            node.at("height").number_at_least(0.0f, true)};
+}
+
+}  // namespace sweeptrace

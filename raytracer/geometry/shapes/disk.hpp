@@ -1,0 +1,36 @@
+#pragma once
+// The disk's home in the renderer: scene keys, object-space bounds, light sampling.
+// Intersection: collision/intersect_disk.cpp.
+#include <array>
+#include <string_view>
+#include <vector>
+
+#include "collision/bvh.hpp"
+#include "collision/shapes.hpp"
+#include "raytracer/geometry/shapes/mesh_instance.hpp"
+#include "raytracer/geometry/shapes/scene_keys.hpp"
+#include "raytracer/geometry/shapes/shape_light.hpp"
+
+namespace sweeptrace {
+
+struct DiskShape {
+    using Geometry = collision::Disk;
+    static constexpr std::string_view kType = "disk";
+    static constexpr std::array<std::string_view, 3> kKeys{"center", "normal", "radius"};
+    template <class Node, class Loader>
+    static Geometry read(const Node& node, Loader&);
+
+    static collision::Bounds3 object_bounds(const Geometry& g);
+    // WorldArea: the unit disk's image is an ellipse c + x U + y V, U and V the images of two orthogonal radii; uniform on the disk stays uniform on the ellipse.
+    static ShapeLight light(const Geometry& g, const Transform& xf, const std::vector<Mesh>& meshes);
+    static void sample(const Geometry& g, const ShapeLight& l, float u_part, float u1, float u2, SurfacePoint& out);
+};
+
+template <class Node, class Loader>
+DiskShape::Geometry DiskShape::read(const Node& node, Loader&) {
+    glm::vec3 normal(0.0f, 1.0f, 0.0f);
+    if (auto n = node.find("normal")) normal = glm::vec3(glm::normalize(glm::dvec3(n->nonzero_vec3())));
+    return {scene_keys::center_or_origin(node), normal, node.at("radius").number_at_least(0.0f, false)};
+}
+
+}  // namespace sweeptrace

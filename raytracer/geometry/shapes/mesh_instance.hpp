@@ -1,0 +1,47 @@
+#pragma once
+// A triangle mesh and its instances: the mesh's home in the renderer (scene keys, light
+// sampling). A mesh is shared by every object that instances it (two-level acceleration: a
+// transformed mesh is not copied); its bounds come from its own bottom-level BVH (accel/), and
+// its triangles are intersected by collision/intersect_triangle.cpp.
+#include <array>
+#include <cstdint>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+#include "collision/bvh.hpp"
+#include "collision/mesh.hpp"
+#include "raytracer/geometry/shapes/shape_light.hpp"
+
+namespace sweeptrace {
+
+struct Mesh {
+    collision::TriangleMesh triangles;
+    std::vector<glm::vec3> vertex_normals;  // empty, or one per vertex (smooth shading)
+    std::string source;                     // file it came from, for messages
+};
+
+struct MeshInstance {
+    std::uint32_t mesh = 0;  // index into the scene's meshes
+};
+
+struct MeshInstanceShape {
+    using Geometry = MeshInstance;
+    static constexpr std::string_view kType = "mesh";
+    static constexpr std::array<std::string_view, 1> kKeys{"file"};
+    // The loader resolves and loads the file (scene/), once however many objects instance it.
+    template <class Node, class Loader>
+    static Geometry read(const Node& node, Loader& loader) {
+        return {loader.mesh_index(node.at("file"))};
+    }
+
+    // Not analytic: empty. The acceleration structures box a mesh by its own BVH.
+    static collision::Bounds3 object_bounds(const Geometry&) { return {}; }
+    // MeshArea: a triangle chosen by world area, then uniformly on it (uniform over the surface).
+    static ShapeLight light(const Geometry& m, const Transform& xf, const std::vector<Mesh>& meshes);
+    static void sample(const Geometry& m, const ShapeLight& l, float u_part, float u1, float u2, SurfacePoint& out);
+};
+
+}  // namespace sweeptrace

@@ -1,0 +1,37 @@
+#pragma once
+// The quad's home in the renderer: scene keys, object-space bounds, light sampling.
+// Intersection: collision/intersect_quad.cpp.
+#include <array>
+#include <string_view>
+#include <vector>
+
+#include "collision/bvh.hpp"
+#include "collision/shapes.hpp"
+#include "raytracer/geometry/shapes/mesh_instance.hpp"
+#include "raytracer/geometry/shapes/scene_keys.hpp"
+#include "raytracer/geometry/shapes/shape_light.hpp"
+
+namespace sweeptrace {
+
+struct QuadShape {
+    using Geometry = collision::Quad;
+    static constexpr std::string_view kType = "quad";
+    static constexpr std::array<std::string_view, 3> kKeys{"corner", "edge_u", "edge_v"};
+    template <class Node, class Loader>
+    static Geometry read(const Node& node, Loader&);
+
+    static collision::Bounds3 object_bounds(const Geometry& g);
+    // WorldArea: uniform on the world parallelogram.
+    static ShapeLight light(const Geometry& g, const Transform& xf, const std::vector<Mesh>& meshes);
+    static void sample(const Geometry& g, const ShapeLight& l, float u_part, float u1, float u2, SurfacePoint& out);
+};
+
+template <class Node, class Loader>
+QuadShape::Geometry QuadShape::read(const Node& node, Loader&) {
+    const Geometry q{node.at("corner").vec3(), node.at("edge_u").vec3(), node.at("edge_v").vec3()};
+    if (scene_keys::parallel(q.edge_u, q.edge_v))
+        node.fail("edge_u and edge_v must not be parallel (or zero): the quad has no area");
+    return q;
+}
+
+}  // namespace sweeptrace

@@ -1,0 +1,32 @@
+#pragma once
+// The sphere's home in the renderer: scene keys, object-space bounds, light sampling.
+// Intersection: collision/intersect_sphere.cpp.
+#include <array>
+#include <string_view>
+#include <vector>
+
+#include "collision/bvh.hpp"
+#include "collision/shapes.hpp"
+#include "raytracer/geometry/shapes/mesh_instance.hpp"
+#include "raytracer/geometry/shapes/scene_keys.hpp"
+#include "raytracer/geometry/shapes/shape_light.hpp"
+
+namespace sweeptrace {
+
+struct SphereShape {
+    using Geometry = collision::Sphere;
+    static constexpr std::string_view kType = "sphere";
+    static constexpr std::array<std::string_view, 2> kKeys{"center", "radius"};
+    template <class Node, class Loader>
+    static Geometry read(const Node& node, Loader&) {
+        return {scene_keys::center_or_origin(node), node.at("radius").number_at_least(0.0f, false)};
+    }
+
+    static collision::Bounds3 object_bounds(const Geometry& s);
+    // Under a similarity (uniform scale, rotation, translation): SphereCone, else ObjectArea.
+    static ShapeLight light(const Geometry& s, const Transform& xf, const std::vector<Mesh>& meshes);
+    // SphereCone: uniform by area on the world sphere; ObjectArea: on the object sphere.
+    static void sample(const Geometry& s, const ShapeLight& l, float u_part, float u1, float u2, SurfacePoint& out);
+};
+
+}  // namespace sweeptrace

@@ -1,0 +1,37 @@
+#pragma once
+// The triangle's home in the renderer: scene keys, object-space bounds, light sampling.
+// Intersection: collision/intersect_triangle.cpp.
+#include <array>
+#include <string_view>
+#include <vector>
+
+#include "collision/bvh.hpp"
+#include "collision/shapes.hpp"
+#include "raytracer/geometry/shapes/mesh_instance.hpp"
+#include "raytracer/geometry/shapes/scene_keys.hpp"
+#include "raytracer/geometry/shapes/shape_light.hpp"
+
+namespace sweeptrace {
+
+struct TriangleShape {
+    using Geometry = collision::Triangle;
+    static constexpr std::string_view kType = "triangle";
+    static constexpr std::array<std::string_view, 3> kKeys{"a", "b", "c"};
+    template <class Node, class Loader>
+    static Geometry read(const Node& node, Loader&);
+
+    static collision::Bounds3 object_bounds(const Geometry& g);
+    // WorldArea: uniform on the world triangle.
+    static ShapeLight light(const Geometry& g, const Transform& xf, const std::vector<Mesh>& meshes);
+    static void sample(const Geometry& g, const ShapeLight& l, float u_part, float u1, float u2, SurfacePoint& out);
+};
+
+template <class Node, class Loader>
+TriangleShape::Geometry TriangleShape::read(const Node& node, Loader&) {
+    const Geometry t{node.at("a").vec3(), node.at("b").vec3(), node.at("c").vec3()};
+    if (scene_keys::parallel(glm::dvec3(t.b) - glm::dvec3(t.a), glm::dvec3(t.c) - glm::dvec3(t.a)))
+        node.fail("a, b and c are collinear: the triangle has no area");
+    return t;
+}
+
+}  // namespace sweeptrace

@@ -1,0 +1,15 @@
+#pragma once
+// A test seam, kept out of the renderer's public header: defects planted on purpose, for the
+// golden-image mutation tests only. They show that the image tests reject a renderer with this
+// bug. Nothing in the program sets them; only tests call render_with_planted_defect.
+#include "raytracer/render/renderer.hpp"
+
+namespace sweeptrace {
+
+enum class PlantedDefect { None, FlippedNormals, NoRayOffset };
+
+// render() with `defect` planted in the light sampler and the integrator.
+RenderResult render_with_planted_defect(const Scene& scene, const Accel& accel, const RenderOptions& options,
+                                        PlantedDefect defect);
+
+}  // namespace sweeptrace
