@@ -44,16 +44,8 @@ bool parse_family(const std::string& name, Family& out) {
     return false;
 }
 
-template <> const char* shape_name<collision::Sphere>() { return "sphere"; }
-template <> const char* shape_name<collision::Aabb>() { return "box"; }
-template <> const char* shape_name<collision::Cylinder>() { return "cylinder"; }
-template <> const char* shape_name<collision::Capsule>() { return "capsule"; }
 template <> const char* shape_name<collision::OrientedCapsule>() { return "oriented-capsule"; }
-template <> const char* shape_name<collision::Ellipsoid>() { return "ellipsoid"; }
 template <> const char* shape_name<collision::Plane>() { return "plane"; }
-template <> const char* shape_name<collision::Disk>() { return "disk"; }
-template <> const char* shape_name<collision::Quad>() { return "quad"; }
-template <> const char* shape_name<collision::Triangle>() { return "triangle"; }
 
 glm::vec3 offset_origin(const vec3& p, const vec3& error, const vec3& normal, const vec3& dir) {
     const float d = glm::dot(glm::abs(normal), error);

@@ -9,6 +9,7 @@
 #include "collision/mesh.hpp"
 #include "collision/ray.hpp"
 #include "collision/shapes.hpp"
+#include "raytracer/geometry/shape.hpp"
 
 namespace sweeptrace::accuracy {
 
@@ -72,8 +73,17 @@ collision::TriangleMesh icosphere_mesh(int level, const glm::vec3& center, float
 template <class Shape>
 bool shape_is_closed();
 
+// A shape's name in tables and on the command line: a scene shape's type name from its home
+// (geometry/shapes/), so the harness and scene files agree; the two collision-only shapes
+// (plane, oriented capsule) name themselves in cases.cpp.
 template <class Shape>
-const char* shape_name();
+const char* shape_name() {
+    return Shapes::HomeOf<Shape>::kType.data();
+}
+template <>
+const char* shape_name<collision::Plane>();
+template <>
+const char* shape_name<collision::OrientedCapsule>();
 
 // A uniformly distributed unit vector.
 glm::vec3 unit_vector(Rng& rng);

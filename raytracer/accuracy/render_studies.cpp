@@ -66,7 +66,7 @@ Scene study_scene(const Shape& shape, int width) {
 }
 
 template <class S>
-void study_shape(const char* name, const S& shape, int size, int spp, int reference_spp, int max_exponent,
+void study_shape(const S& shape, int size, int spp, int reference_spp, int max_exponent,
                  unsigned seed, std::vector<TessellationRow>& rows) {
     const Scene analytic = study_scene(shape, size);
     const Timed reference = render_timed(analytic, AccelKind::Bvh, reference_spp, Sampling::NeeMis, seed + 1);
@@ -75,7 +75,7 @@ void study_shape(const char* name, const S& shape, int size, int spp, int refere
         const Timed t = render_timed(analytic, kind, spp, Sampling::NeeMis, seed);
         if (kind == AccelKind::Bvh) analytic_image = t.result.image;
         TessellationRow row;
-        row.shape = name;
+        row.shape = std::string(Shapes::HomeOf<S>::kType);
         row.representation = "analytic";
         row.accel = kind == AccelKind::Bvh ? "bvh" : "embree";
         row.seconds = t.seconds;
@@ -92,7 +92,7 @@ void study_shape(const char* name, const S& shape, int size, int spp, int refere
         for (AccelKind kind : {AccelKind::Bvh, AccelKind::Embree}) {
             const Timed t = render_timed(meshed, kind, spp, Sampling::NeeMis, seed);
             TessellationRow row;
-            row.shape = name;
+            row.shape = std::string(Shapes::HomeOf<S>::kType);
             row.representation = "mesh";
             row.accel = kind == AccelKind::Bvh ? "bvh" : "embree";
             row.triangles = m.triangles.triangle_count();
@@ -112,12 +112,12 @@ void study_shape(const char* name, const S& shape, int size, int spp, int refere
 
 std::vector<TessellationRow> tessellation_study(int size, int spp, int reference_spp, int max_exponent, unsigned seed) {
     std::vector<TessellationRow> rows;
-    study_shape("sphere", collision::Sphere{{0.0f, 0.0f, 0.0f}, 1.0f}, size, spp, reference_spp, max_exponent, seed, rows);
-    study_shape("cylinder", collision::Cylinder{{0.0f, 0.0f, 0.0f}, 0.8f, 1.8f}, size, spp, reference_spp, max_exponent,
+    study_shape(collision::Sphere{{0.0f, 0.0f, 0.0f}, 1.0f}, size, spp, reference_spp, max_exponent, seed, rows);
+    study_shape(collision::Cylinder{{0.0f, 0.0f, 0.0f}, 0.8f, 1.8f}, size, spp, reference_spp, max_exponent,
                 seed, rows);
-    study_shape("capsule", collision::Capsule{{0.0f, 0.0f, 0.0f}, 0.6f, 0.8f}, size, spp, reference_spp, max_exponent,
+    study_shape(collision::Capsule{{0.0f, 0.0f, 0.0f}, 0.6f, 0.8f}, size, spp, reference_spp, max_exponent,
                 seed, rows);
-    study_shape("ellipsoid", collision::Ellipsoid{{0.0f, 0.0f, 0.0f}, {1.3f, 0.7f, 0.9f}}, size, spp, reference_spp,
+    study_shape(collision::Ellipsoid{{0.0f, 0.0f, 0.0f}, {1.3f, 0.7f, 0.9f}}, size, spp, reference_spp,
                 max_exponent, seed, rows);
     return rows;
 }
