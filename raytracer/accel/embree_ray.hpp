@@ -1,5 +1,6 @@
 #pragma once
-// collision::Ray -> Embree's ray, for the Embree files only (this header includes embree3/).
+// The one file that includes Embree (embree3/), and collision::Ray -> Embree's ray; the other
+// Embree files include this header, so the API has a single entry point to check.
 #include <limits>
 
 #include <embree3/rtcore.h>
