@@ -80,12 +80,13 @@ private:
         float probability = 0.0f;  // selection probability
         const Material* material = nullptr;
         ShapeLight shape;          // what the object's shape home set up (geometry/shapes/)
+        const Shape* geometry = nullptr;
+        void (*sample_surface)(const Shape&, const ShapeLight&, float, float, float, SurfacePoint&) = nullptr;
     };
 
     bool sample_cone(const Light& l, const glm::vec3& p, std::uint32_t p_object, float u1, float u2, LightSample& out,
                      bool& sampled) const;
-    void sample_area(const Light& l, float u_part, float u1, float u2, glm::vec3& q, glm::vec3& n, glm::vec3& err,
-                     float& area_pdf) const;
+    float sample_area(const Light& l, float u_part, float u1, float u2, SurfacePoint& world) const;
 
     const Scene* scene_ = nullptr;
     float normal_sign_ = 1.0f;                  // -1 under PlantedDefect::FlippedNormals

@@ -38,11 +38,5 @@ ShapeLight DiskShape::light(const Geometry& d, const Transform& xf, const std::v
     return l;
 }
 
-void DiskShape::sample(const Geometry&, const ShapeLight& l, float, float u1, float u2, SurfacePoint& out) {
-    const glm::vec2 c = concentric_disk(u1, u2);
-    out.point = l.origin + c.x * l.edge_u + c.y * l.edge_v;
-    out.normal = l.normal;
-    out.error = gamma(3) * (glm::abs(l.origin) + glm::abs(l.edge_u) + glm::abs(l.edge_v));
-}
 
 }  // namespace sweeptrace

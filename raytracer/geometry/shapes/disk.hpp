@@ -6,10 +6,12 @@
 #include <vector>
 
 #include "collision/bvh.hpp"
+#include "collision/float_error.hpp"
 #include "collision/shapes.hpp"
 #include "raytracer/geometry/shapes/mesh_instance.hpp"
 #include "raytracer/geometry/shapes/scene_keys.hpp"
 #include "raytracer/geometry/shapes/shape_light.hpp"
+#include "raytracer/geometry/warps.hpp"
 
 namespace sweeptrace {
 
@@ -31,6 +33,14 @@ DiskShape::Geometry DiskShape::read(const Node& node, Loader&) {
     glm::vec3 normal(0.0f, 1.0f, 0.0f);
     if (auto n = node.find("normal")) normal = glm::vec3(glm::normalize(glm::dvec3(n->nonzero_vec3())));
     return {scene_keys::center_or_origin(node), normal, node.at("radius").number_at_least(0.0f, false)};
+}
+
+// Inline: called once per light sample, through visit_shape.
+inline void DiskShape::sample(const Geometry&, const ShapeLight& l, float, float u1, float u2, SurfacePoint& out) {
+    const glm::vec2 c = concentric_disk(u1, u2);
+    out.point = l.origin + c.x * l.edge_u + c.y * l.edge_v;
+    out.normal = l.normal;
+    out.error = collision::gamma(3) * (glm::abs(l.origin) + glm::abs(l.edge_u) + glm::abs(l.edge_v));
 }
 
 }  // namespace sweeptrace

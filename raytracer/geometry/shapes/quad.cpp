@@ -30,10 +30,5 @@ ShapeLight QuadShape::light(const Geometry& q, const Transform& xf, const std::v
     return l;
 }
 
-void QuadShape::sample(const Geometry&, const ShapeLight& l, float, float u1, float u2, SurfacePoint& out) {
-    out.point = l.origin + u1 * l.edge_u + u2 * l.edge_v;
-    out.normal = l.normal;
-    out.error = gamma(3) * (glm::abs(l.origin) + glm::abs(l.edge_u) + glm::abs(l.edge_v));
-}
 
 }  // namespace sweeptrace

@@ -6,10 +6,12 @@
 #include <vector>
 
 #include "collision/bvh.hpp"
+#include "collision/float_error.hpp"
 #include "collision/shapes.hpp"
 #include "raytracer/geometry/shapes/mesh_instance.hpp"
 #include "raytracer/geometry/shapes/scene_keys.hpp"
 #include "raytracer/geometry/shapes/shape_light.hpp"
+#include "raytracer/geometry/warps.hpp"
 
 namespace sweeptrace {
 
@@ -32,6 +34,13 @@ QuadShape::Geometry QuadShape::read(const Node& node, Loader&) {
     if (scene_keys::parallel(q.edge_u, q.edge_v))
         node.fail("edge_u and edge_v must not be parallel (or zero): the quad has no area");
     return q;
+}
+
+// Inline: called once per light sample, through visit_shape.
+inline void QuadShape::sample(const Geometry&, const ShapeLight& l, float, float u1, float u2, SurfacePoint& out) {
+    out.point = l.origin + u1 * l.edge_u + u2 * l.edge_v;
+    out.normal = l.normal;
+    out.error = collision::gamma(3) * (glm::abs(l.origin) + glm::abs(l.edge_u) + glm::abs(l.edge_v));
 }
 
 }  // namespace sweeptrace

@@ -50,15 +50,5 @@ ShapeLight SphereShape::light(const Geometry& s, const Transform& xf, const std:
     return l;
 }
 
-void SphereShape::sample(const Geometry& s, const ShapeLight& l, float, float u1, float u2, SurfacePoint& out) {
-    out.normal = uniform_sphere(u1, u2);
-    if (l.strategy == ShapeLight::Strategy::SphereCone) {
-        out.point = l.origin + l.radius * out.normal;
-        out.error = gamma(5) * (glm::abs(l.origin) + glm::vec3(l.radius));
-    } else {
-        out.point = s.center + s.radius * out.normal;
-        out.error = gamma(3) * (glm::abs(s.center) + glm::vec3(s.radius));
-    }
-}
 
 }  // namespace sweeptrace

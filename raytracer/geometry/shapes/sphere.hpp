@@ -6,10 +6,12 @@
 #include <vector>
 
 #include "collision/bvh.hpp"
+#include "collision/float_error.hpp"
 #include "collision/shapes.hpp"
 #include "raytracer/geometry/shapes/mesh_instance.hpp"
 #include "raytracer/geometry/shapes/scene_keys.hpp"
 #include "raytracer/geometry/shapes/shape_light.hpp"
+#include "raytracer/geometry/warps.hpp"
 
 namespace sweeptrace {
 
@@ -28,5 +30,17 @@ struct SphereShape {
     // SphereCone: uniform by area on the world sphere; ObjectArea: on the object sphere.
     static void sample(const Geometry& s, const ShapeLight& l, float u_part, float u1, float u2, SurfacePoint& out);
 };
+
+// Inline: called once per light sample, through visit_shape.
+inline void SphereShape::sample(const Geometry& s, const ShapeLight& l, float, float u1, float u2, SurfacePoint& out) {
+    out.normal = uniform_sphere(u1, u2);
+    if (l.strategy == ShapeLight::Strategy::SphereCone) {
+        out.point = l.origin + l.radius * out.normal;
+        out.error = collision::gamma(5) * (glm::abs(l.origin) + glm::vec3(l.radius));
+    } else {
+        out.point = s.center + s.radius * out.normal;
+        out.error = collision::gamma(3) * (glm::abs(s.center) + glm::vec3(s.radius));
+    }
+}
 
 }  // namespace sweeptrace

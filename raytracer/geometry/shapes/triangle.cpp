@@ -29,12 +29,5 @@ ShapeLight TriangleShape::light(const Geometry& t, const Transform& xf, const st
     return l;
 }
 
-void TriangleShape::sample(const Geometry&, const ShapeLight& l, float, float u1, float u2, SurfacePoint& out) {
-    const glm::vec2 b = uniform_triangle(u1, u2);
-    // Barycentrics (b0, b1) of a and b: point = a + b1 (b - a) + (1 - b0 - b1) (c - a).
-    out.point = l.origin + b.y * l.edge_u + (1.0f - b.x - b.y) * l.edge_v;
-    out.normal = l.normal;
-    out.error = gamma(4) * (glm::abs(l.origin) + glm::abs(l.edge_u) + glm::abs(l.edge_v));
-}
 
 }  // namespace sweeptrace

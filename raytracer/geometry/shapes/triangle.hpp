@@ -6,10 +6,12 @@
 #include <vector>
 
 #include "collision/bvh.hpp"
+#include "collision/float_error.hpp"
 #include "collision/shapes.hpp"
 #include "raytracer/geometry/shapes/mesh_instance.hpp"
 #include "raytracer/geometry/shapes/scene_keys.hpp"
 #include "raytracer/geometry/shapes/shape_light.hpp"
+#include "raytracer/geometry/warps.hpp"
 
 namespace sweeptrace {
 
@@ -32,6 +34,15 @@ TriangleShape::Geometry TriangleShape::read(const Node& node, Loader&) {
     if (scene_keys::parallel(glm::dvec3(t.b) - glm::dvec3(t.a), glm::dvec3(t.c) - glm::dvec3(t.a)))
         node.fail("a, b and c are collinear: the triangle has no area");
     return t;
+}
+
+// Inline: called once per light sample, through visit_shape.
+inline void TriangleShape::sample(const Geometry&, const ShapeLight& l, float, float u1, float u2, SurfacePoint& out) {
+    const glm::vec2 b = uniform_triangle(u1, u2);
+    // Barycentrics (b0, b1) of a and b: point = a + b1 (b - a) + (1 - b0 - b1) (c - a).
+    out.point = l.origin + b.y * l.edge_u + (1.0f - b.x - b.y) * l.edge_v;
+    out.normal = l.normal;
+    out.error = collision::gamma(4) * (glm::abs(l.origin) + glm::abs(l.edge_u) + glm::abs(l.edge_v));
 }
 
 }  // namespace sweeptrace
