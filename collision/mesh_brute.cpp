@@ -5,7 +5,7 @@
 
 #include "collision/mesh_mesh.hpp"
 #include "collision/overlap.hpp"
-#include "collision/overlap_common.hpp"
+#include "collision/detail/overlap_common.hpp"
 
 namespace collision {
 
