@@ -23,6 +23,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "collision/bounds3.hpp"
 #include "collision/bvh.hpp"
 #include "collision/hit.hpp"
 #include "collision/mesh.hpp"

@@ -8,7 +8,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "collision/bvh.hpp"
+#include "collision/bounds3.hpp"
 #include "collision/hit.hpp"
 #include "collision/mesh.hpp"
 #include "collision/ray.hpp"

@@ -1,7 +1,7 @@
 #pragma once
 // World-space boxes of scene objects, for the top level of the BVH and for Embree's user
 // geometry. Conservative: each box holds the exact transformed surface.
-#include "collision/bvh.hpp"
+#include "collision/bounds3.hpp"
 #include "raytracer/geometry/object.hpp"
 
 namespace sweeptrace {
