@@ -5,13 +5,13 @@
 
 #include "collision/mesh_mesh.hpp"
 #include "collision/overlap.hpp"
-#include "collision/detail/overlap_common.hpp"
+#include "collision/finite.hpp"
 
 namespace collision {
 
 void validate_mesh(const TriangleMesh& m, const char* name) {
     for (std::size_t i = 0; i < m.vertices.size(); ++i)
-        if (!detail::finite(m.vertices[i]))
+        if (!finite(m.vertices[i]))
             throw std::invalid_argument(std::string(name) + ": vertex " + std::to_string(i) + " is not finite");
     for (std::size_t i = 0; i < m.indices.size(); ++i)
         for (int k = 0; k < 3; ++k)

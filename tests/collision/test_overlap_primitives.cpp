@@ -7,6 +7,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "collision/finite.hpp"
 #include "collision/overlap.hpp"
 #include "random_cases.hpp"
 
@@ -15,8 +16,6 @@ using namespace collision;
 namespace {
 const float qnan = std::numeric_limits<float>::quiet_NaN();
 const float qinf = std::numeric_limits<float>::infinity();
-
-bool finite(const glm::vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 
 // After moving the first shape by its displacement (plus a hair, 1e-4 relative, so rounding of
 // the moved centre, a few float ulps, cannot leave it touching) the pair must no longer overlap, and

@@ -8,6 +8,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "collision/finite.hpp"
 #include "collision/overlap.hpp"
 #include "random_cases.hpp"
 
@@ -41,7 +42,6 @@ lvec reference_closest(const Triangle& t, const glm::vec3& pf) {
     return best;
 }
 
-bool finite(const glm::vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 }  // namespace
 
 TEST_CASE("closest point on triangle: every Voronoi region, and a long double reference", "[overlap][closest]") {
