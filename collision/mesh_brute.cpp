@@ -21,18 +21,6 @@ void validate_mesh(const TriangleMesh& m, const char* name) {
                                             std::to_string(m.vertices.size()));
 }
 
-Bounds3 triangle_bounds(const TriangleMesh& m, std::size_t i) {
-    Bounds3 b;
-    for (int k = 0; k < 3; ++k) b.extend(m.vertices[m.indices[i][k]]);
-    return b;
-}
-
-Bounds3 mesh_bounds(const TriangleMesh& m) {
-    Bounds3 b;
-    for (std::size_t i = 0; i < m.indices.size(); ++i) b.extend(triangle_bounds(m, i));
-    return b;
-}
-
 bool boxes_overlap(const Bounds3& a, const Bounds3& b) {
     return a.lo.x <= b.hi.x && b.lo.x <= a.hi.x && a.lo.y <= b.hi.y && b.lo.y <= a.hi.y && a.lo.z <= b.hi.z &&
            b.lo.z <= a.hi.z;

@@ -18,7 +18,7 @@ BvhAccel::BvhAccel(const Scene& scene) : scene_(scene), meshes_(scene.meshes.siz
         collision::Bounds3 local;
         if (const auto* instance = std::get_if<MeshInstance>(&object.shape)) {
             auto& mesh = meshes_[instance->mesh];
-            if (!mesh) mesh = std::make_unique<MeshBvh>(scene.meshes[instance->mesh].triangles);
+            if (!mesh) mesh = std::make_unique<MeshRayBvh>(scene.meshes[instance->mesh].triangles);
             local = mesh->bounds();
         } else {
             local = object_space_bounds(object.shape);
@@ -93,7 +93,7 @@ bool BvhAccel::occluded(const collision::Ray& ray) const {
 std::size_t BvhAccel::memory_bytes() const {
     std::size_t bytes = sizeof(*this) + top_.memory_bytes() + meshes_.capacity() * sizeof(meshes_[0]);
     for (const auto& m : meshes_)
-        if (m) bytes += sizeof(MeshBvh) + m->memory_bytes();
+        if (m) bytes += sizeof(MeshRayBvh) + m->memory_bytes();
     return bytes;
 }
 
