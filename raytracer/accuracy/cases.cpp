@@ -34,16 +34,6 @@ const char* family_name(Family f) {
     return "?";
 }
 
-bool parse_family(const std::string& name, Family& out) {
-    for (Family f : all_families) {
-        if (name == family_name(f)) {
-            out = f;
-            return true;
-        }
-    }
-    return false;
-}
-
 template <> const char* shape_name<collision::Sphere>() { return "sphere"; }
 template <> const char* shape_name<collision::Aabb>() { return "box"; }
 template <> const char* shape_name<collision::Cylinder>() { return "cylinder"; }

@@ -29,7 +29,6 @@ inline constexpr Family all_families[] = {Family::Uniform,    Family::Grazing,  
                                           Family::SurfaceIn,  Family::Parallel,  Family::Edges};
 
 const char* family_name(Family f);
-bool parse_family(const std::string& name, Family& out);
 
 using Rng = std::mt19937_64;
 
