@@ -30,7 +30,7 @@ inline constexpr Family all_families[] = {Family::Uniform,    Family::Grazing,  
 
 const char* family_name(Family f);
 
-using Rng = std::mt19937_64;
+using CaseRng = std::mt19937_64;
 
 template <class Shape>
 struct Case {
@@ -75,7 +75,7 @@ template <class Shape>
 const char* shape_name();
 
 // A uniformly distributed unit vector.
-glm::vec3 unit_vector(Rng& rng);
+glm::vec3 unit_vector(CaseRng& rng);
 
 // pbrt's origin offset for a secondary ray: move `p` along the normal by the projection of its
 // error bound, toward the side `dir` points to, then one float further away in each component.

@@ -78,7 +78,7 @@ std::vector<StructureRow> measure_structures(int min_level, int max_level, std::
     std::vector<StructureRow> rows;
     for (int level = min_level; level <= max_level; ++level) {
         const collision::TriangleMesh mesh = icosphere_mesh(level, glm::vec3(0.125f, -0.25f, 0.375f), 1.0f);
-        Rng rng(seed + std::uint64_t(level));
+        CaseRng rng(seed + std::uint64_t(level));
         std::uniform_real_distribution<float> u(-1.0f, 1.0f);
         std::vector<Ray> rays(max_rays);
         for (auto& r : rays) {

@@ -47,7 +47,7 @@ bool inside_convex(const TriangleMesh& m, const glm::vec3& p) {
     return true;
 }
 
-glm::quat random_rotation(testing::Rng& rng) {
+glm::quat random_rotation(testing::SeededRng& rng) {
     const glm::vec3 axis = glm::normalize(rng.vec(-1, 1) + glm::vec3(1e-3f));
     return glm::angleAxis(rng.uniform(0.0f, 6.2831853f), axis);
 }
@@ -56,7 +56,7 @@ glm::quat random_rotation(testing::Rng& rng) {
 
 TEST_CASE("mesh-mesh: SAT, brute force, octants and BVH agree on a shared set", "[mesh]") {
     const std::vector<Fixture> set = shared_set();
-    testing::Rng rng(99);
+    testing::SeededRng rng(99);
     int touching = 0, apart = 0, sat_checked = 0, thesis_octant_misses = 0;
     for (int trial = 0; trial < 400; ++trial) {
         const Fixture& fa = set[rng.integer(0, int(set.size()) - 1)];
@@ -122,7 +122,7 @@ TEST_CASE("mesh-mesh: SAT with face normals only (the thesis's axes) reports an 
     const TriangleMesh a = testing::box_mesh({0.5f, 0.5f, 0.5f});
     const glm::quat q = glm::angleAxis(0.78539816f, glm::vec3(0, 1, 0)) * glm::angleAxis(0.78539816f, glm::vec3(1, 0, 0));
     int found = 0;
-    testing::Rng rng(12);
+    testing::SeededRng rng(12);
     for (int i = 0; i < 2000 && found < 5; ++i) {
         const TriangleMesh b = testing::transformed(testing::box_mesh({0.5f, 0.5f, 0.5f}), q, rng.vec(-1.6f, 1.6f));
         const bool exact = overlap_sat(a, b, SatAxes::faces_and_edges).hit;

@@ -140,7 +140,7 @@ TEST_CASE("capsule-capsule: side, hemisphere, coaxial, tangent, degenerate", "[o
 }
 
 TEST_CASE("primitive pairs: the displacement separates and is minimal along itself (random)", "[overlap][random]") {
-    testing::Rng rng(1234);
+    testing::SeededRng rng(1234);
     int hits = 0;
     for (int i = 0; i < 4000; ++i) {
         const glm::vec3 p = rng.vec(-2, 2), q = rng.vec(-2, 2);

@@ -61,20 +61,20 @@ Crossings crossings(const vec3l& o, const vec3l& d, const collision::Triangle& t
     return ref::triangle(o, d, widen(t.a), widen(t.b), widen(t.c));
 }
 
-struct Tally {
+struct CaseCounts {
     int decided = 0, boundary = 0, hits = 0;
 };
 
 // One case: "" when the references agree (or the accuracy reference calls it Boundary), else why.
 template <class S>
-std::string compare(const acc::Case<S>& c, Tally& tally) {
+std::string compare(const acc::Case<S>& c, CaseCounts& counts) {
     const acc::RefSpan span = acc::reference_span(acc::widen(c.ray), c.shape);
     const acc::RefHit a = acc::nearest(span, c.ray.tmin, c.ray.tmax);
     if (a.outcome == acc::RefOutcome::Boundary) {
-        ++tally.boundary;
+        ++counts.boundary;
         return "";
     }
-    ++tally.decided;
+    ++counts.decided;
     const Crossings x = crossings(widen(c.ray.origin), widen(c.ray.dir), c.shape);
     const ref::Crossing* first = nullptr;
     for (const ref::Crossing& h : x.hits) {
@@ -88,7 +88,7 @@ std::string compare(const acc::Case<S>& c, Tally& tally) {
         return std::string("accuracy reference says ") + (hit ? "hit" : "miss") + ", test reference " +
                (first ? "hit" : "miss");
     if (!hit) return "";
-    ++tally.hits;
+    ++counts.hits;
     const long double dt = std::fabs(first->t - a.t);
     if (!(dt <= span.band_t))
         return "t " + std::to_string(double(first->t)) + " vs " + std::to_string(double(a.t)) + ", band " +
@@ -104,21 +104,21 @@ template <class S>
 void agree_on_every_family() {
     for (const acc::Family f : acc::all_families) {
         if (f == acc::Family::Edges || !acc::family_applies<S>(f)) continue;
-        Tally tally;
+        CaseCounts counts;
         int disagreements = 0;
         for (const auto& c : acc::make_cases<S>(f, 2000, 11)) {
-            const std::string why = compare(c, tally);
+            const std::string why = compare(c, counts);
             if (why.empty()) continue;
             if (++disagreements <= 3) {
                 INFO(acc::shape_name<S>() << " / " << acc::family_name(f) << ": " << why);
                 CHECK(why.empty());
             }
         }
-        INFO(acc::shape_name<S>() << " / " << acc::family_name(f) << ": " << disagreements << " of " << tally.decided
-                                  << " decided cases disagree (" << tally.boundary << " Boundary)");
+        INFO(acc::shape_name<S>() << " / " << acc::family_name(f) << ": " << disagreements << " of " << counts.decided
+                                  << " decided cases disagree (" << counts.boundary << " Boundary)");
         CHECK(disagreements == 0);
         // The comparison must have had something to compare.
-        CHECK(tally.decided > 1000);
+        CHECK(counts.decided > 1000);
     }
 }
 
