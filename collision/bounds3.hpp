@@ -23,6 +23,9 @@ struct Bounds3 {
         hi = glm::max(hi, b.hi);
     }
     bool empty() const { return lo.x > hi.x || lo.y > hi.y || lo.z > hi.z; }
+    // Halved before the sum, so huge coordinates cannot overflow lo + hi to infinity; halving is
+    // exact, so elsewhere this is the same float as 0.5 (lo + hi), and it lies in [lo, hi].
+    glm::vec3 center() const { return 0.5f * lo + 0.5f * hi; }
     // Half the surface area: the SAH only compares areas, so the factor 2 is dropped.
     float half_area() const {
         if (empty()) return 0.0f;

@@ -23,9 +23,8 @@ Bvh build_triangle_bvh(const TriangleMesh& m, const BvhBuildOptions& options) {
     for (std::size_t i = 0; i < boxes.size(); ++i) {
         boxes[i] = triangle_bounds(m, i);
         // The box centre, not the vertex mean: one rounding, and it splits long thin triangles
-        // where their extent is. Halved before the sum so that huge coordinates cannot overflow
-        // lo + hi to infinity (halving is exact, so elsewhere this equals 0.5 (lo + hi)).
-        centroids[i] = 0.5f * boxes[i].lo + 0.5f * boxes[i].hi;
+        // where their extent is.
+        centroids[i] = boxes[i].center();
     }
     return build_bvh(boxes, centroids, options);
 }

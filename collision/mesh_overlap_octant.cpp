@@ -19,7 +19,7 @@ OctantPartition build_octants(const TriangleMesh& m, OctantRule rule) {
     o.mesh = &m;
     o.bounds = mesh_bounds(m);
     if (o.bounds.empty()) return o;
-    const glm::vec3 c = 0.5f * o.bounds.lo + 0.5f * o.bounds.hi;
+    const glm::vec3 c = o.bounds.center();
     for (int k = 0; k < 8; ++k) {
         for (int axis = 0; axis < 3; ++axis) {
             const bool upper = (k >> axis) & 1;

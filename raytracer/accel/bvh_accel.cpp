@@ -26,7 +26,7 @@ BvhAccel::BvhAccel(const Scene& scene) : scene_(scene), meshes_(scene.meshes.siz
         if (local.empty()) continue;  // a mesh without triangles: nothing to hit
         const collision::Bounds3 world = world_bounds(object.transform, local);
         boxes.push_back(world);
-        centroids.push_back(0.5f * (world.lo + world.hi));
+        centroids.push_back(world.center());
         object_of.push_back(i);
     }
     collision::BvhBuildOptions options;

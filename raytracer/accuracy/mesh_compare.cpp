@@ -249,7 +249,7 @@ MeshReport compare_meshes(const std::vector<NamedMesh>& meshes, std::size_t rays
         const std::vector<Method> methods = make_methods(mesh, bvhs, embrees);
         const EdgeMap edges(mesh);
         const collision::Bounds3 box = collision::mesh_bounds(mesh);
-        const vec3 centre = 0.5f * (box.lo + box.hi);
+        const vec3 centre = box.center();
         const float radius = 0.5f * glm::length(box.hi - box.lo);
 
         // Outside rays: half at random points of the box, a quarter each at vertices and edges.
