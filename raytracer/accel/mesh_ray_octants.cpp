@@ -41,10 +41,4 @@ bool MeshRayOctants::intersect(const collision::Ray& ray, collision::RayHit& hit
     return found;
 }
 
-std::size_t MeshRayOctants::memory_bytes() const {
-    std::size_t bytes = sizeof(*this);
-    for (const auto& o : octants_.triangles) bytes += o.capacity() * sizeof(std::uint32_t);
-    return bytes;
-}
-
 }  // namespace sweeptrace

@@ -17,7 +17,6 @@ class MeshRayOctants {
 public:
     explicit MeshRayOctants(const collision::TriangleMesh& mesh);
     bool intersect(const collision::Ray& ray, collision::RayHit& hit, std::uint32_t& triangle) const;
-    std::size_t memory_bytes() const;
 
 private:
     // The mesh-mesh test's partition (collision/mesh_mesh.hpp), by bounding-box overlap.
