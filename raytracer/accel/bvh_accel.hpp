@@ -29,7 +29,7 @@ private:
 
     const Scene& scene_;
     collision::Bvh top_;                             // over the objects; prim indices are object indices
-    std::vector<std::unique_ptr<MeshRayBvh>> meshes_;   // per Scene::meshes entry; null if no object uses it
+    std::vector<std::unique_ptr<MeshRayBvh>> meshes_;  // per Scene::meshes entry; null if no object uses it
 };
 
 }  // namespace sweeptrace

@@ -1,9 +1,10 @@
 #pragma once
 // The thesis's 8-octant subdivision (§3.3) turned into a ray structure over one mesh: the mesh's
 // bounding box split once into 8 octants, each listing the triangles whose bounding box
-// overlaps it (collision::build_octants, the partition the mesh-mesh test uses). A ray visits the octants it meets, nearest entry first, and stops when its hit
-// lies before the next octant. Kept only to be measured against the BVH (a one-level octree
-// cannot adapt to where the triangles are).
+// overlaps it (collision::build_octants, the partition the mesh-mesh test uses). A ray visits
+// the octants it meets, nearest entry first, and stops when its hit lies before the next
+// octant. Kept only to be measured against the BVH (a one-level octree cannot adapt to where
+// the triangles are).
 #include <cstdint>
 
 #include "collision/hit.hpp"

@@ -193,7 +193,8 @@ TEST_CASE("mesh-mesh figures", "[.mesh_figures]") {
         };
         run("brute force", [&](MeshPairStats& s) { return overlap_brute(p.a, p.b, &s); });
         run("8 octants (build incl.)", [&](MeshPairStats& s) { return overlap_octant(build_octants(p.a), build_octants(p.b), &s); });
-        run("BVH (build incl.)", [&](MeshPairStats& s) { return overlap_bvh(build_overlap_bvh(p.a), build_overlap_bvh(p.b), &s); });
+        run("BVH (build incl.)",
+            [&](MeshPairStats& s) { return overlap_bvh(build_overlap_bvh(p.a), build_overlap_bvh(p.b), &s); });
         if (p.convex) {
             run("SAT faces (thesis axes)", [&](MeshPairStats& s) { return overlap_sat(p.a, p.b, SatAxes::faces, &s).hit; });
             run("SAT faces+edges", [&](MeshPairStats& s) { return overlap_sat(p.a, p.b, SatAxes::faces_and_edges, &s).hit; });
