@@ -8,6 +8,7 @@
 // Rounding plays no part in correctness here: boxes are unions of the input boxes (min/max are
 // exact), and the binning only chooses where to split.
 #include "collision/bvh.hpp"
+#include "collision/finite.hpp"
 
 #include <algorithm>
 #include <array>
@@ -175,8 +176,6 @@ private:
     int bins_;
     std::uint32_t max_leaf_;
 };
-
-bool finite(const glm::vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 
 }  // namespace
 

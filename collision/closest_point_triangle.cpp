@@ -4,11 +4,11 @@
 // positive terms of that region, so a zero-area triangle still returns one of its points
 // (never NaN): a degenerate face region falls back to the nearest edge.
 //
-// Error: computed in double from float inputs (see overlap_common.hpp); the returned point is
+// Error: computed in double from float inputs (see detail/overlap_common.hpp); the returned point is
 // within a few double ulps (relative to the triangle's size and |p|) of the exact closest point,
 // then rounded to float once: |result - exact| <= 0.5 ulp(float) per component + ~1e-15 relative.
 #include "collision/overlap.hpp"
-#include "collision/overlap_common.hpp"
+#include "collision/detail/overlap_common.hpp"
 
 namespace collision {
 namespace detail {

@@ -40,11 +40,15 @@ std::uint64_t CellRange::count() const {
     return n;
 }
 
+namespace detail {
+
 double checked_cell_size(float cell_size) {
     if (!(cell_size > 0.0f) || !std::isfinite(cell_size))
         throw std::invalid_argument("HashedGrid: cell size must be finite and > 0, got " + std::to_string(cell_size));
     return cell_size;
 }
+
+}  // namespace detail
 
 glm::ivec3 cell_of(const glm::vec3& p, double cell_size) {
     glm::ivec3 c(0);
@@ -71,9 +75,13 @@ CellRange cell_range(const glm::vec3& lo, const glm::vec3& hi, double cell_size)
     return r;
 }
 
+namespace detail {
+
 void sort_unique(std::vector<std::uint32_t>& v) {
     std::sort(v.begin(), v.end());
     v.erase(std::unique(v.begin(), v.end()), v.end());
 }
+
+}  // namespace detail
 
 }  // namespace collision

@@ -47,11 +47,15 @@ struct HashedGridLimits {
     static constexpr std::uint64_t max_cells_per_object = std::uint64_t(1) << 24;
 };
 
-// Throws std::invalid_argument when cell_size is not finite and > 0.
-double checked_cell_size(float cell_size);
 glm::ivec3 cell_of(const glm::vec3& p, double cell_size);
 CellRange cell_range(const glm::vec3& lo, const glm::vec3& hi, double cell_size);
+
+namespace detail {
+// HashedGrid's own steps, out of line: throws std::invalid_argument when cell_size is not
+// finite and > 0; sorts ids and drops repeats.
+double checked_cell_size(float cell_size);
 void sort_unique(std::vector<std::uint32_t>& ids);
+}  // namespace detail
 
 template <class Hash = CellHash>
 class HashedGrid {
@@ -59,7 +63,7 @@ public:
     using Id = std::uint32_t;
 
     explicit HashedGrid(float cell_size, Hash hash = Hash{})
-        : cell_size_(checked_cell_size(cell_size)), cells_(16, std::move(hash)) {}
+        : cell_size_(detail::checked_cell_size(cell_size)), cells_(16, std::move(hash)) {}
 
     float cell_size() const { return float(cell_size_); }
 
@@ -87,7 +91,7 @@ public:
             const std::span<const Id> ids = cell(c);
             out.insert(out.end(), ids.begin(), ids.end());
         });
-        sort_unique(out);
+        detail::sort_unique(out);
         return out;
     }
     std::vector<Id> query(const Aabb& box) const { return query(box.min(), box.max()); }
@@ -102,7 +106,7 @@ public:
                     const std::span<const Id> ids = cell(c + glm::ivec3(dx, dy, dz));
                     out.insert(out.end(), ids.begin(), ids.end());
                 }
-        sort_unique(out);
+        detail::sort_unique(out);
         return out;
     }
 

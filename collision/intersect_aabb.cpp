@@ -26,16 +26,11 @@
 
 #include <glm/common.hpp>
 
+#include "collision/finite.hpp"
 #include "collision/float_error.hpp"
 #include "collision/intersect.hpp"
 
 namespace collision {
-
-namespace {
-
-bool finite(const glm::vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
-
-}  // namespace
 
 bool intersect(const Ray& ray, const Aabb& box, RayHit& hit) {
     if (!(box.size.x > 0.0f && box.size.y > 0.0f && box.size.z > 0.0f)) return false;

@@ -31,7 +31,7 @@
 
 #include "collision/float_error.hpp"
 #include "collision/intersect.hpp"
-#include "collision/ray_quadric.hpp"
+#include "collision/detail/ray_quadric.hpp"
 
 namespace collision {
 

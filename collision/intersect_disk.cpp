@@ -1,7 +1,7 @@
-// Ray-disk intersection: the plane crossing in double (collision/ray_plane.hpp), then the
+// Ray-disk intersection: the plane crossing in double (collision/detail/ray_plane.hpp), then the
 // radius test |x - centre|^2 <= r^2 in double on the double crossing point, so the inside
 // decision is exact to ~1e-16 relative (the rim belongs to the disk).
-// Bounds: |t - t_exact| <= eps |t| + 8 eps_d S / |n.d| (S as in ray_plane.hpp); point within
+// Bounds: |t - t_exact| <= eps |t| + 8 eps_d S / |n.d| (S as in detail/ray_plane.hpp); point within
 // point_error of the plane per axis.
 // normal: normalize(disk.normal) (two-sided, never flipped).
 // uv: (rho / r, phi / 2 pi), polar coordinates around the centre on the basis (t, b) of
@@ -9,8 +9,8 @@
 // Degenerate: radius <= 0 or non-finite, zero or non-finite normal, non-finite ray, zero or
 // parallel direction: false.
 #include "collision/intersect.hpp"
-#include "collision/ray_plane.hpp"
-#include "collision/ray_quadric.hpp"
+#include "collision/detail/ray_plane.hpp"
+#include "collision/detail/ray_quadric.hpp"
 
 namespace collision {
 

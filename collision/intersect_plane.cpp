@@ -1,6 +1,6 @@
 // Ray-plane intersection (thesis §3.2 planes; §3.5 "floating point": a ray parallel to the plane
 // is a defined miss, no division by zero reaches the result).
-// Method and error bounds: collision/ray_plane.hpp (the crossing in double):
+// Method and error bounds: collision/detail/ray_plane.hpp (the crossing in double):
 //  |t - t_exact| <= eps |t| + 8 eps_d S / |n.d|, S = sum |n_i||p0_i - o_i| + |t| sum |n_i d_i|;
 //  point within point_error of the plane per axis (gamma(2) |point| + the double's part).
 // normal: normalize(plane.normal), the plane's own (two-sided, never flipped).
@@ -9,8 +9,8 @@
 // Degenerate: zero or non-finite normal, non-finite point/origin/direction, zero direction or a
 // direction parallel to the plane: false.
 #include "collision/intersect.hpp"
-#include "collision/ray_plane.hpp"
-#include "collision/ray_quadric.hpp"
+#include "collision/detail/ray_plane.hpp"
+#include "collision/detail/ray_quadric.hpp"
 
 namespace collision {
 

@@ -22,8 +22,8 @@
 // by at most 2 R (|sx|, |sy| <= 1) and each edge function by 2 R |x| + 2 R |y| per endpoint.
 //
 // t and point: the plane of corner, normal edge_u x edge_v, crossed in double
-// (collision/ray_plane.hpp; the normal's products of floats are exact in double):
-//   |t - t_exact| <= eps |t| + 8 eps_d S / |n.d|  (S as in ray_plane.hpp; unchanged by the
+// (collision/detail/ray_plane.hpp; the normal's products of floats are exact in double):
+//   |t - t_exact| <= eps |t| + 8 eps_d S / |n.d|  (S as in detail/ray_plane.hpp; unchanged by the
 //   watertight decision, which only selects whether there is a hit); point within point_error
 // of the plane per axis. A ray nearly parallel to the plane (n.d == 0 in double) misses even
 // when the sheared test says inside (the triangle test does the same for det == 0).
@@ -37,7 +37,7 @@
 #include <algorithm>
 
 #include "collision/intersect.hpp"
-#include "collision/ray_plane.hpp"
+#include "collision/detail/ray_plane.hpp"
 #include "collision/triangle_watertight.hpp"
 
 namespace collision {

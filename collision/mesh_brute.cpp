@@ -5,13 +5,13 @@
 
 #include "collision/mesh_mesh.hpp"
 #include "collision/overlap.hpp"
-#include "collision/overlap_common.hpp"
+#include "collision/finite.hpp"
 
 namespace collision {
 
 void validate_mesh(const TriangleMesh& m, const char* name) {
     for (std::size_t i = 0; i < m.vertices.size(); ++i)
-        if (!detail::finite(m.vertices[i]))
+        if (!finite(m.vertices[i]))
             throw std::invalid_argument(std::string(name) + ": vertex " + std::to_string(i) + " is not finite");
     for (std::size_t i = 0; i < m.indices.size(); ++i)
         for (int k = 0; k < 3; ++k)
@@ -19,18 +19,6 @@ void validate_mesh(const TriangleMesh& m, const char* name) {
                 throw std::invalid_argument(std::string(name) + ": triangle " + std::to_string(i) + " uses vertex " +
                                             std::to_string(m.indices[i][k]) + " of " +
                                             std::to_string(m.vertices.size()));
-}
-
-Bounds3 triangle_bounds(const TriangleMesh& m, std::size_t i) {
-    Bounds3 b;
-    for (int k = 0; k < 3; ++k) b.extend(m.vertices[m.indices[i][k]]);
-    return b;
-}
-
-Bounds3 mesh_bounds(const TriangleMesh& m) {
-    Bounds3 b;
-    for (std::size_t i = 0; i < m.indices.size(); ++i) b.extend(triangle_bounds(m, i));
-    return b;
 }
 
 bool boxes_overlap(const Bounds3& a, const Bounds3& b) {

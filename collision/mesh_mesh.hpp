@@ -15,17 +15,19 @@
 // some triangle of b, touching included). SAT tests the convex *solids*: for convex meshes it
 // also reports one mesh wholly inside the other, which the surface tests do not.
 //
-// Meshes are used in place (no copy): a built OctantMesh / MeshBvh keeps a pointer to its
-// TriangleMesh, which must outlive it and not change. Every entry point validates its meshes
+// Meshes are used in place (no copy): a built OctantPartition / MeshOverlapBvh keeps a pointer
+// to its TriangleMesh, which must outlive it and not change. Every entry point validates its meshes
 // and throws std::invalid_argument naming the mesh and the triangle for an index out of range
 // or a non-finite vertex. Zero-area triangles never touch anything (Möller's contract).
 #include <array>
 #include <cstdint>
 #include <vector>
 
+#include "collision/bounds3.hpp"
 #include "collision/bvh.hpp"
 #include "collision/hit.hpp"
 #include "collision/mesh.hpp"
+#include "collision/mesh_boxes.hpp"
 
 namespace collision {
 
@@ -39,9 +41,6 @@ struct MeshPairStats {
 // Throws std::invalid_argument("<name>: triangle i ...") for a broken mesh.
 void validate_mesh(const TriangleMesh& m, const char* name);
 
-// Corner bounds of triangle i and of the whole mesh (empty Bounds3 for an empty mesh).
-Bounds3 triangle_bounds(const TriangleMesh& m, std::size_t i);
-Bounds3 mesh_bounds(const TriangleMesh& m);
 // Closed boxes: touching faces count.
 bool boxes_overlap(const Bounds3& a, const Bounds3& b);
 
@@ -54,21 +53,21 @@ bool overlap_brute(const TriangleMesh& a, const TriangleMesh& b, MeshPairStats* 
 // that octant, and contacts there are missed (kept to show it; see test_mesh_mesh.cpp).
 enum class OctantRule { boxes, vertices };
 
-struct OctantMesh {
+struct OctantPartition {
     const TriangleMesh* mesh = nullptr;
     Bounds3 bounds;                                   // the whole mesh
     std::array<Bounds3, 8> octant{};                  // the 8 halves of `bounds` (fixed split)
     std::array<std::vector<std::uint32_t>, 8> triangles;
 };
-OctantMesh build_octants(const TriangleMesh& m, OctantRule rule = OctantRule::boxes);
-bool overlap_octant(const OctantMesh& a, const OctantMesh& b, MeshPairStats* stats = nullptr);
+OctantPartition build_octants(const TriangleMesh& m, OctantRule rule = OctantRule::boxes);
+bool overlap_octant(const OctantPartition& a, const OctantPartition& b, MeshPairStats* stats = nullptr);
 
-struct MeshBvh {
+struct MeshOverlapBvh {
     const TriangleMesh* mesh = nullptr;
-    Bvh bvh;  // over triangle_bounds(*mesh, i); primitive indices are triangle indices
+    Bvh bvh;  // build_triangle_bvh(*mesh): primitive indices are triangle indices
 };
-MeshBvh build_mesh_bvh(const TriangleMesh& m);
-bool overlap_bvh(const MeshBvh& a, const MeshBvh& b, MeshPairStats* stats = nullptr);
+MeshOverlapBvh build_overlap_bvh(const TriangleMesh& m);
+bool overlap_bvh(const MeshOverlapBvh& a, const MeshOverlapBvh& b, MeshPairStats* stats = nullptr);
 
 // Candidate axes: face normals of both meshes (the thesis's set) and, for `faces_and_edges`,
 // the cross products of every edge of a with every edge of b, without which two convex solids

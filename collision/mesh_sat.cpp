@@ -16,7 +16,7 @@
 #include <utility>
 
 #include "collision/mesh_mesh.hpp"
-#include "collision/overlap_common.hpp"
+#include "collision/detail/overlap_common.hpp"
 
 namespace collision {
 namespace {

@@ -8,7 +8,7 @@
 // Decision in double: the half-sum and the centre difference are exact for float inputs of
 // similar magnitude, so the comparison is exact up to one double rounding.
 #include "collision/overlap.hpp"
-#include "collision/overlap_common.hpp"
+#include "collision/detail/overlap_common.hpp"
 
 namespace collision {
 

@@ -9,7 +9,7 @@
 // cores push along +X (the shortest way out, r1 + r2). Degenerate: radius <= 0, height < 0 or
 // non-finite input gives hit = false (height 0 is a sphere). Computed in double.
 #include "collision/overlap.hpp"
-#include "collision/overlap_common.hpp"
+#include "collision/detail/overlap_common.hpp"
 
 namespace collision {
 

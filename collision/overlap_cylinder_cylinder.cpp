@@ -7,9 +7,9 @@
 // Departures: coaxial cylinders (zero horizontal offset, where the thesis would normalise a
 // zero vector) are pushed along +X; equal heights push toward +Y; ties prefer the cap.
 // Degenerate: radius <= 0, height < 0 or non-finite input gives hit = false (height 0 is a
-// disk, a valid closed set). Computed in double (overlap_common.hpp).
+// disk, a valid closed set). Computed in double (detail/overlap_common.hpp).
 #include "collision/overlap.hpp"
-#include "collision/overlap_common.hpp"
+#include "collision/detail/overlap_common.hpp"
 
 namespace collision {
 

@@ -12,7 +12,7 @@
 // exact. tests/collision/test_overlap_round_triangle.cpp checks both properties.
 // Degenerate: any radius <= 0, zero-area triangle or non-finite input gives hit = false.
 #include "collision/overlap.hpp"
-#include "collision/overlap_common.hpp"
+#include "collision/detail/overlap_common.hpp"
 
 namespace collision {
 Contact overlap(const Ellipsoid& e, const Triangle& tri) {

@@ -9,7 +9,7 @@
 // Normals need not be unit length. Error: a few double roundings, then one float rounding; the
 // point's error grows as 1 / sin(angle between the planes), as the geometry demands.
 #include "collision/overlap.hpp"
-#include "collision/overlap_common.hpp"
+#include "collision/detail/overlap_common.hpp"
 
 namespace collision {
 

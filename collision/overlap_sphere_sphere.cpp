@@ -3,9 +3,9 @@
 // r1 + r2 - |c1 - c2| (exact: the pair reduces to a point in a ball of radius r1 + r2).
 // Departure from the thesis: coincident centres (normalize of a zero vector, NaN there) push the
 // first sphere along +Y by r1 + r2; radius <= 0 or non-finite input gives hit = false.
-// Decision and vector computed in double (overlap_common.hpp): exact up to ~1e-16 relative.
+// Decision and vector computed in double (detail/overlap_common.hpp): exact up to ~1e-16 relative.
 #include "collision/overlap.hpp"
-#include "collision/overlap_common.hpp"
+#include "collision/detail/overlap_common.hpp"
 
 namespace collision {
 

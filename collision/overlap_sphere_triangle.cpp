@@ -8,7 +8,7 @@
 // pushed along the triangle's front normal (b - a) x (c - a) by r. Degenerate: radius <= 0,
 // zero-area triangle (cross product exactly 0 in double) or non-finite input gives hit = false.
 #include "collision/overlap.hpp"
-#include "collision/overlap_common.hpp"
+#include "collision/detail/overlap_common.hpp"
 
 namespace collision {
 namespace detail {

@@ -25,7 +25,7 @@
 #include <cmath>
 
 #include "collision/overlap.hpp"
-#include "collision/overlap_common.hpp"
+#include "collision/detail/overlap_common.hpp"
 
 namespace collision {
 namespace detail {

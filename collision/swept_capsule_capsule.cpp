@@ -14,7 +14,7 @@
 
 #include "collision/overlap.hpp"
 #include "collision/swept.hpp"
-#include "collision/swept_common.hpp"
+#include "collision/detail/swept_common.hpp"
 
 namespace collision {
 

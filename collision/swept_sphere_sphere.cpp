@@ -8,7 +8,7 @@
 // Degenerate: radius <= 0 or non-finite input -> no hit; zero motion -> only the t = 0 answer.
 #include "collision/overlap.hpp"
 #include "collision/swept.hpp"
-#include "collision/swept_common.hpp"
+#include "collision/detail/swept_common.hpp"
 
 namespace collision {
 

@@ -14,7 +14,7 @@
 // Degenerate: radius <= 0, zero-area triangle, non-finite input -> no hit.
 #include "collision/overlap.hpp"
 #include "collision/swept.hpp"
-#include "collision/swept_common.hpp"
+#include "collision/detail/swept_common.hpp"
 
 namespace collision {
 

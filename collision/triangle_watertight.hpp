@@ -49,6 +49,7 @@
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
+#include "collision/finite.hpp"
 #include "collision/float_error.hpp"
 #include "collision/hit.hpp"
 #include "collision/ray.hpp"
@@ -71,8 +72,7 @@ inline TriangleRay prepare_triangle_ray(const Ray& ray) {
     // Keep the winding: a negative major component mirrors the projection.
     if (ray.dir[tr.kz] < 0.0f) std::swap(tr.kx, tr.ky);
     const float dz = ray.dir[tr.kz];
-    tr.valid = dz != 0.0f && std::isfinite(ad.x) && std::isfinite(ad.y) && std::isfinite(ad.z) &&
-               std::isfinite(ray.origin.x) && std::isfinite(ray.origin.y) && std::isfinite(ray.origin.z);
+    tr.valid = dz != 0.0f && finite(ad) && finite(ray.origin);
     if (!tr.valid) return tr;
     tr.sx = -ray.dir[tr.kx] / dz;
     tr.sy = -ray.dir[tr.ky] / dz;

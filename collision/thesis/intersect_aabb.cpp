@@ -12,7 +12,7 @@
 #include <algorithm>
 
 #include "collision/thesis/intersect.hpp"
-#include "collision/thesis/textbook.hpp"
+#include "collision/thesis/detail/textbook.hpp"
 
 namespace collision::thesis {
 

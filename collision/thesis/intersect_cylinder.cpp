@@ -15,9 +15,9 @@
 // tangent point with a NaN normal.
 #include <glm/vec2.hpp>
 
-#include "collision/ray_quadric.hpp"
+#include "collision/detail/ray_quadric.hpp"
 #include "collision/thesis/intersect.hpp"
-#include "collision/thesis/textbook.hpp"
+#include "collision/thesis/detail/textbook.hpp"
 
 namespace collision::thesis {
 

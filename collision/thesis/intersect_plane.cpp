@@ -4,9 +4,9 @@
 // problem, and gets a huge t); disk: the point o + t d closer than r to the centre (strictly).
 // Normal: the shape's normal as given; point o + t d, point_error 0; uv as the robust versions.
 // Degenerate input: a zero normal makes n.d = 0: no hit; NaN input: no hit.
-#include "collision/ray_quadric.hpp"
+#include "collision/detail/ray_quadric.hpp"
 #include "collision/thesis/intersect.hpp"
-#include "collision/thesis/textbook.hpp"
+#include "collision/thesis/detail/textbook.hpp"
 
 namespace collision::thesis {
 

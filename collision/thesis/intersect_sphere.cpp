@@ -9,9 +9,9 @@
 // Degenerate input: radius 0 gives the tangent point with a NaN normal (normalize of 0) when
 // the line passes through the centre; a zero direction gives NaN roots, which never pass the
 // range test (no hit); NaN input: no hit (the comparisons fail).
-#include "collision/ray_quadric.hpp"
+#include "collision/detail/ray_quadric.hpp"
 #include "collision/thesis/intersect.hpp"
-#include "collision/thesis/textbook.hpp"
+#include "collision/thesis/detail/textbook.hpp"
 
 namespace collision::thesis {
 

@@ -9,9 +9,9 @@
 // leak the watertight test removes); denom cancels for slivers (0 or negative: the division
 // gives inf/NaN coordinates, which fail the inside test: no hit). Normal normalize(n); uv
 // (v, w), the weights of b and c; point o + t d; point_error 0. NaN input: no hit.
-#include "collision/thesis/barycentric.hpp"
+#include "collision/thesis/detail/barycentric.hpp"
 #include "collision/thesis/intersect.hpp"
-#include "collision/thesis/textbook.hpp"
+#include "collision/thesis/detail/textbook.hpp"
 
 namespace collision::thesis {
 

@@ -9,7 +9,7 @@
 
 #include <glm/geometric.hpp>
 
-#include "collision/thesis/barycentric.hpp"
+#include "collision/thesis/detail/barycentric.hpp"
 #include "collision/thesis/overlap.hpp"
 
 namespace collision::thesis {

@@ -5,7 +5,7 @@
 
 #include "collision/overlap.hpp"
 #include "collision/ray.hpp"
-#include "collision/swept_common.hpp"
+#include "collision/detail/swept_common.hpp"
 #include "collision/thesis/intersect.hpp"
 
 namespace collision::thesis {

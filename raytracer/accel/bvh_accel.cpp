@@ -19,7 +19,7 @@ BvhAccel::BvhAccel(const Scene& scene) : scene_(scene), meshes_(scene.meshes.siz
         collision::Bounds3 local;
         if (const auto* instance = std::get_if<MeshInstance>(&object.shape)) {
             auto& mesh = meshes_[instance->mesh];
-            if (!mesh) mesh = std::make_unique<MeshBvh>(scene.meshes[instance->mesh].triangles);
+            if (!mesh) mesh = std::make_unique<MeshRayBvh>(scene.meshes[instance->mesh].triangles);
             local = mesh->bounds();
         } else {
             local = object_space_bounds(object.shape);
@@ -27,7 +27,7 @@ BvhAccel::BvhAccel(const Scene& scene) : scene_(scene), meshes_(scene.meshes.siz
         if (local.empty()) continue;  // a mesh without triangles: nothing to hit
         const collision::Bounds3 world = world_bounds(object.transform, local);
         boxes.push_back(world);
-        centroids.push_back(0.5f * (world.lo + world.hi));
+        centroids.push_back(world.center());
         object_of.push_back(i);
     }
     collision::BvhBuildOptions options;
@@ -94,7 +94,7 @@ bool BvhAccel::occluded(const collision::Ray& ray) const {
 std::size_t BvhAccel::memory_bytes() const {
     std::size_t bytes = sizeof(*this) + top_.memory_bytes() + meshes_.capacity() * sizeof(meshes_[0]);
     for (const auto& m : meshes_)
-        if (m) bytes += sizeof(MeshBvh) + m->memory_bytes();
+        if (m) bytes += sizeof(MeshRayBvh) + m->memory_bytes();
     return bytes;
 }
 

@@ -1,13 +1,13 @@
 #pragma once
 // The native two-level BVH: a binned-SAH tree over the objects' world boxes on top, and one
-// MeshBvh per mesh below, traversed in the instancing object's space (a transformed mesh is
+// MeshRayBvh per mesh below, traversed in the instancing object's space (a transformed mesh is
 // never copied or re-built).
 #include <memory>
 #include <vector>
 
 #include "collision/bvh.hpp"
 #include "raytracer/accel/accel.hpp"
-#include "raytracer/accel/mesh_bvh.hpp"
+#include "raytracer/accel/mesh_ray_bvh.hpp"
 
 namespace sweeptrace {
 
@@ -29,7 +29,7 @@ private:
 
     const Scene& scene_;
     collision::Bvh top_;                             // over the objects; prim indices are object indices
-    std::vector<std::unique_ptr<MeshBvh>> meshes_;   // per Scene::meshes entry; null if no object uses it
+    std::vector<std::unique_ptr<MeshRayBvh>> meshes_;  // per Scene::meshes entry; null if no object uses it
 };
 
 }  // namespace sweeptrace

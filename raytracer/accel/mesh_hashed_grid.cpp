@@ -6,7 +6,7 @@
 #include <glm/geometric.hpp>
 
 #include "collision/intersect.hpp"
-#include "collision/mesh_mesh.hpp"
+#include "collision/mesh_boxes.hpp"
 
 namespace sweeptrace {
 

@@ -4,7 +4,7 @@
 // Woo 1987) that looks each cell up in the hash table. Kept to be measured against the BVH.
 #include <cstdint>
 
-#include "collision/bvh.hpp"
+#include "collision/bounds3.hpp"
 #include "collision/hashed_grid.hpp"
 #include "collision/hit.hpp"
 #include "collision/mesh.hpp"

@@ -34,16 +34,6 @@ const char* family_name(Family f) {
     return "?";
 }
 
-bool parse_family(const std::string& name, Family& out) {
-    for (Family f : all_families) {
-        if (name == family_name(f)) {
-            out = f;
-            return true;
-        }
-    }
-    return false;
-}
-
 template <> const char* shape_name<collision::OrientedCapsule>() { return "oriented-capsule"; }
 template <> const char* shape_name<collision::Plane>() { return "plane"; }
 
@@ -59,7 +49,7 @@ glm::vec3 offset_origin(const vec3& p, const vec3& error, const vec3& normal, co
     return o;
 }
 
-glm::vec3 unit_vector(Rng& rng) {
+glm::vec3 unit_vector(CaseRng& rng) {
     std::normal_distribution<float> g(0.0f, 1.0f);
     for (;;) {
         const vec3 v(g(rng), g(rng), g(rng));
@@ -70,41 +60,41 @@ glm::vec3 unit_vector(Rng& rng) {
 
 namespace {
 
-float uniform(Rng& rng, float lo, float hi) { return std::uniform_real_distribution<float>(lo, hi)(rng); }
+float uniform(CaseRng& rng, float lo, float hi) { return std::uniform_real_distribution<float>(lo, hi)(rng); }
 
 
-vec3 in_ball(Rng& rng) { return unit_vector(rng) * std::cbrt(uniform(rng, 0.0f, 1.0f)); }
-vec3 in_cube(Rng& rng) { return vec3(uniform(rng, -1, 1), uniform(rng, -1, 1), uniform(rng, -1, 1)); }
+vec3 in_ball(CaseRng& rng) { return unit_vector(rng) * std::cbrt(uniform(rng, 0.0f, 1.0f)); }
+vec3 in_cube(CaseRng& rng) { return vec3(uniform(rng, -1, 1), uniform(rng, -1, 1), uniform(rng, -1, 1)); }
 
 // Shape generators: `s` is the size scale, the shape fits in a ball of about radius s.
-collision::Sphere make(Rng& rng, float s, vec3 c, collision::Sphere*) { return {c, s * uniform(rng, 0.5f, 1.0f)}; }
-collision::Aabb make(Rng& rng, float s, vec3 c, collision::Aabb*) {
+collision::Sphere make(CaseRng& rng, float s, vec3 c, collision::Sphere*) { return {c, s * uniform(rng, 0.5f, 1.0f)}; }
+collision::Aabb make(CaseRng& rng, float s, vec3 c, collision::Aabb*) {
     return {c, s * vec3(uniform(rng, 0.5f, 1.2f), uniform(rng, 0.5f, 1.2f), uniform(rng, 0.5f, 1.2f))};
 }
-collision::Cylinder make(Rng& rng, float s, vec3 c, collision::Cylinder*) {
+collision::Cylinder make(CaseRng& rng, float s, vec3 c, collision::Cylinder*) {
     return {c, s * uniform(rng, 0.3f, 0.7f), s * uniform(rng, 0.5f, 1.4f)};
 }
-collision::Capsule make(Rng& rng, float s, vec3 c, collision::Capsule*) {
+collision::Capsule make(CaseRng& rng, float s, vec3 c, collision::Capsule*) {
     return {c, s * uniform(rng, 0.2f, 0.5f), s * uniform(rng, 0.3f, 1.0f)};
 }
-collision::OrientedCapsule make(Rng& rng, float s, vec3 c, collision::OrientedCapsule*) {
+collision::OrientedCapsule make(CaseRng& rng, float s, vec3 c, collision::OrientedCapsule*) {
     const vec3 half = unit_vector(rng) * (s * uniform(rng, 0.15f, 0.5f));
     return {c - half, c + half, s * uniform(rng, 0.2f, 0.5f)};
 }
-collision::Ellipsoid make(Rng& rng, float s, vec3 c, collision::Ellipsoid*) {
+collision::Ellipsoid make(CaseRng& rng, float s, vec3 c, collision::Ellipsoid*) {
     return {c, s * vec3(uniform(rng, 0.3f, 1.0f), uniform(rng, 0.3f, 1.0f), uniform(rng, 0.3f, 1.0f))};
 }
-collision::Plane make(Rng& rng, float, vec3 c, collision::Plane*) { return {c, unit_vector(rng)}; }
-collision::Disk make(Rng& rng, float s, vec3 c, collision::Disk*) {
+collision::Plane make(CaseRng& rng, float, vec3 c, collision::Plane*) { return {c, unit_vector(rng)}; }
+collision::Disk make(CaseRng& rng, float s, vec3 c, collision::Disk*) {
     return {c, unit_vector(rng), s * uniform(rng, 0.5f, 1.0f)};
 }
-collision::Quad make(Rng& rng, float s, vec3 c, collision::Quad*) {
+collision::Quad make(CaseRng& rng, float s, vec3 c, collision::Quad*) {
     const vec3 u = unit_vector(rng) * (s * uniform(rng, 0.6f, 1.4f));
     vec3 v = unit_vector(rng) * (s * uniform(rng, 0.6f, 1.4f));
     if (glm::length(glm::cross(u, v)) < 0.1f * glm::length(u) * glm::length(v)) v = glm::cross(u, vec3(0.3f, 1.0f, 0.2f));
     return {c - 0.5f * (u + v), u, v};
 }
-collision::Triangle make(Rng& rng, float s, vec3 c, collision::Triangle*) {
+collision::Triangle make(CaseRng& rng, float s, vec3 c, collision::Triangle*) {
     for (;;) {
         const collision::Triangle t{c + s * in_ball(rng), c + s * in_ball(rng), c + s * in_ball(rng)};
         if (glm::length(glm::cross(t.b - t.a, t.c - t.a)) > 0.05f * s * s) return t;
@@ -112,7 +102,7 @@ collision::Triangle make(Rng& rng, float s, vec3 c, collision::Triangle*) {
 }
 
 template <class S>
-S make_shape(Rng& rng, float s, vec3 c) {
+S make_shape(CaseRng& rng, float s, vec3 c) {
     return make(rng, s, c, static_cast<S*>(nullptr));
 }
 
@@ -144,7 +134,7 @@ float extent(const collision::Triangle& t) {
 
 // A ray from `distance` away from the shape aimed at a point of its bounding ball.
 template <class S>
-Ray aimed_ray(Rng& rng, const S& shape, float distance, float extent_scale = 1.0f) {
+Ray aimed_ray(CaseRng& rng, const S& shape, float distance, float extent_scale = 1.0f) {
     const vec3 c = centre(shape);
     const float e = extent(shape) * extent_scale;
     const vec3 origin = c + unit_vector(rng) * distance;
@@ -160,7 +150,7 @@ constexpr bool is_flat() {
 
 // Grazing: a reference surface point, a tangent there, and an origin k ulps off the tangent line.
 template <class S>
-bool grazing_case(Rng& rng, Case<S>& out) {
+bool grazing_case(CaseRng& rng, Case<S>& out) {
     const S shape = make_shape<S>(rng, 1.0f, in_cube(rng));
     for (int attempt = 0; attempt < 16; ++attempt) {
         const Ray probe = aimed_ray(rng, shape, 4.0f * extent(shape), 0.8f);
@@ -194,7 +184,7 @@ float nudge(float v, int steps) {
 }
 
 // A coordinate exactly on a plane at `at`, an ulp or two off it, or clearly inside / outside.
-float plane_coordinate(Rng& rng, float at, float inside_dir, float size) {
+float plane_coordinate(CaseRng& rng, float at, float inside_dir, float size) {
     switch (std::uniform_int_distribution<int>(0, 4)(rng)) {
         case 0: return at;
         case 1: return nudge(at, std::uniform_int_distribution<int>(-2, 2)(rng));
@@ -205,7 +195,7 @@ float plane_coordinate(Rng& rng, float at, float inside_dir, float size) {
 }
 
 // Direction in the plane perpendicular to `axis` (an exact zero component).
-vec3 flat_direction(Rng& rng, int axis) {
+vec3 flat_direction(CaseRng& rng, int axis) {
     vec3 d = unit_vector(rng);
     d[axis] = 0.0f;
     if (glm::length(d) < 1e-3f) d[(axis + 1) % 3] = 1.0f;
@@ -213,9 +203,9 @@ vec3 flat_direction(Rng& rng, int axis) {
 }
 
 // Parallel cases: `false` when the shape has nothing to be parallel to.
-bool parallel_case(Rng&, Case<collision::Sphere>&) { return false; }
-bool parallel_case(Rng&, Case<collision::Ellipsoid>&) { return false; }
-bool parallel_case(Rng& rng, Case<collision::Aabb>& out) {
+bool parallel_case(CaseRng&, Case<collision::Sphere>&) { return false; }
+bool parallel_case(CaseRng&, Case<collision::Ellipsoid>&) { return false; }
+bool parallel_case(CaseRng& rng, Case<collision::Aabb>& out) {
     const collision::Aabb b = make_shape<collision::Aabb>(rng, 1.0f, in_cube(rng));
     const int axis = std::uniform_int_distribution<int>(0, 2)(rng);
     vec3 d = flat_direction(rng, axis);
@@ -231,7 +221,7 @@ bool parallel_case(Rng& rng, Case<collision::Aabb>& out) {
     out.ray = Ray{o, d};
     return true;
 }
-bool parallel_case(Rng& rng, Case<collision::Cylinder>& out) {
+bool parallel_case(CaseRng& rng, Case<collision::Cylinder>& out) {
     const collision::Cylinder c = make_shape<collision::Cylinder>(rng, 1.0f, in_cube(rng));
     out.shape = c;
     if (uniform(rng, 0, 1) < 0.5f) {  // parallel to the caps
@@ -249,7 +239,7 @@ bool parallel_case(Rng& rng, Case<collision::Cylinder>& out) {
     }
     return true;
 }
-bool parallel_case(Rng& rng, Case<collision::Capsule>& out) {
+bool parallel_case(CaseRng& rng, Case<collision::Capsule>& out) {
     const collision::Capsule c = make_shape<collision::Capsule>(rng, 1.0f, in_cube(rng));
     out.shape = c;
     if (uniform(rng, 0, 1) < 0.5f) {  // horizontal through the seam of wall and hemisphere
@@ -266,7 +256,7 @@ bool parallel_case(Rng& rng, Case<collision::Capsule>& out) {
     }
     return true;
 }
-bool parallel_case(Rng& rng, Case<collision::OrientedCapsule>& out) {
+bool parallel_case(CaseRng& rng, Case<collision::OrientedCapsule>& out) {
     const collision::OrientedCapsule c = make_shape<collision::OrientedCapsule>(rng, 1.0f, in_cube(rng));
     const vec3 axis = c.b - c.a;
     const vec3 side = glm::normalize(glm::cross(axis, unit_vector(rng)));
@@ -277,7 +267,7 @@ bool parallel_case(Rng& rng, Case<collision::OrientedCapsule>& out) {
 }
 // Flat shapes parallel cases: put them in a y = const plane so a ray can be exactly parallel.
 template <class S>
-bool flat_parallel(Rng& rng, Case<S>& out, const S& shape, float plane_y, float size) {
+bool flat_parallel(CaseRng& rng, Case<S>& out, const S& shape, float plane_y, float size) {
     const vec3 d = flat_direction(rng, 1);
     vec3 o = centre(shape) - d * (3.0f * size) + glm::cross(d, vec3(0, 1, 0)) * (size * uniform(rng, -1.0f, 1.0f));
     o.y = plane_coordinate(rng, plane_y, 1.0f, size);
@@ -285,22 +275,22 @@ bool flat_parallel(Rng& rng, Case<S>& out, const S& shape, float plane_y, float 
     out.ray = Ray{o, d};
     return true;
 }
-bool parallel_case(Rng& rng, Case<collision::Plane>& out) {
+bool parallel_case(CaseRng& rng, Case<collision::Plane>& out) {
     const vec3 c = in_cube(rng);
     return flat_parallel(rng, out, collision::Plane{c, vec3(0, 1, 0)}, c.y, 1.0f);
 }
-bool parallel_case(Rng& rng, Case<collision::Disk>& out) {
+bool parallel_case(CaseRng& rng, Case<collision::Disk>& out) {
     const vec3 c = in_cube(rng);
     const float r = uniform(rng, 0.5f, 1.0f);
     return flat_parallel(rng, out, collision::Disk{c, vec3(0, 1, 0), r}, c.y, r);
 }
-bool parallel_case(Rng& rng, Case<collision::Quad>& out) {
+bool parallel_case(CaseRng& rng, Case<collision::Quad>& out) {
     const vec3 c = in_cube(rng);
     const vec3 u = flat_direction(rng, 1) * uniform(rng, 0.6f, 1.4f);
     const vec3 v = glm::cross(vec3(0, 1, 0), u) * uniform(rng, 0.6f, 1.4f);
     return flat_parallel(rng, out, collision::Quad{c, u, v}, c.y, glm::length(u));
 }
-bool parallel_case(Rng& rng, Case<collision::Triangle>& out) {
+bool parallel_case(CaseRng& rng, Case<collision::Triangle>& out) {
     const vec3 c = in_cube(rng);
     collision::Triangle t{c + flat_direction(rng, 1), c + flat_direction(rng, 1), c + flat_direction(rng, 1)};
     t.b.y = t.c.y = t.a.y;
@@ -309,7 +299,7 @@ bool parallel_case(Rng& rng, Case<collision::Triangle>& out) {
 }
 
 // Edges of single closed shapes: rays from inside through a corner / edge point / rim point.
-bool edge_case(Rng& rng, Case<collision::Aabb>& out) {
+bool edge_case(CaseRng& rng, Case<collision::Aabb>& out) {
     const collision::Aabb b = make_shape<collision::Aabb>(rng, 1.0f, in_cube(rng));
     const vec3 lo = b.min(), hi = b.max();
     vec3 target;
@@ -323,7 +313,7 @@ bool edge_case(Rng& rng, Case<collision::Aabb>& out) {
     out.ray = Ray{origin, target - origin};
     return true;
 }
-bool edge_case(Rng& rng, Case<collision::Cylinder>& out) {
+bool edge_case(CaseRng& rng, Case<collision::Cylinder>& out) {
     const collision::Cylinder c = make_shape<collision::Cylinder>(rng, 1.0f, in_cube(rng));
     const vec3 side = flat_direction(rng, 1);
     vec3 target = c.center + side * c.radius;
@@ -334,7 +324,7 @@ bool edge_case(Rng& rng, Case<collision::Cylinder>& out) {
     return true;
 }
 template <class S>
-bool edge_case(Rng&, Case<S>&) {
+bool edge_case(CaseRng&, Case<S>&) {
     return false;
 }
 
@@ -361,7 +351,7 @@ template <class S>
 std::vector<Case<S>> make_cases(Family f, std::size_t n, std::uint64_t seed) {
     // One stream per (family, shape): adding a shape or a family never changes the others.
     const std::uint64_t salt = std::hash<std::string>{}(std::string(family_name(f)) + shape_name<S>());
-    Rng rng(seed ^ salt);
+    CaseRng rng(seed ^ salt);
     std::vector<Case<S>> cases;
     cases.reserve(n);
     Case<S> c;
@@ -479,7 +469,7 @@ std::vector<collision::Quad> cube_of_quads(const vec3& c, float h) {
 
 template <class Face>
 std::vector<ClosedMeshCase<Face>> make_closed_meshes(std::size_t n, std::uint64_t seed) {
-    Rng rng(seed ^ std::hash<std::string>{}(std::string("edges-mesh") + shape_name<Face>()));
+    CaseRng rng(seed ^ std::hash<std::string>{}(std::string("edges-mesh") + shape_name<Face>()));
     constexpr std::size_t rays_per_mesh = 256;
     std::vector<ClosedMeshCase<Face>> meshes;
     for (std::size_t done = 0; done < n; done += rays_per_mesh) {

@@ -30,9 +30,8 @@ inline constexpr Family all_families[] = {Family::Uniform,    Family::Grazing,  
                                           Family::SurfaceIn,  Family::Parallel,  Family::Edges};
 
 const char* family_name(Family f);
-bool parse_family(const std::string& name, Family& out);
 
-using Rng = std::mt19937_64;
+using CaseRng = std::mt19937_64;
 
 template <class Shape>
 struct Case {
@@ -86,7 +85,7 @@ template <>
 const char* shape_name<collision::OrientedCapsule>();
 
 // A uniformly distributed unit vector.
-glm::vec3 unit_vector(Rng& rng);
+glm::vec3 unit_vector(CaseRng& rng);
 
 // pbrt's origin offset for a secondary ray: move `p` along the normal by the projection of its
 // error bound, toward the side `dir` points to, then one float further away in each component.

@@ -15,9 +15,9 @@
 
 #include "collision/float_error.hpp"
 #include "collision/intersect.hpp"
-#include "collision/mesh_mesh.hpp"
+#include "collision/mesh_boxes.hpp"
 #include "raytracer/accel/embree_reference.hpp"
-#include "raytracer/accel/mesh_bvh.hpp"
+#include "raytracer/accel/mesh_ray_bvh.hpp"
 #include "raytracer/accuracy/cases.hpp"
 #include "raytracer/accuracy/reference.hpp"
 #include "raytracer/accuracy/thread_timer.hpp"
@@ -85,12 +85,12 @@ struct Method {
     std::function<Hit(const Ray&)> trace;
 };
 
-std::vector<Method> make_methods(const collision::TriangleMesh& mesh, std::vector<std::unique_ptr<MeshBvh>>& bvhs,
+std::vector<Method> make_methods(const collision::TriangleMesh& mesh, std::vector<std::unique_ptr<MeshRayBvh>>& bvhs,
                                  std::vector<std::unique_ptr<EmbreeTriangles>>& embrees) {
     std::vector<Method> methods;
     double start = wall_seconds();
-    bvhs.push_back(std::make_unique<MeshBvh>(mesh));
-    const MeshBvh* bvh = bvhs.back().get();
+    bvhs.push_back(std::make_unique<MeshRayBvh>(mesh));
+    const MeshRayBvh* bvh = bvhs.back().get();
     methods.push_back({"native", wall_seconds() - start, [bvh](const Ray& r) {
                            Hit h;
                            collision::RayHit rh;
@@ -116,7 +116,7 @@ std::vector<Method> make_methods(const collision::TriangleMesh& mesh, std::vecto
 
 
 // A point of the mesh to aim at: a vertex, or a point of an edge (within rounding).
-vec3 mesh_target(Rng& rng, const collision::TriangleMesh& mesh, bool vertex) {
+vec3 mesh_target(CaseRng& rng, const collision::TriangleMesh& mesh, bool vertex) {
     const collision::Triangle t = mesh.triangle(std::uniform_int_distribution<std::size_t>(0, mesh.triangle_count() - 1)(rng));
     if (vertex) return t.a;
     const float s = std::uniform_real_distribution<float>(0.0f, 1.0f)(rng);
@@ -174,7 +174,7 @@ void count(MeshComparison& c, Where w) {
 // method under test): along three random directions the number of triangles the ray crosses is
 // odd, and no crossing is within the reference band of an edge (such a point is skipped). The
 // conservative slab test only skips triangles the line cannot meet.
-std::vector<vec3> inside_points(Rng& rng, const collision::TriangleMesh& mesh, const collision::Bounds3& box,
+std::vector<vec3> inside_points(CaseRng& rng, const collision::TriangleMesh& mesh, const collision::Bounds3& box,
                                 std::size_t wanted) {
     std::vector<collision::Bounds3> boxes(mesh.triangle_count());
     for (std::size_t f = 0; f < boxes.size(); ++f) boxes[f] = collision::triangle_bounds(mesh, f);
@@ -243,13 +243,13 @@ MeshReport compare_meshes(const std::vector<NamedMesh>& meshes, std::size_t rays
     for (const NamedMesh& nm : meshes) {
         const collision::TriangleMesh& mesh = nm.mesh;
         if (mesh.triangle_count() == 0) continue;
-        Rng rng(seed ^ std::hash<std::string>{}(nm.name));
-        std::vector<std::unique_ptr<MeshBvh>> bvhs;
+        CaseRng rng(seed ^ std::hash<std::string>{}(nm.name));
+        std::vector<std::unique_ptr<MeshRayBvh>> bvhs;
         std::vector<std::unique_ptr<EmbreeTriangles>> embrees;
         const std::vector<Method> methods = make_methods(mesh, bvhs, embrees);
         const EdgeMap edges(mesh);
         const collision::Bounds3 box = collision::mesh_bounds(mesh);
-        const vec3 centre = 0.5f * (box.lo + box.hi);
+        const vec3 centre = box.center();
         const float radius = 0.5f * glm::length(box.hi - box.lo);
 
         // Outside rays: half at random points of the box, a quarter each at vertices and edges.

@@ -15,7 +15,6 @@ using collision::Ray;
 
 namespace {
 
-
 void summarise_t_errors(std::vector<double>& errors, Metrics& m) {
     m.t_scored = errors.size();
     if (errors.empty()) return;
@@ -63,6 +62,8 @@ Variant<S> variant_of(std::string name, bool (*fn)(const Ray&, const S&, collisi
     };
     return v;
 }
+
+namespace {
 
 template <class S>
 Metrics score(const std::vector<S>& shapes, const std::vector<Ray>& rays, const std::vector<Result>& results) {
@@ -123,6 +124,8 @@ bool is_self_hit(const S& shape, const Ray& secondary, bool into, const Result& 
     return static_cast<long double>(r.h.t) < 0.5L * span.t1;
 }
 
+}  // namespace
+
 template <class S>
 Metrics run_closed_meshes(const Variant<S>& variant, const std::vector<ClosedMeshCase<S>>& meshes) {
     Metrics m;
@@ -156,6 +159,8 @@ Metrics run_closed_meshes(const Variant<S>& variant, const std::vector<ClosedMes
     if (!meshes.empty()) m.seconds /= double(meshes.front().faces.size());
     return m;
 }
+
+namespace {
 
 template <class S>
 Metrics run_cases(const Variant<S>& v, Family f, const std::vector<Case<S>>& cases) {
@@ -194,6 +199,8 @@ Metrics run_cases(const Variant<S>& v, Family f, const std::vector<Case<S>>& cas
     return m;
 }
 
+}  // namespace
+
 template <class S>
 Metrics run_family(const Variant<S>& v, Family f, std::size_t n, std::uint64_t seed) {
     if constexpr (std::is_same_v<S, collision::Triangle> || std::is_same_v<S, collision::Quad>) {
@@ -224,14 +231,9 @@ std::vector<Metrics> run_shape(const std::vector<Variant<S>>& variants, std::siz
 
 #define SWEEPTRACE_ACCURACY_RUN(S)                                                                                  \
     template Variant<S> variant_of<S>(std::string, bool (*)(const Ray&, const S&, collision::RayHit&));             \
-    template Metrics score<S>(const std::vector<S>&, const std::vector<Ray>&, const std::vector<Result>&);         \
-    template std::vector<Ray> secondary_rays<S>(const std::vector<Case<S>>&, const std::vector<Result>&, bool,     \
-                                                std::vector<std::size_t>&);                                         \
-    template bool is_self_hit<S>(const S&, const Ray&, bool, const Result&);                                        \
     template Metrics run_closed_meshes<S>(const Variant<S>&, const std::vector<ClosedMeshCase<S>>&);               \
     template std::vector<Metrics> run_shape<S>(const std::vector<Variant<S>>&, std::size_t, std::uint64_t);      \
-    template Metrics run_family<S>(const Variant<S>&, Family, std::size_t, std::uint64_t);                         \
-    template Metrics run_cases<S>(const Variant<S>&, Family, const std::vector<Case<S>>&);
+    template Metrics run_family<S>(const Variant<S>&, Family, std::size_t, std::uint64_t);
 SWEEPTRACE_ACCURACY_RUN(collision::Sphere)
 SWEEPTRACE_ACCURACY_RUN(collision::Aabb)
 SWEEPTRACE_ACCURACY_RUN(collision::Cylinder)

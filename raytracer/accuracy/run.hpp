@@ -71,26 +71,6 @@ std::vector<Metrics> run_shape(const std::vector<Variant<Shape>>& variants, std:
 template <class Shape>
 Metrics run_family(const Variant<Shape>& variant, Family f, std::size_t n, std::uint64_t seed);
 
-// Given cases of family f (surface families spawn secondary rays from the variant's own hits).
-template <class Shape>
-Metrics run_cases(const Variant<Shape>& variant, Family f, const std::vector<Case<Shape>>& cases);
-
-// Scoring one family's results (exposed for the stability tests).
-template <class Shape>
-Metrics score(const std::vector<Shape>& shapes, const std::vector<collision::Ray>& rays,
-              const std::vector<Result>& results);
-
-// Secondary rays spawned from a variant's own primary hits (pbrt's offset from its error bound).
-// `into` = toward the inside of a closed shape / through a flat one. Cases whose primary ray
-// missed are dropped; `kept` receives the indices of the cases kept.
-template <class Shape>
-std::vector<collision::Ray> secondary_rays(const std::vector<Case<Shape>>& cases, const std::vector<Result>& primary,
-                                           bool into, std::vector<std::size_t>& kept);
-
-// Does the variant's hit on a secondary ray re-hit the surface it left?
-template <class Shape>
-bool is_self_hit(const Shape& shape, const collision::Ray& secondary, bool into, const Result& r);
-
 // Rays from inside closed meshes: every miss is a leak.
 template <class Face>
 Metrics run_closed_meshes(const Variant<Face>& variant, const std::vector<ClosedMeshCase<Face>>& meshes);

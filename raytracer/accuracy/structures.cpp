@@ -9,9 +9,9 @@
 
 #include "collision/intersect.hpp"
 #include "raytracer/accel/embree_reference.hpp"
-#include "raytracer/accel/mesh_bvh.hpp"
+#include "raytracer/accel/mesh_ray_bvh.hpp"
 #include "raytracer/accel/mesh_hashed_grid.hpp"
-#include "raytracer/accel/mesh_octants.hpp"
+#include "raytracer/accel/mesh_ray_octants.hpp"
 #include "raytracer/accuracy/cases.hpp"
 #include "raytracer/accuracy/thread_timer.hpp"
 
@@ -57,9 +57,9 @@ Tracer build(const std::string& name, const collision::TriangleMesh& mesh, std::
             return out;
         };
     }
-    if (name == "octants") return tracer_of(std::make_shared<MeshOctants>(mesh), keep);
+    if (name == "octants") return tracer_of(std::make_shared<MeshRayOctants>(mesh), keep);
     if (name == "hashed-grid") return tracer_of(std::make_shared<MeshHashedGrid>(mesh), keep);
-    if (name == "bvh") return tracer_of(std::make_shared<MeshBvh>(mesh), keep);
+    if (name == "bvh") return tracer_of(std::make_shared<MeshRayBvh>(mesh), keep);
     auto s = std::make_shared<EmbreeTriangles>(mesh, false);
     keep = s;
     return [s](const Ray& r) {
@@ -78,7 +78,7 @@ std::vector<StructureRow> measure_structures(int min_level, int max_level, std::
     std::vector<StructureRow> rows;
     for (int level = min_level; level <= max_level; ++level) {
         const collision::TriangleMesh mesh = icosphere_mesh(level, glm::vec3(0.125f, -0.25f, 0.375f), 1.0f);
-        Rng rng(seed + std::uint64_t(level));
+        CaseRng rng(seed + std::uint64_t(level));
         std::uniform_real_distribution<float> u(-1.0f, 1.0f);
         std::vector<Ray> rays(max_rays);
         for (auto& r : rays) {

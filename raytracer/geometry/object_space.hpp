@@ -6,7 +6,7 @@
 
 #include <glm/mat4x4.hpp>
 
-#include "collision/bvh.hpp"
+#include "collision/bounds3.hpp"
 #include "collision/hit.hpp"
 #include "collision/ray.hpp"
 #include "raytracer/geometry/surface_hit.hpp"

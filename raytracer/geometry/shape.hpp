@@ -12,7 +12,7 @@
 #include <type_traits>
 #include <variant>
 
-#include "collision/bvh.hpp"
+#include "collision/bounds3.hpp"
 #include "raytracer/geometry/shapes/box.hpp"
 #include "raytracer/geometry/shapes/capsule.hpp"
 #include "raytracer/geometry/shapes/cylinder.hpp"

@@ -10,13 +10,14 @@
 #include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
 
+#include "collision/finite.hpp"
 #include "raytracer/image/srgb.hpp"
 #include "raytracer/input_error.hpp"
 
 namespace sweeptrace {
 namespace {
 
-bool finite(const glm::vec3& p) { return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z); }
+using collision::finite;
 
 glm::dvec3 in_space(const glm::vec3& p, DiffSpace space) {
     if (space == DiffSpace::Linear) return glm::dvec3(p);

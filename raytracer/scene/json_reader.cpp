@@ -62,14 +62,14 @@ public:
         case E::object_start:
         case E::array_start:
             count_element();
-            frames_.push_back(Frame{event == E::object_start, {}, {}, 0});
+            frames_.push_back(OpenContainer{event == E::object_start, {}, {}, 0});
             break;
         case E::object_end:
         case E::array_end:
             frames_.pop_back();
             break;
         case E::key: {
-            Frame& top = frames_.back();
+            OpenContainer& top = frames_.back();
             std::string key = parsed.get<std::string>();
             if (!top.keys.insert(key).second)
                 throw InputError(where(*file_, key_component(container_path(), key)) +
@@ -85,7 +85,7 @@ public:
     }
 
 private:
-    struct Frame {
+    struct OpenContainer {
         bool object;
         std::set<std::string> keys;
         std::string key;         // object: the key being read
@@ -100,7 +100,7 @@ private:
     std::string container_path() const {
         std::string path;
         for (std::size_t i = 0; i + 1 < frames_.size(); ++i) {
-            const Frame& f = frames_[i];
+            const OpenContainer& f = frames_[i];
             if (f.object)
                 path = key_component(path, f.key);
             else
@@ -110,7 +110,7 @@ private:
     }
 
     const std::filesystem::path* file_;
-    std::vector<Frame> frames_;
+    std::vector<OpenContainer> frames_;
 };
 
 }  // namespace

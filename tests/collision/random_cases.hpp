@@ -10,9 +10,9 @@
 
 namespace testing {
 
-struct Rng {
+struct SeededRng {
     std::mt19937 gen;
-    explicit Rng(std::uint32_t seed) : gen(seed) {}
+    explicit SeededRng(std::uint32_t seed) : gen(seed) {}
     float uniform(float lo, float hi) { return std::uniform_real_distribution<float>(lo, hi)(gen); }
     glm::vec3 vec(float lo, float hi) { return {uniform(lo, hi), uniform(lo, hi), uniform(lo, hi)}; }
     int integer(int lo, int hi) { return std::uniform_int_distribution<int>(lo, hi)(gen); }

@@ -12,6 +12,7 @@
 #include <sstream>
 #include <string>
 
+#include "collision/finite.hpp"
 #include "collision/float_error.hpp"
 #include "collision/hit.hpp"
 #include "collision/ray.hpp"
@@ -90,7 +91,7 @@ inline std::string check_answer(const collision::Ray& ray, bool got, const colli
     if (!got) return "";
     std::ostringstream s;
     s.precision(10);
-    const auto finite = [](const glm::vec3& x) { return std::isfinite(x.x) && std::isfinite(x.y) && std::isfinite(x.z); };
+    using collision::finite;
     if (!std::isfinite(hit.t) || !finite(hit.point) || !finite(hit.point_error) || !finite(hit.normal) ||
         !std::isfinite(hit.uv.x) || !std::isfinite(hit.uv.y))
         return "non-finite hit";

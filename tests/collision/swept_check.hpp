@@ -115,7 +115,7 @@ inline bool hit_of(bool b) { return b; }
 // check_against_discrete(); `scale` must bound every coordinate and size involved.
 template <class Make>
 SweptCheckStats random_sweeps(std::uint32_t seed, int count, double scale, Make make) {
-    Rng rng(seed);
+    SeededRng rng(seed);
     SweptCheckStats stats;
     for (int i = 0; i < count; ++i) {
         const auto [moving, motion, still] = make(rng);

@@ -88,7 +88,7 @@ TEST_CASE("hashed grid: every cell colliding in the hash returns no foreign ids 
     // hashes, so any query returned every object; here keys are compared in full.
     HashedGrid<ConstantHash> bad(1.0f);
     HashedGrid<> good(1.0f);
-    testing::Rng rng(3);
+    testing::SeededRng rng(3);
     std::vector<Aabb> boxes;
     for (std::uint32_t i = 0; i < 300; ++i) {
         const Aabb b{rng.vec(-20, 20), rng.vec(0.1f, 2.0f)};

@@ -1,6 +1,6 @@
 // Ray-plane, ray-disk, ray-quad: unit cases (parallel rays, rims and edges), degenerate input,
 // seeded random rays against the long double reference with the bounds stated in
-// collision/ray_plane.hpp.
+// collision/detail/ray_plane.hpp.
 #include <catch2/catch.hpp>
 
 #include <algorithm>
@@ -104,7 +104,7 @@ TEST_CASE("flat shapes: degenerate input is a miss, never NaN", "[intersect][pla
 
 namespace {
 
-// collision/ray_plane.hpp: |t - t_exact| <= eps |t| + 8 eps_d S / |n.d| with
+// collision/detail/ray_plane.hpp: |t - t_exact| <= eps |t| + 8 eps_d S / |n.d| with
 // S = sum |n_i| |p0_i - o_i| + |t| sum |n_i d_i| (n as used: unit for planes/disks, the
 // double cross product for quads; the bound is invariant to n's scale).
 reference::ShapeChecks flat_checks(const Ray& ray, const vec3l& p0, const vec3l& n) {

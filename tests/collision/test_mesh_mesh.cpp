@@ -47,7 +47,7 @@ bool inside_convex(const TriangleMesh& m, const glm::vec3& p) {
     return true;
 }
 
-glm::quat random_rotation(testing::Rng& rng) {
+glm::quat random_rotation(testing::SeededRng& rng) {
     const glm::vec3 axis = glm::normalize(rng.vec(-1, 1) + glm::vec3(1e-3f));
     return glm::angleAxis(rng.uniform(0.0f, 6.2831853f), axis);
 }
@@ -56,7 +56,7 @@ glm::quat random_rotation(testing::Rng& rng) {
 
 TEST_CASE("mesh-mesh: SAT, brute force, octants and BVH agree on a shared set", "[mesh]") {
     const std::vector<Fixture> set = shared_set();
-    testing::Rng rng(99);
+    testing::SeededRng rng(99);
     int touching = 0, apart = 0, sat_checked = 0, thesis_octant_misses = 0;
     for (int trial = 0; trial < 400; ++trial) {
         const Fixture& fa = set[rng.integer(0, int(set.size()) - 1)];
@@ -69,8 +69,8 @@ TEST_CASE("mesh-mesh: SAT, brute force, octants and BVH agree on a shared set", 
 
         const bool brute = overlap_brute(a, b);
         CHECK(overlap_octant(build_octants(a), build_octants(b)) == brute);
-        CHECK(overlap_bvh(build_mesh_bvh(a), build_mesh_bvh(b)) == brute);
-        CHECK(overlap_bvh(build_mesh_bvh(b), build_mesh_bvh(a)) == brute);
+        CHECK(overlap_bvh(build_overlap_bvh(a), build_overlap_bvh(b)) == brute);
+        CHECK(overlap_bvh(build_overlap_bvh(b), build_overlap_bvh(a)) == brute);
         if (overlap_octant(build_octants(a, OctantRule::vertices), build_octants(b, OctantRule::vertices)) != brute)
             ++thesis_octant_misses;
         if (fa.convex && fb0.convex) {
@@ -111,7 +111,7 @@ TEST_CASE("mesh-mesh: the thesis's octant vertex rule misses a triangle crossing
     b.indices = {{0, 1, 2}};
     REQUIRE(overlap_brute(a, b));
     CHECK(overlap_octant(build_octants(a), build_octants(b)));
-    CHECK(overlap_bvh(build_mesh_bvh(a), build_mesh_bvh(b)));
+    CHECK(overlap_bvh(build_overlap_bvh(a), build_overlap_bvh(b)));
     CHECK_FALSE(overlap_octant(build_octants(a, OctantRule::vertices), build_octants(b, OctantRule::vertices)));
 }
 
@@ -122,7 +122,7 @@ TEST_CASE("mesh-mesh: SAT with face normals only (the thesis's axes) reports an 
     const TriangleMesh a = testing::box_mesh({0.5f, 0.5f, 0.5f});
     const glm::quat q = glm::angleAxis(0.78539816f, glm::vec3(0, 1, 0)) * glm::angleAxis(0.78539816f, glm::vec3(1, 0, 0));
     int found = 0;
-    testing::Rng rng(12);
+    testing::SeededRng rng(12);
     for (int i = 0; i < 2000 && found < 5; ++i) {
         const TriangleMesh b = testing::transformed(testing::box_mesh({0.5f, 0.5f, 0.5f}), q, rng.vec(-1.6f, 1.6f));
         const bool exact = overlap_sat(a, b, SatAxes::faces_and_edges).hit;
@@ -149,7 +149,7 @@ TEST_CASE("mesh-mesh: bad meshes are rejected with a message; empty meshes never
     CHECK_THROWS_WITH(overlap_brute(broken, box), Catch::Contains("triangle 12") && Catch::Contains("vertex 99"));
     CHECK_THROWS_AS(overlap_sat(box, broken), std::invalid_argument);
     CHECK_THROWS_AS(build_octants(broken), std::invalid_argument);
-    CHECK_THROWS_AS(build_mesh_bvh(broken), std::invalid_argument);
+    CHECK_THROWS_AS(build_overlap_bvh(broken), std::invalid_argument);
     TriangleMesh nan_mesh = box;
     nan_mesh.vertices[3].y = std::numeric_limits<float>::quiet_NaN();
     CHECK_THROWS_WITH(overlap_brute(box, nan_mesh), Catch::Contains("second mesh") && Catch::Contains("vertex 3"));
@@ -157,7 +157,7 @@ TEST_CASE("mesh-mesh: bad meshes are rejected with a message; empty meshes never
     CHECK_FALSE(overlap_brute(empty, box));
     CHECK_FALSE(overlap_sat(empty, box).hit);
     CHECK_FALSE(overlap_octant(build_octants(empty), build_octants(box)));
-    CHECK_FALSE(overlap_bvh(build_mesh_bvh(empty), build_mesh_bvh(box)));
+    CHECK_FALSE(overlap_bvh(build_overlap_bvh(empty), build_overlap_bvh(box)));
 }
 
 // Not a pass/fail test (hidden tag, not registered with ctest): prints how much work and time
@@ -193,7 +193,8 @@ TEST_CASE("mesh-mesh figures", "[.mesh_figures]") {
         };
         run("brute force", [&](MeshPairStats& s) { return overlap_brute(p.a, p.b, &s); });
         run("8 octants (build incl.)", [&](MeshPairStats& s) { return overlap_octant(build_octants(p.a), build_octants(p.b), &s); });
-        run("BVH (build incl.)", [&](MeshPairStats& s) { return overlap_bvh(build_mesh_bvh(p.a), build_mesh_bvh(p.b), &s); });
+        run("BVH (build incl.)",
+            [&](MeshPairStats& s) { return overlap_bvh(build_overlap_bvh(p.a), build_overlap_bvh(p.b), &s); });
         if (p.convex) {
             run("SAT faces (thesis axes)", [&](MeshPairStats& s) { return overlap_sat(p.a, p.b, SatAxes::faces, &s).hit; });
             run("SAT faces+edges", [&](MeshPairStats& s) { return overlap_sat(p.a, p.b, SatAxes::faces_and_edges, &s).hit; });

@@ -20,7 +20,7 @@ const float qnan = std::numeric_limits<float>::quiet_NaN();
 
 // Aimed roughly at each other so about half the cases hit.
 template <class Shape>
-std::tuple<Shape, glm::vec3, Shape> aimed(testing::Rng& rng, const Shape& m, const Shape& s) {
+std::tuple<Shape, glm::vec3, Shape> aimed(testing::SeededRng& rng, const Shape& m, const Shape& s) {
     return {m, (s.center - m.center) * rng.uniform(0.2f, 1.6f) + rng.vec(-1, 1), s};
 }
 
@@ -114,20 +114,20 @@ TEST_CASE("swept capsule-capsule: side, rounded ends, coaxial, start overlap, de
 
 TEST_CASE("swept box-box agrees with the discrete test on 10,000 random cases", "[swept][box][random]") {
     // Scale 12 bounds every coordinate and size involved (here and below).
-    check_counts(testing::random_sweeps(11, 10000, 12.0, [](testing::Rng& rng) {
+    check_counts(testing::random_sweeps(11, 10000, 12.0, [](testing::SeededRng& rng) {
         return aimed(rng, Aabb{rng.vec(-3, 3), rng.vec(0.1f, 2.0f)}, Aabb{rng.vec(-1, 1), rng.vec(0.1f, 2.0f)});
     }));
 }
 
 TEST_CASE("swept cylinder-cylinder agrees with the discrete test on 10,000 random cases", "[swept][cylinder][random]") {
-    check_counts(testing::random_sweeps(12, 10000, 12.0, [](testing::Rng& rng) {
+    check_counts(testing::random_sweeps(12, 10000, 12.0, [](testing::SeededRng& rng) {
         return aimed(rng, Cylinder{rng.vec(-3, 3), rng.uniform(0.05f, 1), rng.uniform(0.05f, 2)},
                      Cylinder{rng.vec(-1, 1), rng.uniform(0.05f, 1), rng.uniform(0.05f, 2)});
     }));
 }
 
 TEST_CASE("swept capsule-capsule agrees with the discrete test on 10,000 random cases", "[swept][capsule][random]") {
-    check_counts(testing::random_sweeps(13, 10000, 12.0, [](testing::Rng& rng) {
+    check_counts(testing::random_sweeps(13, 10000, 12.0, [](testing::SeededRng& rng) {
         return aimed(rng, Capsule{rng.vec(-3, 3), rng.uniform(0.05f, 1), rng.uniform(0, 2)},
                      Capsule{rng.vec(-1, 1), rng.uniform(0.05f, 1), rng.uniform(0, 2)});
     }));

@@ -76,7 +76,7 @@ TEST_CASE("swept ellipsoid-triangle: scaling keeps the time exact", "[swept][ell
 
 TEST_CASE("swept sphere-triangle agrees with the discrete test on 10,000 random cases", "[swept][sphere_triangle][random]") {
     // Scale 12 bounds every coordinate and radius involved.
-    const auto stats = testing::random_sweeps(21, 10000, 12.0, [](testing::Rng& rng) {
+    const auto stats = testing::random_sweeps(21, 10000, 12.0, [](testing::SeededRng& rng) {
         const Triangle tri = rng.triangle({0, 0, 0}, 1.5f);
         const Sphere m{rng.vec(-3, 3), rng.uniform(0.05f, 1.0f)};
         return std::tuple{m, -m.center * rng.uniform(0.2f, 1.6f) + rng.vec(-1, 1), tri};
@@ -88,7 +88,7 @@ TEST_CASE("swept sphere-triangle agrees with the discrete test on 10,000 random 
 
 TEST_CASE("swept ellipsoid-triangle agrees with the discrete test on 10,000 random cases", "[swept][ellipsoid][random]") {
     // In scaled space coordinates grow by up to 1 / min radius = 10: scale 120.
-    const auto stats = testing::random_sweeps(22, 10000, 120.0, [](testing::Rng& rng) {
+    const auto stats = testing::random_sweeps(22, 10000, 120.0, [](testing::SeededRng& rng) {
         const Triangle tri = rng.triangle({0, 0, 0}, 1.5f);
         const Ellipsoid m{rng.vec(-3, 3), rng.vec(0.1f, 1.0f)};
         return std::tuple{m, -m.center * rng.uniform(0.2f, 1.6f) + rng.vec(-1, 1), tri};

@@ -45,7 +45,7 @@ TEST_CASE("swept sphere-sphere: hit, miss, tangent, overlap at start, degenerate
 
 TEST_CASE("swept sphere-sphere agrees with the discrete test on 10,000 random cases", "[swept][sphere][random]") {
     // 12 bounds every coordinate: centres within 3 sqrt(3), motions within ~8.
-    const auto stats = testing::random_sweeps(101, 10000, 12.0, [](testing::Rng& rng) {
+    const auto stats = testing::random_sweeps(101, 10000, 12.0, [](testing::SeededRng& rng) {
         const Sphere m{rng.vec(-3, 3), rng.uniform(0.05f, 1.0f)};
         const Sphere s{rng.vec(-1, 1), rng.uniform(0.05f, 1.0f)};
         return std::tuple{m, (s.center - m.center) * rng.uniform(0.2f, 1.6f) + rng.vec(-1, 1), s};

@@ -103,7 +103,7 @@ TEST_CASE("swept triangle-triangle agrees with the discrete Möller test on 12,0
           "[swept][tri_tri][random]") {
     // Scale 8 bounds every coordinate involved (vertices within ~4.5, motions within ~6).
     int i = 0;
-    const auto stats = testing::random_sweeps(4711, 12000, 8.0, [&i](testing::Rng& rng) {
+    const auto stats = testing::random_sweeps(4711, 12000, 8.0, [&i](testing::SeededRng& rng) {
         Triangle m = rng.triangle(rng.vec(-2, 2), 1.0f);
         Triangle s = rng.triangle(rng.vec(-1, 1), 1.0f);
         // Aimed roughly at the still triangle so about half the cases hit.

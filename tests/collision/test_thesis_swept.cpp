@@ -28,7 +28,7 @@ TEST_CASE("thesis swept tests: where they break", "[thesis][swept]") {
 }
 
 TEST_CASE("thesis swept tests agree with the defaults on generic random input", "[thesis][swept][random]") {
-    testing::Rng rng(55);
+    testing::SeededRng rng(55);
     int compared = 0;
     for (int i = 0; i < 3000; ++i) {
         const Triangle tri = rng.triangle({0, 0, 0}, 1.5f);

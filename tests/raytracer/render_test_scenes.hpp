@@ -18,13 +18,13 @@
 
 namespace sweeptrace::test {
 
-class BruteForceAccel final : public Accel {
+class DoublePrecisionAccel final : public Accel {
 public:
-    explicit BruteForceAccel(const Scene& scene) : scene_(scene) {
+    explicit DoublePrecisionAccel(const Scene& scene) : scene_(scene) {
         for (const Object& o : scene.objects) {
-            if (!o.transform.identity) throw std::invalid_argument("BruteForceAccel: transforms not supported");
+            if (!o.transform.identity) throw std::invalid_argument("DoublePrecisionAccel: transforms not supported");
             if (!std::holds_alternative<collision::Sphere>(o.shape) && !std::holds_alternative<collision::Quad>(o.shape))
-                throw std::invalid_argument("BruteForceAccel: spheres and quads only");
+                throw std::invalid_argument("DoublePrecisionAccel: spheres and quads only");
         }
     }
 

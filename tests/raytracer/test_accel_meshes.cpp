@@ -11,7 +11,7 @@
 
 #include "raytracer/accel/bvh_accel.hpp"
 #include "raytracer/accel/embree_accel.hpp"
-#include "raytracer/accel/mesh_bvh.hpp"
+#include "raytracer/accel/mesh_ray_bvh.hpp"
 #include "raytracer/scene/obj_loader.hpp"
 
 using namespace sweeptrace;
@@ -36,7 +36,7 @@ TEST_CASE("accel: every triangle of the shared meshes is in the tree and reachab
         INFO(name);
         const Scene scene = mesh_only(load_obj(dir / name));
         const collision::TriangleMesh& tris = scene.meshes[0].triangles;
-        const MeshBvh mesh_bvh(tris);
+        const MeshRayBvh mesh_bvh(tris);
         const collision::Bvh& bvh = mesh_bvh.bvh();
 
         // Structure: each triangle in exactly one leaf, its vertices inside that leaf's box.

@@ -14,7 +14,7 @@
 #include "render_test_stats.hpp"
 
 using namespace sweeptrace;
-using sweeptrace::test::BruteForceAccel;
+using sweeptrace::test::DoublePrecisionAccel;
 using sweeptrace::test::z_bound;
 
 namespace {
@@ -68,7 +68,7 @@ glm::dvec3 image_mean(const Image& img) {
 TEST_CASE("render: white furnace, a convex diffuse sphere reads rho L at every covered pixel", "[render][furnace]") {
     const glm::vec3 rho(0.6f, 0.3f, 0.9f), env(1.0f, 2.0f, 0.5f);
     const Scene s = furnace_scene(rho, env);
-    const BruteForceAccel accel(s);
+    const DoublePrecisionAccel accel(s);
     for (Sampling mode : {Sampling::NeeMis, Sampling::BsdfOnly}) {
         RenderOptions o = options(8);
         o.sampling = mode;
@@ -90,7 +90,7 @@ TEST_CASE("render: white furnace, a convex diffuse sphere reads rho L at every c
 
 TEST_CASE("render: max_depth 1 shows only emitters and the background", "[render][depth]") {
     const Scene s = furnace_scene(glm::vec3(0.5f), glm::vec3(1.0f));
-    const BruteForceAccel accel(s);
+    const DoublePrecisionAccel accel(s);
     RenderOptions o = options(2);
     o.max_depth = 1;
     const RenderResult r = render(s, accel, o);
@@ -100,7 +100,7 @@ TEST_CASE("render: max_depth 1 shows only emitters and the background", "[render
 
 TEST_CASE("render: the planted NoRayOffset defect makes surfaces re-hit themselves (acne)", "[render][defect]") {
     const Scene s = furnace_scene(glm::vec3(0.8f), glm::vec3(1.0f));
-    const BruteForceAccel accel(s);
+    const DoublePrecisionAccel accel(s);
     RenderOptions o = options(16);
     const RenderResult r = render_with_planted_defect(s, accel, o, PlantedDefect::NoRayOffset);
     // Without offset, about half the reflected rays start inside the sphere (the point is rounded
@@ -123,7 +123,7 @@ TEST_CASE("render: inside a closed emissive diffuse sphere, radiance is Le (1 - 
     m.two_sided_emission = true;
     s.materials.push_back(m);
     test::add_object(s, collision::Sphere{{0.0f, 0.0f, 0.0f}, 1.0f}, 0);
-    const BruteForceAccel accel(s);
+    const DoublePrecisionAccel accel(s);
     const double expected = le * (1.0 - std::pow(rho, depth)) / (1.0 - rho);
     for (Sampling mode : {Sampling::NeeMis, Sampling::BsdfOnly}) {
         INFO((mode == Sampling::NeeMis ? "NEE+MIS" : "BSDF only"));
@@ -146,7 +146,7 @@ TEST_CASE("render: inside a closed emissive diffuse sphere, radiance is Le (1 - 
 
 TEST_CASE("render: NEE+MIS and BSDF-only sampling converge to the same image (quad and sphere lights)", "[render][mis]") {
     const Scene s = test::two_light_scene(24, 18);
-    const BruteForceAccel accel(s);
+    const DoublePrecisionAccel accel(s);
     RenderOptions a = options(128, 11);
     RenderOptions b = options(1024, 12);
     b.sampling = Sampling::BsdfOnly;
@@ -188,7 +188,7 @@ TEST_CASE("render: NEE+MIS and BSDF-only sampling converge to the same image (qu
 
 TEST_CASE("render: the image is identical bit for bit at 1, 2 and 3 threads, with or without progress", "[render][determinism]") {
     const Scene s = test::two_light_scene(37, 21);  // not a multiple of the tile size
-    const BruteForceAccel accel(s);
+    const DoublePrecisionAccel accel(s);
     RenderOptions o = options(3, 42);
     o.threads = 1;
     const RenderResult one = render(s, accel, o);
@@ -249,7 +249,7 @@ private:
 
 TEST_CASE("render: a cancelled render returns whole passes: the image of spp = completed_spp", "[render][cancel]") {
     const Scene s = test::two_light_scene(20, 20);
-    const BruteForceAccel accel(s);
+    const DoublePrecisionAccel accel(s);
     RenderOptions o = options(10, 3);
     const RenderResult full = render(s, accel, o);
     const std::uint64_t rays_per_pass = full.stats.rays / 10;
@@ -278,7 +278,7 @@ TEST_CASE("render: a cancelled render returns whole passes: the image of spp = c
 
 TEST_CASE("render: the planted FlippedNormals defect turns one-sided lights away", "[render][defect]") {
     const Scene s = test::two_light_scene(16, 12);
-    const BruteForceAccel accel(s);
+    const DoublePrecisionAccel accel(s);
     RenderOptions o = options(8, 2);
     const double good = image_mean(render(s, accel, o).image).g;
     const double bad = image_mean(render_with_planted_defect(s, accel, o, PlantedDefect::FlippedNormals).image).g;
@@ -291,7 +291,7 @@ TEST_CASE("render: the planted FlippedNormals defect turns one-sided lights away
 
 TEST_CASE("render: invalid options are rejected", "[render]") {
     const Scene s = furnace_scene(glm::vec3(0.5f), glm::vec3(1.0f));
-    const BruteForceAccel accel(s);
+    const DoublePrecisionAccel accel(s);
     RenderOptions o = options(0);
     CHECK_THROWS_AS(render(s, accel, o), std::invalid_argument);
     o = options(1);

@@ -63,7 +63,7 @@ TEST_CASE("reference: touching cases are Boundary, a hair away is decided", "[st
 
 TEST_CASE("reference: across a shared edge exactly one of two triangles is hit, or both are Boundary",
           "[stability][reference]") {
-    Rng rng(7);
+    CaseRng rng(7);
     std::uniform_real_distribution<float> u(-1.0f, 1.0f);
     int boundary = 0;
     for (int i = 0; i < 20000; ++i) {

@@ -6,7 +6,7 @@
 #include <string_view>
 #include <vector>
 
-#include "collision/bvh.hpp"
+#include "collision/bounds3.hpp"
 #include "collision/shapes.hpp"
 #include "raytracer/geometry/shapes/mesh_instance.hpp"
 #include "raytracer/geometry/shapes/scene_keys.hpp"

@@ -11,7 +11,7 @@
 
 #include <glm/vec3.hpp>
 
-#include "collision/bvh.hpp"
+#include "collision/bounds3.hpp"
 #include "collision/mesh.hpp"
 #include "raytracer/geometry/shapes/shape_light.hpp"
 

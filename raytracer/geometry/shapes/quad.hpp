@@ -5,7 +5,7 @@
 #include <string_view>
 #include <vector>
 
-#include "collision/bvh.hpp"
+#include "collision/bounds3.hpp"
 #include "collision/float_error.hpp"
 #include "collision/shapes.hpp"
 #include "raytracer/geometry/shapes/mesh_instance.hpp"

@@ -2,7 +2,7 @@
 // Object-space boxes rounded outward, so that a box computed in float holds the exact shape.
 #include <glm/vec3.hpp>
 
-#include "collision/bvh.hpp"
+#include "collision/bounds3.hpp"
 #include "collision/float_error.hpp"
 
 namespace sweeptrace {

@@ -10,7 +10,7 @@
 #include "collision/float_error.hpp"
 #include "collision/hit.hpp"
 #include "collision/intersect.hpp"
-#include "collision/overlap_common.hpp"
+#include "collision/detail/overlap_common.hpp"
 
 namespace collision::detail {
 

@@ -11,18 +11,12 @@
 
 namespace collision {
 
-MeshBvh build_mesh_bvh(const TriangleMesh& m) {
+MeshOverlapBvh build_overlap_bvh(const TriangleMesh& m) {
     validate_mesh(m, "mesh");
-    std::vector<Bounds3> boxes(m.triangle_count());
-    std::vector<glm::vec3> centroids(m.triangle_count());
-    for (std::size_t i = 0; i < boxes.size(); ++i) {
-        boxes[i] = triangle_bounds(m, i);
-        centroids[i] = 0.5f * boxes[i].lo + 0.5f * boxes[i].hi;
-    }
-    return MeshBvh{&m, build_bvh(boxes, centroids)};
+    return MeshOverlapBvh{&m, build_triangle_bvh(m)};
 }
 
-bool overlap_bvh(const MeshBvh& a, const MeshBvh& b, MeshPairStats* stats) {
+bool overlap_bvh(const MeshOverlapBvh& a, const MeshOverlapBvh& b, MeshPairStats* stats) {
     validate_mesh(*a.mesh, "first mesh");
     validate_mesh(*b.mesh, "second mesh");
     if (a.bvh.nodes.empty() || b.bvh.nodes.empty()) return false;

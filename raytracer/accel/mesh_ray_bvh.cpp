@@ -1,35 +1,24 @@
-#include "raytracer/accel/mesh_bvh.hpp"
+#include "raytracer/accel/mesh_ray_bvh.hpp"
 
+#include "collision/mesh_boxes.hpp"
 #include "collision/triangle_watertight.hpp"
 #include "raytracer/accel/bvh_traversal.hpp"
 
 namespace sweeptrace {
 
-MeshBvh::MeshBvh(const collision::TriangleMesh& mesh) {
-    const std::size_t n = mesh.triangle_count();
-    std::vector<collision::Bounds3> boxes(n);
-    std::vector<glm::vec3> centroids(n);
-    for (std::size_t i = 0; i < n; ++i) {
-        const collision::Triangle t = mesh.triangle(i);
-        boxes[i].extend(t.a);
-        boxes[i].extend(t.b);
-        boxes[i].extend(t.c);
-        // The box centre, not the vertex mean: it is exact to one rounding and splits long thin
-        // triangles where their extent is.
-        centroids[i] = 0.5f * (boxes[i].lo + boxes[i].hi);
-    }
+MeshRayBvh::MeshRayBvh(const collision::TriangleMesh& mesh) {
     collision::BvhBuildOptions options;
     options.max_leaf_size = 8;
     // A node visit (two child box tests, the stack) costs about three watertight triangle tests
     // here: measured on the Stanford bunny, traversal cost 1 / 2 / 3 gave 0.26 / 0.30 /
     // 0.30 Mrays/s at 74 / 63 / 55 bytes per triangle; 3 keeps the speed in less memory.
     options.traversal_cost = 3.0f;
-    bvh_ = collision::build_bvh(boxes, centroids, options);
-    triangles_.reserve(n);
+    bvh_ = collision::build_triangle_bvh(mesh, options);
+    triangles_.reserve(mesh.triangle_count());
     for (std::uint32_t prim : bvh_.prim_indices) triangles_.push_back(mesh.triangle(prim));
 }
 
-bool MeshBvh::intersect(const collision::Ray& ray, collision::RayHit& hit, std::uint32_t& triangle) const {
+bool MeshRayBvh::intersect(const collision::Ray& ray, collision::RayHit& hit, std::uint32_t& triangle) const {
     const collision::TriangleRay tr = collision::prepare_triangle_ray(ray);
     if (!tr.valid) return false;
     const TraversalRay r(ray);
@@ -55,7 +44,7 @@ bool MeshBvh::intersect(const collision::Ray& ray, collision::RayHit& hit, std::
     return true;
 }
 
-bool MeshBvh::occluded(const collision::Ray& ray) const {
+bool MeshRayBvh::occluded(const collision::Ray& ray) const {
     const collision::TriangleRay tr = collision::prepare_triangle_ray(ray);
     if (!tr.valid) return false;
     const TraversalRay r(ray);
@@ -72,12 +61,12 @@ bool MeshBvh::occluded(const collision::Ray& ray) const {
     return hit;
 }
 
-collision::Bounds3 MeshBvh::bounds() const {
+collision::Bounds3 MeshRayBvh::bounds() const {
     if (bvh_.nodes.empty()) return {};
     return collision::Bounds3{bvh_.nodes[0].lo, bvh_.nodes[0].hi};
 }
 
-std::size_t MeshBvh::memory_bytes() const {
+std::size_t MeshRayBvh::memory_bytes() const {
     return bvh_.memory_bytes() + triangles_.capacity() * sizeof(collision::Triangle);
 }
 

@@ -13,13 +13,13 @@
 
 namespace collision {
 
-OctantMesh build_octants(const TriangleMesh& m, OctantRule rule) {
+OctantPartition build_octants(const TriangleMesh& m, OctantRule rule) {
     validate_mesh(m, "mesh");
-    OctantMesh o;
+    OctantPartition o;
     o.mesh = &m;
     o.bounds = mesh_bounds(m);
     if (o.bounds.empty()) return o;
-    const glm::vec3 c = 0.5f * o.bounds.lo + 0.5f * o.bounds.hi;
+    const glm::vec3 c = o.bounds.center();
     for (int k = 0; k < 8; ++k) {
         for (int axis = 0; axis < 3; ++axis) {
             const bool upper = (k >> axis) & 1;
@@ -45,7 +45,7 @@ OctantMesh build_octants(const TriangleMesh& m, OctantRule rule) {
     return o;
 }
 
-bool overlap_octant(const OctantMesh& a, const OctantMesh& b, MeshPairStats* stats) {
+bool overlap_octant(const OctantPartition& a, const OctantPartition& b, MeshPairStats* stats) {
     validate_mesh(*a.mesh, "first mesh");
     validate_mesh(*b.mesh, "second mesh");
     MeshPairStats local;

@@ -12,6 +12,7 @@
 #include <glm/vec3.hpp>
 #include <glm/geometric.hpp>
 
+#include "collision/finite.hpp"
 #include "collision/hit.hpp"
 
 namespace collision::detail {
@@ -19,10 +20,6 @@ namespace collision::detail {
 using dvec3 = glm::dvec3;
 
 inline dvec3 to_double(const glm::vec3& v) { return dvec3(v); }
-
-inline bool finite(float x) { return std::isfinite(x); }
-inline bool finite(const glm::vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
-inline bool finite(const dvec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 
 // A radius is usable when it is finite and strictly positive (NaN fails the comparison).
 inline bool valid_radius(float r) { return r > 0.0f && std::isfinite(r); }

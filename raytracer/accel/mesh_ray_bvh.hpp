@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "collision/bounds3.hpp"
 #include "collision/bvh.hpp"
 #include "collision/hit.hpp"
 #include "collision/mesh.hpp"
@@ -12,9 +13,9 @@
 
 namespace sweeptrace {
 
-class MeshBvh {
+class MeshRayBvh {
 public:
-    explicit MeshBvh(const collision::TriangleMesh& mesh);
+    explicit MeshRayBvh(const collision::TriangleMesh& mesh);
 
     // Nearest triangle hit with ray.tmin < t < ray.tmax (object space): writes hit and the
     // mesh's triangle index only when found.

@@ -18,6 +18,7 @@
 #include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
 
+#include "collision/finite.hpp"
 #include "collision/float_error.hpp"
 #include "collision/ray.hpp"
 
@@ -53,7 +54,7 @@ inline bool ray_plane_point(const Ray& ray, const glm::dvec3& p0, const glm::dve
     const glm::dvec3 o(ray.origin), d(ray.dir);
     const double t = out.t;
     out.point = o + t * d;
-    if (!std::isfinite(out.point.x) || !std::isfinite(out.point.y) || !std::isfinite(out.point.z)) return false;
+    if (!finite(out.point)) return false;
     const glm::dvec3 an = glm::abs(n);
     const double s = glm::dot(an, glm::abs(p0 - o)) + std::fabs(t) * glm::dot(an, glm::abs(d));
     const double n_len = glm::length(n);
