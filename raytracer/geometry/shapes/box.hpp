@@ -46,7 +46,7 @@ BoxShape::Geometry BoxShape::read(const Node& node, Loader&) {
                 max.element(static_cast<std::size_t>(k))
                     .fail("must be > min[" + std::to_string(k) + "] (" +
                           min.element(static_cast<std::size_t>(k)).shown() + ")");
-        box.center = 0.5f * (lo + hi);
+        box.center = collision::Bounds3{lo, hi}.center();  // overflow-safe midpoint
         box.size = hi - lo;
     }
     return box;
