@@ -308,3 +308,41 @@ FlipResult flip(const Image& reference, const Image& test, const FlipOptions& op
 }
 
 }  // namespace sweeptrace
+
+namespace sweeptrace {
+
+double flip_largest_window_mean(const FlipResult& r, int window) {
+    const int wx = std::min(window, r.width), wy = std::min(window, r.height);
+    if (wx <= 0 || wy <= 0) return 0.0;
+    // Summed-area table, one row and column of zeros in front.
+    const int W = r.width + 1;
+    std::vector<double> sat(static_cast<std::size_t>(W) * (r.height + 1), 0.0);
+    for (int y = 0; y < r.height; ++y)
+        for (int x = 0; x < r.width; ++x)
+            sat[std::size_t(y + 1) * W + x + 1] = r.error[std::size_t(y) * r.width + x] + sat[std::size_t(y) * W + x + 1] +
+                                                   sat[std::size_t(y + 1) * W + x] - sat[std::size_t(y) * W + x];
+    double best = 0.0;
+    for (int y = 0; y + wy <= r.height; ++y)
+        for (int x = 0; x + wx <= r.width; ++x) {
+            const double s = sat[std::size_t(y + wy) * W + x + wx] - sat[std::size_t(y) * W + x + wx] -
+                             sat[std::size_t(y + wy) * W + x] + sat[std::size_t(y) * W + x];
+            best = std::max(best, s / (wx * wy));
+        }
+    return best;
+}
+
+Image flip_heatmap(const FlipResult& r) {
+    static const glm::dvec3 stops[] = {{0, 0, 0}, {0, 0, 1}, {0, 1, 1}, {0, 1, 0}, {1, 1, 0}, {1, 0, 0}};
+    Image out(r.width, r.height);
+    for (std::size_t i = 0; i < r.error.size(); ++i) {
+        const double t = std::clamp(static_cast<double>(r.error[i]), 0.0, 1.0) * 5.0;
+        const int k = std::min(static_cast<int>(t), 4);
+        const glm::dvec3 c = glm::mix(stops[k], stops[k + 1], t - k);
+        // write_image encodes to sRGB: decode so the PNG holds exactly the ramp's colours.
+        for (int ch = 0; ch < 3; ++ch)
+            out.pixels[i][ch] = static_cast<float>(c[ch] <= 0.04045 ? c[ch] / 12.92 : std::pow((c[ch] + 0.055) / 1.055, 2.4));
+    }
+    return out;
+}
+
+}  // namespace sweeptrace

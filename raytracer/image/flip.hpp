@@ -83,3 +83,14 @@ double tone_map(double x, FlipToneMapper tone_mapper);
 
 }  // namespace flip_detail
 }  // namespace sweeptrace
+
+namespace sweeptrace {
+
+// The largest mean FLIP over any window x window block of pixels (clipped to the image): a
+// defect covering a few pixels shows here long before it moves the image's mean.
+double flip_largest_window_mean(const FlipResult& result, int window);
+
+// FLIP map in false colour (black 0, blue, cyan, green, yellow, red at 1), linear RGB.
+Image flip_heatmap(const FlipResult& result);
+
+}  // namespace sweeptrace
