@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "raytracer/cli/commands.hpp"
+#include "raytracer/cli/diff_folder.hpp"
 #include "raytracer/cli/diff_pair.hpp"
 #include "raytracer/image/image.hpp"
 #include "raytracer/input_error.hpp"
@@ -20,6 +21,7 @@ struct DiffArgs {
     std::vector<float> background{0.0f, 0.0f, 0.0f};
     bool linear = false, flip_details = false;
     double heatmap_scale = 0.0;
+    FolderArgs folder;
     DiffSettings settings;
 };
 
@@ -66,6 +68,12 @@ void prepare_settings(DiffArgs& args, const CLI::App& cmd) {
 
 int run_diff(DiffArgs& args, const CLI::App& cmd) {
     prepare_settings(args, cmd);
+    if (!args.folder.golden.empty() || !args.folder.actual.empty()) {
+        if (!args.a.empty() || !args.b.empty())
+            throw InputError("give either two images A B or --golden DIR --actual DIR, not both");
+        return run_diff_folders(args.folder, args.settings);
+    }
+    if (args.a.empty() || args.b.empty()) throw InputError("diff needs two images A B (or --golden DIR --actual DIR)");
     require_writable_parent(args.heatmap, "heatmap");
     const PairReport r = compare_pair({args.a, args.b, args.variance_a, args.variance_b}, args.settings);
     print_report(r, stdout);
@@ -116,7 +124,8 @@ void add_diff_command(CLI::App& app, int& exit_code) {
     auto args = std::make_shared<DiffArgs>();
     auto* cmd = app.add_subcommand(
         "diff",
-        "Compare image A against the reference B (.png, .pfm, .exr). Exit 0 within tolerance, 1 over it, 2 bad input, 4 a warning (within the limits, mean\n"
+        "Compare image A against the reference B (.png, .pfm, .exr), or every image of --actual DIR against\n"
+        "the golden of the same name in --golden DIR. Exit 0 within tolerance, 1 over it, 2 bad input, 4 a warning (within the limits, mean\n"
         "FLIP over --warn-flip). Default verdict: mean FLIP (LDR, or HDR-FLIP for two float files) <= 0.04 and\n"
         "the worst 3x3 pixels' mean FLIP <= 0.3, RMSE <= 0.05 and <= 1% of pixels over the pixel threshold\n"
         "(display space: clamped, sRGB-encoded, unless --linear). These reject a 12x12 hole, a 4x4 white\n"
@@ -124,8 +133,8 @@ void add_diff_command(CLI::App& app, int& exit_code) {
         "different seeds: give --variance-a and --variance-b (float files from `render --variance`); the\n"
         "z-test on block means then replaces the RMSE, share and FLIP limits. Alpha, when present, is\n"
         "compared (--max-alpha) and both images are composited over --background (linear, default black).");
-    cmd->add_option("A", args->a, "Image under test")->required();
-    cmd->add_option("B", args->b, "Reference image")->required();
+    cmd->add_option("A", args->a, "Image under test");
+    cmd->add_option("B", args->b, "Reference image");
     cmd->add_option("--heatmap", args->heatmap, "Write a false-colour image of the differences (after the verdict)");
     cmd->add_option("--heatmap-of", args->heatmap_of, "flip (the FLIP map) or abs (largest channel difference)")
         ->capture_default_str()->check(CLI::IsMember({"flip", "abs"}));
@@ -143,6 +152,7 @@ void add_diff_command(CLI::App& app, int& exit_code) {
         ->check(CLI::Range(1, 256));
     add_threshold_options(cmd, *args);
     add_flip_options(cmd, *args);
+    add_folder_options(cmd, args->folder);
     cmd->callback([args, cmd, &exit_code] { exit_code = run_diff(*args, *cmd); });
 }
 
