@@ -8,7 +8,7 @@
 #include <string>
 
 #include "raytracer/cli/diff_folder.hpp"
-#include "raytracer/image/atomic_file.hpp"
+#include "raytracer/cli/report_text.hpp"
 #include "raytracer/image/image.hpp"
 #include "raytracer/input_error.hpp"
 
@@ -17,33 +17,12 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::string html_escape(const std::string& s) {
-    std::string out;
-    for (char c : s) {
-        switch (c) {
-            case '&': out += "&amp;"; break;
-            case '<': out += "&lt;"; break;
-            case '>': out += "&gt;"; break;
-            case '"': out += "&quot;"; break;
-            default: out += c;
-        }
-    }
-    return out;
-}
 
 // File names in the report directory for one image (the name keeps its extension so a.png and
 // a.exr cannot collide).
 std::string panel_file(const std::string& name, const char* panel) { return name + "." + panel + ".png"; }
 std::string page_file(const std::string& name) { return name + ".html"; }
 
-void write_text(const fs::path& path, const std::string& text) {
-    write_atomically(path, [&](const fs::path& temp) {
-        std::ofstream out(temp, std::ios::binary);
-        out << text;
-        out.close();
-        if (!out) throw InputError("cannot write '" + path.string() + "'");
-    });
-}
 
 std::string replace_all(std::string s, const std::string& key, const std::string& value) {
     for (std::size_t at = s.find(key); at != std::string::npos; at = s.find(key, at + value.size()))
@@ -75,9 +54,9 @@ std::string metrics_rows(const PairReport& r) {
     row("RMSE", number_text(m.rmse));
     row("PSNR", number_text(m.psnr) + " dB (peak " + number_text(m.psnr_peak) + ")");
     row("max |a-b|", number_text(m.max_abs));
-    if (r.noise) row("noise test", html_escape(r.noise->summary()));
-    for (const auto& f2 : r.failures) row("over", html_escape(f2));
-    for (const auto& w : r.warnings) row("warning", html_escape(w));
+    if (r.noise) row("noise test", markup_escape(r.noise->summary()));
+    for (const auto& f2 : r.failures) row("over", markup_escape(f2));
+    for (const auto& w : r.warnings) row("warning", markup_escape(w));
     return t + "</table>";
 }
 
@@ -89,20 +68,20 @@ void write_page(const FolderEntry& e, const FolderArgs& args, const fs::path& di
     std::string cmd = replace_all(args.regenerate, "{golden}", fs::absolute(r.inputs.b).string());
     cmd = replace_all(cmd, "{actual}", fs::absolute(r.inputs.a).string());
     cmd = replace_all(cmd, "{name}", e.name);
-    std::string h = "<!doctype html><html><head><meta charset=\"utf-8\"><title>" + html_escape(e.name) + ": " +
+    std::string h = "<!doctype html><html><head><meta charset=\"utf-8\"><title>" + markup_escape(e.name) + ": " +
                     e.status() + "</title>" + style + "</head><body>";
-    h += "<h1>" + html_escape(e.name) + ": <span class=\"" + e.status() + "\">" + e.status() + "</span></h1>";
+    h += "<h1>" + markup_escape(e.name) + ": <span class=\"" + e.status() + "\">" + e.status() + "</span></h1>";
     h += "<p><a href=\"index.html\">all images</a></p><div class=\"panels\">";
     for (const auto& [panel, caption] : {std::pair{"golden", "golden (reference)"}, {"actual", "actual"},
                                          {"heatmap", "FLIP heatmap"}})
         h += "<figure><figcaption>" + std::string(caption) + "</figcaption><img src=\"" +
-             html_escape(panel_file(e.name, panel)) + "\" alt=\"" + panel + "\"></figure>";
+             markup_escape(panel_file(e.name, panel)) + "\" alt=\"" + panel + "\"></figure>";
     h += "</div><div class=\"legend\"></div><div class=\"scale\"><span style=\"left:0\">FLIP 0 (no visible "
          "difference)</span><span style=\"left:20%\">0.2</span><span style=\"left:40%\">0.4</span><span "
          "style=\"left:60%\">0.6</span><span style=\"left:80%\">0.8</span><span style=\"left:100%\">1 (largest)</span></div>";
     h += metrics_rows(r);
-    h += "<p>Regenerate the golden (accept the actual image): <code>" + html_escape(cmd) + "</code></p></body></html>\n";
-    write_text(dir / page_file(e.name), h);
+    h += "<p>Regenerate the golden (accept the actual image): <code>" + markup_escape(cmd) + "</code></p></body></html>\n";
+    write_text_file(dir / page_file(e.name), h);
 }
 
 }  // namespace
@@ -113,23 +92,23 @@ void write_html_report(const std::vector<FolderEntry>& entries, const FolderArgs
     fs::create_directories(dir, ec);
     if (ec) throw InputError("cannot create HTML report directory '" + dir.string() + "': " + ec.message());
     std::string index = std::string("<!doctype html><html><head><meta charset=\"utf-8\"><title>sweeptrace diff</title>") +
-                        style + "</head><body><h1>sweeptrace diff: " + html_escape(args.actual) + " against " +
-                        html_escape(args.golden) + "</h1><table><tr><th>image</th><th>verdict</th><th>FLIP mean</th>"
+                        style + "</head><body><h1>sweeptrace diff: " + markup_escape(args.actual) + " against " +
+                        markup_escape(args.golden) + "</h1><table><tr><th>image</th><th>verdict</th><th>FLIP mean</th>"
                         "<th>golden</th><th>actual</th><th>heatmap</th></tr>";
     for (const FolderEntry& e : entries) {
-        index += "<tr><td>" + html_escape(e.name) + "</td><td class=\"" + e.status() + "\">" + e.status() + "</td>";
+        index += "<tr><td>" + markup_escape(e.name) + "</td><td class=\"" + e.status() + "\">" + e.status() + "</td>";
         if (!e.error.empty()) {
-            index += "<td colspan=\"4\">" + html_escape(e.error) + "</td></tr>";
+            index += "<td colspan=\"4\">" + markup_escape(e.error) + "</td></tr>";
             continue;
         }
         write_page(e, args, dir);
         index += "<td>" + number_text(e.report.flip.mean) + "</td>";
         for (const char* panel : {"golden", "actual", "heatmap"})
-            index += "<td><a href=\"" + html_escape(page_file(e.name)) + "\"><img src=\"" +
-                     html_escape(panel_file(e.name, panel)) + "\" width=\"160\" alt=\"" + panel + "\"></a></td>";
+            index += "<td><a href=\"" + markup_escape(page_file(e.name)) + "\"><img src=\"" +
+                     markup_escape(panel_file(e.name, panel)) + "\" width=\"160\" alt=\"" + panel + "\"></a></td>";
         index += "</tr>";
     }
-    write_text(dir / "index.html", index + "</table></body></html>\n");
+    write_text_file(dir / "index.html", index + "</table></body></html>\n");
 }
 
 }  // namespace sweeptrace

@@ -8,20 +8,12 @@
 #include <nlohmann/json.hpp>
 
 #include "raytracer/cli/diff_folder.hpp"
-#include "raytracer/image/atomic_file.hpp"
+#include "raytracer/cli/report_text.hpp"
 #include "raytracer/input_error.hpp"
 
 namespace sweeptrace {
 namespace {
 
-void write_text(const std::string& path, const std::string& text) {
-    write_atomically(path, [&](const std::filesystem::path& temp) {
-        std::ofstream out(temp, std::ios::binary);
-        out << text;
-        out.close();
-        if (!out) throw InputError("cannot write '" + path + "'");
-    });
-}
 
 // JSON numbers cannot be inf or nan: those become strings.
 nlohmann::json number(double v) {
@@ -61,20 +53,6 @@ nlohmann::json entry_json(const FolderEntry& e) {
     return j;
 }
 
-std::string xml_escape(const std::string& s) {
-    std::string out;
-    for (char c : s) {
-        switch (c) {
-            case '&': out += "&amp;"; break;
-            case '<': out += "&lt;"; break;
-            case '>': out += "&gt;"; break;
-            case '"': out += "&quot;"; break;
-            case '\'': out += "&apos;"; break;
-            default: out += c;
-        }
-    }
-    return out;
-}
 
 std::string joined(const std::vector<std::string>& items) {
     std::string out;
@@ -88,7 +66,7 @@ void write_json_report(const std::vector<FolderEntry>& entries, const FolderArgs
     nlohmann::json j{{"tool", "sweeptrace diff"}, {"golden", args.golden}, {"actual", args.actual},
                      {"exit_code", exit_code}, {"images", nlohmann::json::array()}};
     for (const FolderEntry& e : entries) j["images"].push_back(entry_json(e));
-    write_text(args.json, j.dump(2) + "\n");
+    write_text_file(args.json, j.dump(2) + "\n");
 }
 
 void write_junit_report(const std::vector<FolderEntry>& entries, const FolderArgs& args) {
@@ -102,26 +80,26 @@ void write_junit_report(const std::vector<FolderEntry>& entries, const FolderArg
     std::string x = "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n";
     x += "<testsuites name=\"sweeptrace diff\" tests=\"" + std::to_string(entries.size()) + "\" failures=\"" +
          std::to_string(failures) + "\" errors=\"" + std::to_string(errors) + "\" time=\"" + number_text(seconds) + "\">\n";
-    x += "  <testsuite name=\"" + xml_escape(args.golden) + "\" tests=\"" + std::to_string(entries.size()) +
+    x += "  <testsuite name=\"" + markup_escape(args.golden) + "\" tests=\"" + std::to_string(entries.size()) +
          "\" failures=\"" + std::to_string(failures) + "\" errors=\"" + std::to_string(errors) +
          "\" skipped=\"0\" time=\"" + number_text(seconds) + "\">\n";
     for (const FolderEntry& e : entries) {
-        x += "    <testcase classname=\"sweeptrace.diff\" name=\"" + xml_escape(e.name) + "\" time=\"" +
+        x += "    <testcase classname=\"sweeptrace.diff\" name=\"" + markup_escape(e.name) + "\" time=\"" +
              number_text(e.seconds) + "\">\n";
         if (!e.error.empty())
-            x += "      <error message=\"" + xml_escape(e.error) + "\" type=\"input\"/>\n";
+            x += "      <error message=\"" + markup_escape(e.error) + "\" type=\"input\"/>\n";
         else if (!e.report.failures.empty())
-            x += "      <failure message=\"" + xml_escape(joined(e.report.failures)) + "\" type=\"over tolerance\">" +
-                 xml_escape("FLIP mean " + number_text(e.report.flip.mean) + ", RMSE " + number_text(e.report.metrics.rmse)) +
+            x += "      <failure message=\"" + markup_escape(joined(e.report.failures)) + "\" type=\"over tolerance\">" +
+                 markup_escape("FLIP mean " + number_text(e.report.flip.mean) + ", RMSE " + number_text(e.report.metrics.rmse)) +
                  "</failure>\n";
         if (e.error.empty())
-            x += "      <system-out>" + xml_escape(std::string(e.status()) + ": FLIP mean " + number_text(e.report.flip.mean) +
+            x += "      <system-out>" + markup_escape(std::string(e.status()) + ": FLIP mean " + number_text(e.report.flip.mean) +
                                                (e.report.warnings.empty() ? "" : "; warning: " + joined(e.report.warnings))) +
                  "</system-out>\n";
         x += "    </testcase>\n";
     }
     x += "  </testsuite>\n</testsuites>\n";
-    write_text(args.junit, x);
+    write_text_file(args.junit, x);
 }
 
 }  // namespace sweeptrace
