@@ -1,5 +1,8 @@
 #include "raytracer/accuracy/exchange.hpp"
 
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <map>
 #include <optional>
@@ -76,8 +79,14 @@ std::size_t write_family(const std::filesystem::path& file, Family f, std::size_
     return cases.size();
 }
 
+struct Answer {
+    Result result;
+    bool has_point = false;
+    glm::vec3 point{0.0f};
+};
+
 struct Parsed {
-    std::map<std::string, std::map<std::size_t, Result>> groups;  // "shape/family" -> index -> result
+    std::map<std::string, std::map<std::size_t, Answer>> groups;  // "shape/family" -> index -> answer
 };
 
 Parsed parse_results(const std::filesystem::path& path) {
@@ -99,24 +108,52 @@ Parsed parse_results(const std::filesystem::path& path) {
         const std::string id = j["case"];
         const std::size_t slash = id.rfind('/');
         if (slash == std::string::npos) throw InputError(where + "case '" + id + "' is not shape/family/index");
-        Result r;
+        Answer a;
+        Result& r = a.result;
         r.hit = j["hit"];
         if (r.hit && !(j.contains("t") && j["t"].is_number())) throw InputError(where + "a hit needs \"t\" (number)");
         if (r.hit) r.h.t = j["t"].get<float>();
+        if (r.hit && j.contains("point")) {
+            const json& pt = j["point"];
+            if (!pt.is_array() || pt.size() != 3 || !pt[0].is_number() || !pt[1].is_number() || !pt[2].is_number())
+                throw InputError(where + "\"point\" must be [x, y, z]");
+            a.has_point = true;
+            a.point = {pt[0].get<float>(), pt[1].get<float>(), pt[2].get<float>()};
+        }
         std::size_t index = 0;
         try {
             index = std::stoul(id.substr(slash + 1));
         } catch (const std::exception&) {
             throw InputError(where + "case '" + id + "' does not end in an index");
         }
-        if (!p.groups[id.substr(0, slash)].emplace(index, r).second) throw InputError(where + "case '" + id + "' given twice");
+        if (!p.groups[id.substr(0, slash)].emplace(index, a).second) throw InputError(where + "case '" + id + "' given twice");
     }
     return p;
 }
 
 template <class S>
+void score_points(const std::vector<Case<S>>& cases, const std::map<std::size_t, Answer>& answers, PointErrors& row) {
+    std::vector<double> errors;
+    for (const auto& [i, a] : answers) {
+        if (!a.has_point) continue;
+        const RefHit ref = reference(cases[i].ray, cases[i].shape);
+        if (ref.outcome != RefOutcome::Hit) continue;
+        const LVec3 d = widen(cases[i].ray.dir), p_ref = widen(cases[i].ray.origin) + ref.t * d;
+        const LVec3 e = widen(a.point) - p_ref;
+        const long double travelled = ref.t * std::sqrt(d.x * d.x + d.y * d.y + d.z * d.z);
+        errors.push_back(static_cast<double>(std::sqrt(e.x * e.x + e.y * e.y + e.z * e.z) / travelled));
+    }
+    row.scored = errors.size();
+    if (errors.empty()) return;
+    std::sort(errors.begin(), errors.end());
+    row.median = errors[errors.size() / 2];
+    row.p99 = errors[std::min(errors.size() - 1, static_cast<std::size_t>(0.99 * double(errors.size())))];
+    row.max = errors.back();
+}
+
+template <class S>
 void score_shape(const Parsed& p, const std::filesystem::path& path, std::size_t n, std::uint64_t seed,
-                 const std::string& variant, std::vector<Metrics>& rows) {
+                 const std::string& variant, std::vector<Metrics>& rows, std::vector<PointErrors>* points) {
     for (Family f : all_families) {
         const auto it = p.groups.find(std::string(shape_name<S>()) + "/" + family_name(f));
         if (it == p.groups.end()) continue;
@@ -132,7 +169,12 @@ void score_shape(const Parsed& p, const std::filesystem::path& path, std::size_t
         for (std::size_t i = 0; i < cases.size(); ++i) {
             shapes.push_back(cases[i].shape);
             rays.push_back(cases[i].ray);
-            results.push_back(it->second.at(i));
+            results.push_back(it->second.at(i).result);
+        }
+        if (points) {
+            PointErrors pe{shape_name<S>(), family_name(f)};
+            score_points(cases, it->second, pe);
+            if (pe.scored > 0) points->push_back(pe);
         }
         Metrics m = score(shapes, rays, results);
         if (f == Family::Edges) m.leaks = m.wrong - m.false_hits;  // as run_cases: rays start inside
@@ -166,14 +208,14 @@ void export_rays(const std::filesystem::path& dir, const std::vector<std::string
 }
 
 std::vector<Metrics> score_results(const std::filesystem::path& results, std::size_t n, std::uint64_t seed,
-                                   const std::string& variant) {
+                                   const std::string& variant, std::vector<PointErrors>* points) {
     const Parsed p = parse_results(results);
     std::vector<Metrics> rows;
     std::size_t known = 0;
     for_each_shape([&](auto tag) {
         using S = decltype(tag);
         for (Family f : all_families) known += p.groups.count(std::string(shape_name<S>()) + "/" + family_name(f));
-        score_shape<S>(p, results, n, seed, variant, rows);
+        score_shape<S>(p, results, n, seed, variant, rows, points);
     });
     if (known != p.groups.size())
         for (const auto& [group, unused] : p.groups) {
@@ -184,6 +226,18 @@ std::vector<Metrics> score_results(const std::filesystem::path& results, std::si
         }
     if (rows.empty()) throw InputError(results.string() + ": no results");
     return rows;
+}
+
+void write_point_errors(std::ostream& out, const std::vector<PointErrors>& rows) {
+    if (rows.empty()) return;
+    out << "\n| shape | family | points scored | point rel. err. median | p99 | max |\n|---|---|---:|---:|---:|---:|\n";
+    char buf[160];
+    for (const PointErrors& r : rows) {
+        std::snprintf(buf, sizeof buf, "| %s | %s | %zu | %.3g | %.3g | %.3g |\n", r.shape.c_str(), r.family.c_str(), r.scored,
+                      r.median, r.p99, r.max);
+        out << buf;
+    }
+    out << "(point error: |p - p_ref| / (t_ref |dir|), where both hit)\n";
 }
 
 }  // namespace sweeptrace::accuracy

@@ -13,6 +13,7 @@
 // triangles and quads (closed meshes, many faces per ray).
 #include <cstdint>
 #include <filesystem>
+#include <ostream>
 #include <string>
 #include <vector>
 
@@ -24,10 +25,22 @@ namespace sweeptrace::accuracy {
 void export_rays(const std::filesystem::path& dir, const std::vector<std::string>& shapes, std::size_t n,
                  std::uint64_t seed);
 
-// One row per (shape, family) present in the results; `variant` names the rows. Throws
+// Optional "point": [x, y, z] in results: the hit point's error relative to the distance the ray
+// travelled, |p - p_ref| / (t_ref |dir|), p_ref = origin + t_ref dir in long double, over the
+// cases where both the reference and the routine hit.
+struct PointErrors {
+    std::string shape, family;
+    std::size_t scored = 0;
+    double median = 0.0, p99 = 0.0, max = 0.0;
+};
+
+// One row per (shape, family) present in the results; `variant` names the rows; `points` (if
+// given) receives one row per family whose results carry points. Throws
 // InputError naming the file and line on malformed lines, unknown case ids, duplicate cases, or a
 // family whose results do not cover all of its cases.
 std::vector<Metrics> score_results(const std::filesystem::path& results, std::size_t n, std::uint64_t seed,
-                                   const std::string& variant);
+                                   const std::string& variant, std::vector<PointErrors>* points = nullptr);
+
+void write_point_errors(std::ostream& out, const std::vector<PointErrors>& rows);
 
 }  // namespace sweeptrace::accuracy

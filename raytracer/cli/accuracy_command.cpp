@@ -98,9 +98,11 @@ void run(const AccuracyOptions& o) {
         std::cout << "wrote the ray families to " << o.export_rays << " (manifest.json lists the files)\n";
         return;
     }
+    std::vector<accuracy::PointErrors> points;
     const auto rows = o.score.empty() ? accuracy::run_routines(o.shapes, o.rays, o.seed)
-                                      : accuracy::score_results(o.score, o.rays, o.seed, o.variant_name);
+                                      : accuracy::score_results(o.score, o.rays, o.seed, o.variant_name, &points);
     accuracy::write_markdown(std::cout, rows);
+    accuracy::write_point_errors(std::cout, points);
     accuracy::write_legend(std::cout);
     if (!o.csv.empty()) accuracy::save_file(o.csv, [&](std::ostream& f) { accuracy::write_csv(f, rows); });
     if (!o.markdown.empty()) accuracy::save_file(o.markdown, [&](std::ostream& f) { accuracy::write_markdown(f, rows); });

@@ -104,8 +104,9 @@ void add_threshold_options(CLI::App* cmd, DiffArgs& a) {
 
 void add_flip_options(CLI::App* cmd, DiffArgs& a) {
     FlipOptions& f = a.settings.flip;
-    cmd->add_flag("--flip", a.flip_details, "FLIP is always computed and judged; this flag is accepted for scripts")
-        ->group("");
+    cmd->add_flag("--flip", a.flip_details,
+                  "Accepted for clarity: FLIP (mean, weighted median and quartiles, max, worst 3x3) is always computed, "
+                  "printed and judged");
     cmd->add_option("--ppd", f.pixels_per_degree, "FLIP pixels per degree of visual angle")->capture_default_str()
         ->check(CLI::PositiveNumber);
     cmd->add_option("--flip-mode", a.settings.flip_mode, "auto (HDR-FLIP when both are .exr/.pfm), ldr or hdr")
@@ -125,8 +126,8 @@ void add_diff_command(CLI::App& app, int& exit_code) {
     auto* cmd = app.add_subcommand(
         "diff",
         "Compare image A against the reference B (.png, .pfm, .exr), or every image of --actual DIR against\n"
-        "the golden of the same name in --golden DIR. Exit 0 within tolerance, 1 over it, 2 bad input, 4 a warning (within the limits, mean\n"
-        "FLIP over --warn-flip). Default verdict: mean FLIP (LDR, or HDR-FLIP for two float files) <= 0.04 and\n"
+        "the golden of the same name in --golden DIR. Exit 0 within tolerance, 1 over it, 2 bad input,\n"
+        "4 a warning (within the limits, mean FLIP over --warn-flip). Default verdict: mean FLIP (LDR, or HDR-FLIP for two float files) <= 0.04 and\n"
         "the worst 3x3 pixels' mean FLIP <= 0.3, RMSE <= 0.05 and <= 1% of pixels over the pixel threshold\n"
         "(display space: clamped, sRGB-encoded, unless --linear). These reject a 12x12 hole, a 4x4 white\n"
         "square, +-10% exposure, a 15% tint and a 1-px blur, and accept 8-bit rounding. Monte Carlo renders at\n"

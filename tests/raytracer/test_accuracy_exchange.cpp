@@ -120,3 +120,32 @@ TEST_CASE("the C++ hook measures a registered routine on every family, secondary
     CHECK_THAT(out, Contains("| sphere | textbook | uniform | 400 |") && Contains("| sphere | textbook | surface-out |") &&
                         Contains("| sphere | textbook | surface-in |") && Contains("| sphere | robust | uniform |"));
 }
+
+TEST_CASE("accuracy --score: optional hit points are scored relative to the distance travelled", "[accuracy][cli]") {
+    ScratchDir dir("accuracy-points");
+    REQUIRE(run_sweeptrace("accuracy --export-rays " + (dir / "rays").string() + " --shape sphere --rays 200", dir.path())
+                .exit_code == 0);
+    // Answer with the reference itself, but every point 1 % further along the ray than t_ref:
+    // the point error is 0.01 on every hit (to float rounding of the written point).
+    std::ifstream in(dir / "rays" / "sphere-uniform.jsonl");
+    std::ofstream out(dir / "results.jsonl");
+    std::string line;
+    while (std::getline(in, line)) {
+        const json c = json::parse(line);
+        const bool hit = c["reference"]["outcome"] == "hit";
+        json r{{"case", c["case"]}, {"hit", hit}};
+        if (hit) {
+            const double t = c["reference"]["t"];
+            const collision::Ray ray = ray_of(c["ray"]);
+            r["t"] = t;
+            r["point"] = json::array({ray.origin.x + 1.01 * t * ray.dir.x, ray.origin.y + 1.01 * t * ray.dir.y,
+                                      ray.origin.z + 1.01 * t * ray.dir.z});
+        }
+        out << r.dump() << '\n';
+    }
+    out.close();
+    const auto r = run_sweeptrace("accuracy --score " + (dir / "results.jsonl").string() + " --rays 200", dir.path());
+    REQUIRE(r.exit_code == 0);
+    CHECK_THAT(r.output, Contains("| sphere | results | uniform | 200 | 0 | 0 | 0 (0%) | 0 |"));
+    CHECK_THAT(r.output, Contains("| sphere | uniform | 200 | 0.01 | 0.01 | 0.01 |"));
+}
