@@ -105,7 +105,12 @@ void run(const AccuracyOptions& o) {
     accuracy::write_point_errors(std::cout, points);
     accuracy::write_legend(std::cout);
     if (!o.csv.empty()) accuracy::save_file(o.csv, [&](std::ostream& f) { accuracy::write_csv(f, rows); });
-    if (!o.markdown.empty()) accuracy::save_file(o.markdown, [&](std::ostream& f) { accuracy::write_markdown(f, rows); });
+    if (!o.markdown.empty()) {
+        accuracy::save_file(o.markdown, [&](std::ostream& f) {
+            accuracy::write_markdown(f, rows);
+            accuracy::write_legend(f);
+        });
+    }
 }
 
 }  // namespace

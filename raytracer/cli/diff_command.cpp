@@ -127,7 +127,7 @@ void add_diff_command(CLI::App& app, int& exit_code) {
         "diff",
         "Compare image A against the reference B (.png, .pfm, .exr), or every image of --actual DIR against\n"
         "the golden of the same name in --golden DIR. Exit 0 within tolerance, 1 over it, 2 bad input,\n"
-        "4 a warning (within the limits, mean FLIP over --warn-flip). Default verdict: mean FLIP (LDR, or HDR-FLIP for two float files) <= 0.04 and\n"
+        "4 a warning (within the limits, mean FLIP over --warn-flip).\nDefault verdict: mean FLIP (LDR, or HDR-FLIP for two float files) <= 0.04 and\n"
         "the worst 3x3 pixels' mean FLIP <= 0.3, RMSE <= 0.05 and <= 1% of pixels over the pixel threshold\n"
         "(display space: clamped, sRGB-encoded, unless --linear). These reject a 12x12 hole, a 4x4 white\n"
         "square, +-10% exposure, a 15% tint and a 1-px blur, and accept 8-bit rounding. Monte Carlo renders at\n"

@@ -58,9 +58,11 @@ int false_alarms(const Scene& scene, const Accel& accel, int spp, const NoiseBen
 }
 
 int run_noise_bench(NoiseBenchArgs args) {
-    if (args.scenes.empty())
-        for (const char* name : {"cornell-box", "default", "mesh", "primitives", "smallpt"})
-            args.scenes.push_back(std::string(SWEEPTRACE_SCENES_DIR) + "/" + name + ".json");
+    if (args.scenes.empty()) {  // every shipped scene
+        for (const auto& e : std::filesystem::directory_iterator(SWEEPTRACE_SCENES_DIR))
+            if (e.path().extension() == ".json") args.scenes.push_back(e.path().string());
+        std::sort(args.scenes.begin(), args.scenes.end());
+    }
     std::printf("false alarms of diff --variance-a/-b on seed pairs: %d pairs per row, alpha %g (target <= %g), "
                 "8x8 blocks, width %d\n",
                 args.pairs, args.alpha, 2.0 * args.alpha, args.width);
