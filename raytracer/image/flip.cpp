@@ -217,8 +217,11 @@ FeatureKernels feature_kernels(double ppd) {
     // The 2-D kernel is (x factor) * (y factor); normalising the factors this way normalises the
     // 2-D kernel's positive and negative weights to +1 and -1.
     for (double& g : k.gauss) g /= gauss_sum;
-    for (double& e : k.edge) e /= e > 0.0 ? edge_pos : -edge_neg;
-    for (double& p : k.point) p /= p > 0.0 ? point_pos : -point_neg;
+    // (Weights that underflowed to 0, at a few pixels per degree, stay 0.)
+    for (double& e : k.edge)
+        if (e != 0.0) e /= e > 0.0 ? edge_pos : -edge_neg;
+    for (double& p : k.point)
+        if (p != 0.0) p /= p > 0.0 ? point_pos : -point_neg;
     return k;
 }
 

@@ -206,6 +206,14 @@ TEST_CASE("HDR-FLIP: the per-pixel maximum over exposures is at least each expos
     for (std::size_t i = 0; i < r.error.size(); ++i) REQUIRE(r.error[i] >= middle.error[i]);
 }
 
+TEST_CASE("FLIP: a very low pixels-per-degree stays finite", "[image][flip]") {
+    // At 0.5 ppd the feature Gaussian's neighbours underflow to 0: the kernels must not divide by 0.
+    FlipOptions far;
+    far.pixels_per_degree = 0.5;
+    const FlipResult r = flip(noise(16, 16, 3), noise(16, 16, 4), far);
+    for (float e : r.error) REQUIRE(std::isfinite(e));
+}
+
 TEST_CASE("FLIP: mismatched sizes and a bad viewing distance are input errors", "[image][flip]") {
     CHECK_THROWS_AS(flip(flat(4, 4, glm::vec3(0)), flat(5, 4, glm::vec3(0))), InputError);
     FlipOptions bad;
