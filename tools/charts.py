@@ -35,46 +35,50 @@ VARIANT_MARKER = {"robust": "o", "thesis": "x", "embree": "^", "embree-robust": 
 
 
 def speed_vs_error(docs):
+    """One row per routine (shape, variant), three aligned panels: errors and speed. Labels are
+    the rows' tick labels, so none can overprint another (a scatter of 24 labelled points did)."""
     rows = read(os.path.join(docs, "accuracy.csv"))
-    shapes = sorted({r["shape"] for r in rows})
-    colours = {s: plt.cm.tab10(i % 10) for i, s in enumerate(shapes)}
-    fig, axes = plt.subplots(1, 2, figsize=(13, 5.2))
-    # x: throughput on the uniform family (single thread). y, left: share of rays, over every
-    # family, answered wrong beyond rounding; right: worst p99 relative t error over the
-    # families where the answer is a hit on the same surface (uniform, far, huge, tiny).
     by_routine = {}
     for r in rows:
         by_routine.setdefault((r["shape"], r["variant"]), []).append(r)
+    routines = []
     for (shape, variant), rs in sorted(by_routine.items()):
         uniform = [r for r in rs if r["family"] == "uniform"]
         if not uniform:
             continue
-        speed = float(uniform[0]["mrays_per_s"])
+        # x: share of rays, over every family, answered wrong beyond rounding (plus leaks);
+        # worst p99 relative t error over the families where the answer is a hit on the same
+        # surface (uniform, far, huge, tiny); throughput on the uniform family, one thread.
         decided = sum(int(r["rays"]) - int(r["boundary"]) for r in rs if r["family"] != "edges")
         wrong = sum(int(r["wrong_clear"]) for r in rs if r["family"] != "edges")
         leaks = sum(int(r["leaks"]) for r in rs)
         rays_edges = sum(int(r["rays"]) for r in rs if r["family"] == "edges")
         wrong_rate = (wrong + leaks) / max(1, decided + rays_edges)
         t_p99 = max(float(r["t_rel_p99"]) for r in rs if r["family"] in ("uniform", "far", "huge", "tiny"))
-        kw = dict(color=colours[shape], marker=VARIANT_MARKER.get(variant, "s"), s=60)
-        axes[0].scatter(speed, max(wrong_rate, FLOOR), **kw)
-        axes[1].scatter(speed, max(t_p99, FLOOR), **kw)
-        for ax, y in ((axes[0], wrong_rate), (axes[1], t_p99)):
-            ax.annotate(f"{shape}", (speed, max(y, FLOOR)), fontsize=6, alpha=0.7, xytext=(3, 3),
-                        textcoords="offset points")
-    for ax, title in ((axes[0], "wrong hit/miss beyond rounding + leaks (share of rays, all families)"),
-                      (axes[1], "relative t error, p99 (worst of uniform/far/huge/tiny)")):
+        routines.append((shape, variant, wrong_rate, t_p99, float(uniform[0]["mrays_per_s"])))
+    shapes = sorted({r[0] for r in routines})
+    colours = {s: plt.cm.tab10(i % 10) for i, s in enumerate(shapes)}
+    fig, axes = plt.subplots(1, 3, figsize=(13, 0.28 * len(routines) + 1.6), sharey=True)
+    ys = list(range(len(routines)))[::-1]
+    panels = ((2, "wrong hit/miss beyond rounding + leaks\n(share of rays, all families; 0 drawn at 1e-9)", True),
+              (3, "relative t error, p99\n(worst of uniform/far/huge/tiny; 0 drawn at 1e-9)", True),
+              (4, "Mrays/s, one thread\n(uniform family)", False))
+    for ax, (col, title, floor) in zip(axes, panels):
+        for y, r in zip(ys, routines):
+            value = max(r[col], FLOOR) if floor else r[col]
+            ax.scatter(value, y, color=colours[r[0]], marker=VARIANT_MARKER.get(r[1], "s"), s=45)
         ax.set_xscale("log")
-        ax.set_yscale("log")
-        ax.set_xlabel("Mrays/s, one thread (uniform family)")
         ax.set_title(title, fontsize=10)
-        ax.axhline(FLOOR, color="grey", lw=0.5, ls=":")
-        ax.text(ax.get_xlim()[0], FLOOR, " 0", va="bottom", fontsize=8, color="grey")
-        ax.grid(True, which="both", alpha=0.2)
+        ax.grid(True, which="both", axis="x", alpha=0.25)
+        if floor:
+            ax.axvline(FLOOR, color="grey", lw=0.5, ls=":")
+            ax.text(FLOOR, ys[0] + 0.6, "0", ha="center", fontsize=8, color="grey")
+    axes[0].set_yticks(ys)
+    axes[0].set_yticklabels([f"{r[0]} / {r[1]}" for r in routines], fontsize=8)
+    axes[0].set_ylim(-0.7, len(routines) - 0.2)
     handles = [plt.Line2D([], [], ls="", marker=m, color="k", label=v) for v, m in VARIANT_MARKER.items()]
-    handles += [plt.Line2D([], [], ls="", marker="s", color=colours[s], label=s) for s in shapes]
-    axes[1].legend(handles=handles, fontsize=7, loc="center left", bbox_to_anchor=(1.02, 0.5))
-    fig.suptitle("Every ray-shape intersector: speed against error (sweeptrace accuracy)")
+    axes[2].legend(handles=handles, fontsize=8, loc="center left", bbox_to_anchor=(1.02, 0.5), title="variant")
+    fig.suptitle("Every ray-shape intersector: error and speed (sweeptrace accuracy; one row per routine)")
     save(fig, docs, "speed-vs-error.png")
 
 

@@ -42,7 +42,7 @@ void write_markdown(std::ostream& out, const std::vector<Metrics>& rows) {
             << " | " << m.within_rounding << " | " << m.wrong << " (" << number(100.0 * m.wrong_rate()) << "%) | "
             << m.wrong_clear << " | " << number(m.t_median) << " | "
             << number(m.t_p99) << " | " << number(m.t_max) << " | " << m.self_hits << " | " << m.leaks << " | "
-            << number(m.mrays_per_s()) << " |\n";
+            << (m.seconds > 0.0 ? number(m.mrays_per_s()) : std::string("-")) << " |\n";
     }
 }
 

@@ -7,6 +7,7 @@
 #include "collision/thesis/intersect.hpp"
 #include "raytracer/accel/embree_reference.hpp"
 #include "raytracer/accuracy/thread_timer.hpp"
+#include "raytracer/accuracy/user_routines.hpp"
 
 namespace sweeptrace::accuracy {
 
@@ -79,6 +80,7 @@ std::vector<Variant<S>> variants_for() {
         v.push_back(embree_triangle_variant(false));
         v.push_back(embree_triangle_variant(true));
     }
+    for (const Variant<S>& mine : registered_variants<S>()) v.push_back(mine);  // user_routines.hpp
     return v;
 }
 

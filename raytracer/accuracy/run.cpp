@@ -63,8 +63,6 @@ Variant<S> variant_of(std::string name, bool (*fn)(const Ray&, const S&, collisi
     return v;
 }
 
-namespace {
-
 template <class S>
 Metrics score(const std::vector<S>& shapes, const std::vector<Ray>& rays, const std::vector<Result>& results) {
     Metrics m;
@@ -123,8 +121,6 @@ bool is_self_hit(const S& shape, const Ray& secondary, bool into, const Result& 
     if (!span.meets) return true;
     return static_cast<long double>(r.h.t) < 0.5L * span.t1;
 }
-
-}  // namespace
 
 template <class S>
 Metrics run_closed_meshes(const Variant<S>& variant, const std::vector<ClosedMeshCase<S>>& meshes) {
@@ -232,6 +228,7 @@ std::vector<Metrics> run_shape(const std::vector<Variant<S>>& variants, std::siz
 #define SWEEPTRACE_ACCURACY_RUN(S)                                                                                  \
     template Variant<S> variant_of<S>(std::string, bool (*)(const Ray&, const S&, collision::RayHit&));             \
     template Metrics run_closed_meshes<S>(const Variant<S>&, const std::vector<ClosedMeshCase<S>>&);               \
+    template Metrics score<S>(const std::vector<S>&, const std::vector<Ray>&, const std::vector<Result>&);         \
     template std::vector<Metrics> run_shape<S>(const std::vector<Variant<S>>&, std::size_t, std::uint64_t);      \
     template Metrics run_family<S>(const Variant<S>&, Family, std::size_t, std::uint64_t);
 SWEEPTRACE_ACCURACY_RUN(collision::Sphere)

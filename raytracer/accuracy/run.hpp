@@ -71,6 +71,12 @@ std::vector<Metrics> run_shape(const std::vector<Variant<Shape>>& variants, std:
 template <class Shape>
 Metrics run_family(const Variant<Shape>& variant, Family f, std::size_t n, std::uint64_t seed);
 
+// Scores one family's results against the long-double reference (also `accuracy --score`,
+// accuracy/exchange.cpp, for results computed outside the program).
+template <class Shape>
+Metrics score(const std::vector<Shape>& shapes, const std::vector<collision::Ray>& rays,
+              const std::vector<Result>& results);
+
 // Rays from inside closed meshes: every miss is a leak.
 template <class Face>
 Metrics run_closed_meshes(const Variant<Face>& variant, const std::vector<ClosedMeshCase<Face>>& meshes);

@@ -11,6 +11,8 @@
 #include <string>
 #include <vector>
 
+#include "raytracer/accuracy/exchange.hpp"
+#include "raytracer/accuracy/legend.hpp"
 #include "raytracer/accuracy/mesh_compare.hpp"
 #include "raytracer/accuracy/render_studies.hpp"
 #include "raytracer/accuracy/report.hpp"
@@ -27,6 +29,7 @@ struct AccuracyOptions {
     std::size_t rays = 20000;
     std::uint64_t seed = 1;
     std::string csv, markdown, methods_csv;
+    std::string export_rays, score, variant_name = "results";  // exchange.hpp
     std::vector<std::string> shapes;
     std::string meshes;
     std::size_t inside_rays = 100000;
@@ -90,10 +93,24 @@ void run(const AccuracyOptions& o) {
         }
         return;
     }
-    const auto rows = accuracy::run_routines(o.shapes, o.rays, o.seed);
+    if (!o.export_rays.empty()) {
+        accuracy::export_rays(o.export_rays, o.shapes, o.rays, o.seed);
+        std::cout << "wrote the ray families to " << o.export_rays << " (manifest.json lists the files)\n";
+        return;
+    }
+    std::vector<accuracy::PointErrors> points;
+    const auto rows = o.score.empty() ? accuracy::run_routines(o.shapes, o.rays, o.seed)
+                                      : accuracy::score_results(o.score, o.rays, o.seed, o.variant_name, &points);
     accuracy::write_markdown(std::cout, rows);
+    accuracy::write_point_errors(std::cout, points);
+    accuracy::write_legend(std::cout);
     if (!o.csv.empty()) accuracy::save_file(o.csv, [&](std::ostream& f) { accuracy::write_csv(f, rows); });
-    if (!o.markdown.empty()) accuracy::save_file(o.markdown, [&](std::ostream& f) { accuracy::write_markdown(f, rows); });
+    if (!o.markdown.empty()) {
+        accuracy::save_file(o.markdown, [&](std::ostream& f) {
+            accuracy::write_markdown(f, rows);
+            accuracy::write_legend(f);
+        });
+    }
 }
 
 }  // namespace
@@ -107,6 +124,15 @@ void add_accuracy_command(CLI::App& app, int& exit_code) {
     cmd->add_option("--seed", options->seed, "Seed of the ray families");
     cmd->add_option("--csv", options->csv, "Also write the table as CSV to this file");
     cmd->add_option("--markdown", options->markdown, "Also write the table(s) as Markdown to this file");
+    cmd->add_option("--export-rays", options->export_rays,
+                    "Write the primary-ray families (shapes, rays, reference verdict and t) as JSON lines into DIR "
+                    "(docs/accuracy-for-your-intersector.md)");
+    cmd->add_option("--score", options->score,
+                    "Score a results file (JSON lines: case, hit, t) with the same table; use the --rays and --seed "
+                    "of the export")
+        ->check(CLI::ExistingFile);
+    cmd->add_option("--variant-name", options->variant_name, "With --score: the variant column's name")
+        ->capture_default_str();
     cmd->add_option("--shape", options->shapes, "Only these shapes (repeatable)")
         ->check(CLI::IsMember(accuracy::routine_shape_names()));
     cmd->add_option("--meshes", options->meshes,

@@ -15,6 +15,7 @@ int main(int argc, char** argv) {
     sweeptrace::add_diff_command(app, exit_code);
     sweeptrace::add_accuracy_command(app, exit_code);
     sweeptrace::add_bench_command(app, exit_code);
+    sweeptrace::add_noise_bench_command(app, exit_code);
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {

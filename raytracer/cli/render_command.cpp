@@ -55,6 +55,7 @@ private:
 struct RenderArgs {
     std::string scene;
     std::string output;
+    std::string variance;  // optional: per-pixel variance of the pixel means (float formats only)
     int spp = 0, width = 0, height = 0, threads = 0, max_depth = 0;
     std::uint64_t seed = 0;
     std::string accel = "bvh";
@@ -142,6 +143,14 @@ int run_render(const RenderArgs& a) {
         std::error_code ec;
         require(dir.empty() || std::filesystem::is_directory(dir, ec),
                 "output '" + out.string() + "': directory '" + dir.string() + "' does not exist");
+        if (!a.variance.empty()) {
+            std::string vext = std::filesystem::path(a.variance).extension().string();
+            std::transform(vext.begin(), vext.end(), vext.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+            require(vext == ".pfm" || vext == ".exr", "--variance '" + a.variance + "': use .exr or .pfm (variances are not 8-bit colours)");
+            const std::filesystem::path vdir = std::filesystem::path(a.variance).parent_path();
+            require(vdir.empty() || std::filesystem::is_directory(vdir, ec),
+                    "--variance '" + a.variance + "': directory '" + vdir.string() + "' does not exist");
+        }
     }
 
     Scene scene = load_scene(scene_path);
@@ -183,6 +192,7 @@ int run_render(const RenderArgs& a) {
         return 130;
     }
     write_image(is_display_format(out) ? to_display(result.image) : result.image, out);
+    if (!a.variance.empty()) write_image(result.variance, a.variance);
     if (st.cancelled)
         std::fprintf(stderr, "sweeptrace: interrupted: wrote %s with %d of %d samples per pixel\n", out.string().c_str(),
                      st.completed_spp, opt.spp);
@@ -208,6 +218,9 @@ void add_render_command(CLI::App& app, int& exit_code) {
     cmd->add_option("-o,--output", args->output,
                     "Output image: .png (8-bit sRGB, radiance clamped to [0, 1]), .pfm or .exr (linear float). "
                     "Default: the scene's name with .png, in the current directory");
+    cmd->add_option("--variance", args->variance,
+                    "Also write the per-pixel variance of each pixel's mean (.exr/.pfm): the samples' unbiased "
+                    "variance / spp, from the same samples (needs spp >= 2); for `diff --variance-a/-b`");
     args->spp_opt = cmd->add_option("--spp", args->spp, "Samples per pixel (default: the scene's film.spp)");
     args->width_opt = cmd->add_option("--width", args->width,
                                       "Image width; alone, the height follows the film's aspect ratio");

@@ -107,6 +107,9 @@ DiffMetrics compare_images(const Image& a, const Image& b, const DiffOptions& op
             ++over;
             continue;
         }
+        if (options.space == DiffSpace::Linear)
+            m.psnr_peak = std::max({m.psnr_peak, double(a.pixels[i].x), double(a.pixels[i].y), double(a.pixels[i].z),
+                                    double(b.pixels[i].x), double(b.pixels[i].y), double(b.pixels[i].z)});
         const glm::dvec3 d = glm::abs(in_space(a.pixels[i], options.space) - in_space(b.pixels[i], options.space));
         sum_sq += glm::dot(d, d);
         sum_abs += d.x + d.y + d.z;
@@ -120,7 +123,7 @@ DiffMetrics compare_images(const Image& a, const Image& b, const DiffOptions& op
     }
     const double samples = 3.0 * static_cast<double>(n);
     m.rmse = std::sqrt(sum_sq / samples);
-    m.psnr = m.rmse > 0.0 ? 20.0 * std::log10(1.0 / m.rmse) : std::numeric_limits<double>::infinity();
+    m.psnr = m.rmse > 0.0 ? 20.0 * std::log10(m.psnr_peak / m.rmse) : std::numeric_limits<double>::infinity();
     m.mean_abs = sum_abs / samples;
     m.share_over = static_cast<double>(over) / static_cast<double>(n);
 
@@ -266,8 +269,8 @@ Image block_z_heatmap(const BlockTestResult& result, int width, int height, int 
 std::string BlockTestResult::summary() const {
     char text[400];
     std::snprintf(text, sizeof text,
-                  "block test: max z %.2f (limit %.2f, %s) at block (%d, %d) channel %c: mean difference %+.5f, "
-                  "sigma %.5f; %zu of %zu blocks over",
+                  "block test: max z %.6g (limit %.6g, %s) at block (%d, %d) channel %c: mean difference %+.9g, "
+                  "sigma %.9g; %zu of %zu blocks over",
                   max_z, z_limit, pass() ? "pass" : "FAIL", worst_bx, worst_by, "RGB"[worst_channel], worst_difference,
                   worst_sigma, blocks_over, blocks_tested);
     return text;

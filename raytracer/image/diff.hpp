@@ -26,7 +26,10 @@ struct DiffOptions {
 struct DiffMetrics {
     int width = 0, height = 0;
     double rmse = 0.0;            // over all pixels and channels
-    double psnr = 0.0;            // 20 log10(1 / rmse) dB, peak 1; +inf for identical images
+    double psnr = 0.0;            // 20 log10(psnr_peak / rmse) dB; +inf for identical images
+    // Display space: 1. Linear: max(1, largest finite channel value of either image), as
+    // OpenImageIO's idiff does, so an HDR image's PSNR is not measured against a peak of 1.
+    double psnr_peak = 1.0;
     double mean_abs = 0.0;        // mean |a - b| over pixels and channels
     double max_abs = 0.0;         // largest |a - b| of any channel
     int max_x = 0, max_y = 0;     // where it is

@@ -38,10 +38,11 @@ TEST_CASE("sweeptrace diff: exit 0 within tolerance, 1 over it, heatmap written"
     CHECK(read_image(heat).width == 32);
 
     // Loose enough thresholds accept the same pair.
-    auto loose = run_sweeptrace("diff " + a + " " + c + " --max-rmse 1 --max-share 1", dir.path());
+    const std::string loose_flip = " --max-flip 1 --max-local-flip 1 --warn-flip 1";
+    auto loose = run_sweeptrace("diff " + a + " " + c + " --max-rmse 1 --max-share 1" + loose_flip, dir.path());
     CHECK(loose.exit_code == 0);
     // A threshold on the perceptual metric alone can reject it.
-    auto perceptual = run_sweeptrace("diff " + a + " " + c + " --max-rmse 1 --max-share 1 --max-delta-e 0.5", dir.path());
+    auto perceptual = run_sweeptrace("diff " + a + " " + c + " --max-rmse 1 --max-share 1 --max-delta-e 0.5" + loose_flip, dir.path());
     CHECK(perceptual.exit_code == 1);
 }
 
