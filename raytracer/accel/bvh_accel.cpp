@@ -4,6 +4,7 @@
 
 #include "raytracer/accel/bvh_traversal.hpp"
 #include "raytracer/accel/object_bounds.hpp"
+#include "raytracer/accel/sah_cost.hpp"
 #include "raytracer/geometry/intersect_object.hpp"
 #include "raytracer/geometry/object_space.hpp"
 
@@ -102,6 +103,10 @@ std::size_t BvhAccel::triangle_count() const {
     for (std::size_t i = 0; i < meshes_.size(); ++i)
         if (meshes_[i]) n += scene_.meshes[i].triangles.triangle_count();
     return n;
+}
+
+double BvhAccel::mesh_sah_cost(std::size_t mesh) const {
+    return meshes_[mesh] ? sah_cost(meshes_[mesh]->bvh()) : 0.0;
 }
 
 }  // namespace sweeptrace

@@ -22,6 +22,8 @@ public:
 
     // Triangles in the meshes the scene's objects instance (each mesh counted once).
     std::size_t triangle_count() const;
+    // SAH cost (sah_cost.hpp) of the bottom-level tree of Scene::meshes[mesh]; 0 if unused.
+    double mesh_sah_cost(std::size_t mesh) const;
 
 private:
     bool intersect_one(std::uint32_t object, const collision::Ray& ray, SurfaceHit& hit) const;
