@@ -10,7 +10,7 @@ namespace sweeptrace {
 // An analytic shape test costs a few box tests, a mesh instance far more: weighting the
 // primitive test above the node visit keeps expensive objects in small leaves. Leaves of up to
 // 4 objects are tested one after the other, so the collapse merges no more than that.
-constexpr int kTopLeafObjects = 4;
+constexpr int kTopLeafObjects = 1;
 constexpr float kTopIntersectionCost = 4.0f;
 
 BvhAccel::BvhAccel(const Scene& scene, SimdPath path)
