@@ -1,7 +1,7 @@
 #pragma once
 // The bottom level: one mesh's triangles under an 8-wide BVH (wide_bvh.hpp) in the mesh's own
 // (object) space, built once and shared by every object that instances it. Built from the
-// binary binned-SAH tree, collapsed; leaves hold up to kLeafTriangles triangles stored in leaf
+// binary binned-SAH tree, collapsed; leaves hold up to 8 triangles stored in leaf
 // order, vertex coordinates in SoA form (wide_kernels.hpp), so a leaf's data is contiguous
 // and one SIMD load reads one coordinate of all its triangles.
 #include <cstdint>
