@@ -42,12 +42,18 @@ BvhAccel::BvhAccel(const Scene& scene, SimdPath path)
     const collision::Bvh binary = collision::build_bvh(boxes, centroids, options);
     top_ = collapse_to_wide(binary, kTopLeafObjects);
     top_objects_.reserve(binary.prim_indices.size());
-    for (std::uint32_t p : binary.prim_indices) top_objects_.push_back(object_of[p]);
-    view_ = TopLevelView{&scene_, &top_, top_objects_.data(), mesh_views_.data()};
+    for (std::uint32_t p : binary.prim_indices) {
+        const Object& object = scene.objects[object_of[p]];
+        const auto* sphere = std::get_if<collision::Sphere>(&object.shape);
+        top_objects_.push_back(object_of[p]);
+        top_spheres_.push_back(sphere && object.transform.identity ? *sphere : collision::Sphere{glm::vec3(0.0f), 0.0f});
+    }
+    view_ = TopLevelView{&scene_, &top_, top_objects_.data(), top_spheres_.data(), mesh_views_.data()};
 }
 
 std::size_t BvhAccel::memory_bytes() const {
     std::size_t bytes = sizeof(*this) + top_.memory_bytes() + top_objects_.capacity() * sizeof(std::uint32_t) +
+                        top_spheres_.capacity() * sizeof(collision::Sphere) +
                         meshes_.capacity() * sizeof(meshes_[0]) + mesh_views_.capacity() * sizeof(WideMeshView);
     for (const auto& m : meshes_)
         if (m) bytes += sizeof(WideMeshBvh) + m->memory_bytes();

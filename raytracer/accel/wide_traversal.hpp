@@ -181,8 +181,22 @@ bool mesh_occluded(const WideMeshView& mesh, const collision::Ray& ray) {
     });
 }
 
+// A slot's sphere without a transform: what intersect_analytic does, from the slot's copy.
+inline bool intersect_slot_sphere(const collision::Sphere& sphere, std::uint32_t index, const collision::Ray& ray,
+                                  SurfaceHit& hit) {
+    static const Transform identity;
+    collision::RayHit h;
+    if (!collision::intersect(ray, sphere, h)) return false;
+    surface_hit_to_world(identity, h, 0.0f, hit);
+    hit.object = index;
+    hit.primitive = 0;
+    return true;
+}
+
 template <class K>
-bool object_intersect(const TopLevelView& top, std::uint32_t index, const collision::Ray& ray, SurfaceHit& hit) {
+bool object_intersect(const TopLevelView& top, std::uint32_t slot, const collision::Ray& ray, SurfaceHit& hit) {
+    const std::uint32_t index = top.objects[slot];
+    if (top.spheres[slot].radius > 0.0f) return intersect_slot_sphere(top.spheres[slot], index, ray, hit);
     const Object& object = top.scene->objects[index];
     const auto* instance = std::get_if<MeshInstance>(&object.shape);
     if (!instance) return intersect_analytic_object(*top.scene, index, ray, hit);
@@ -195,11 +209,13 @@ bool object_intersect(const TopLevelView& top, std::uint32_t index, const collis
 }
 
 template <class K>
-bool object_occluded(const TopLevelView& top, std::uint32_t index, const collision::Ray& ray) {
+bool object_occluded(const TopLevelView& top, std::uint32_t slot, const collision::Ray& ray) {
+    const std::uint32_t index = top.objects[slot];
+    SurfaceHit unused;
+    if (top.spheres[slot].radius > 0.0f) return intersect_slot_sphere(top.spheres[slot], index, ray, unused);
     const Object& object = top.scene->objects[index];
     if (const auto* instance = std::get_if<MeshInstance>(&object.shape))
         return mesh_occluded<K>(top.meshes[instance->mesh], to_object_space(object.transform, ray).ray);
-    SurfaceHit unused;
     return intersect_analytic_object(*top.scene, index, ray, unused);
 }
 
@@ -212,7 +228,7 @@ bool top_intersect(const TopLevelView& top, const collision::Ray& ray, SurfaceHi
         for (std::uint32_t i = first; i < end; ++i) {
             collision::Ray clipped = ray;
             clipped.tmax = t_limit;
-            if (object_intersect<K>(top, top.objects[i], clipped, hit)) {
+            if (object_intersect<K>(top, i, clipped, hit)) {
                 // A transformed object's t = s + t_shift rounds once more; keep tmax monotone.
                 t_limit = hit.t < t_limit ? hit.t : t_limit;
                 found = true;
@@ -227,7 +243,7 @@ bool top_occluded(const TopLevelView& top, const collision::Ray& ray) {
     return traverse_any<K>(*top.tree, WideRay(ray), ray.tmin, ray.tmax, [&](std::uint32_t ref) {
         const std::uint32_t first = wide_ref::first(ref), end = first + wide_ref::count(ref);
         for (std::uint32_t i = first; i < end; ++i)
-            if (object_occluded<K>(top, top.objects[i], ray)) return true;
+            if (object_occluded<K>(top, i, ray)) return true;
         return false;
     });
 }
