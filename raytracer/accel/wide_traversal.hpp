@@ -71,6 +71,10 @@ inline void traverse_nearest(const WideBvh& tree, const WideRay& ray, float tmin
             const WideNode& node = tree.nodes[ref];
             alignas(32) float t_enter[kWideWidth];
             unsigned mask = boxes.test(node, tmin, tmax, t_enter);
+            if (mask != 0 && (mask & (mask - 1)) == 0) {  // one box: no stack traffic
+                ref = node.child[std::countr_zero(mask)];
+                continue;
+            }
             if (mask != 0) {
                 const int base = top;
                 do {  // insert sorted: the nearest box ends on top of the stack
@@ -111,8 +115,15 @@ inline bool traverse_any(const WideBvh& tree, const WideRay& ray, float tmin, fl
             const WideNode& node = tree.nodes[ref];
             unsigned mask = boxes.test(node, tmin, tmax, t_enter);
             if (mask != 0) {
-                ref = node.child[std::countr_zero(mask)];
-                for (mask &= mask - 1; mask != 0; mask &= mask - 1) stack[top++] = node.child[std::countr_zero(mask)];
+                // No sorting, but the nearest box first: a blocker near the origin is found
+                // before the far side of the mesh is opened.
+                int nearest = std::countr_zero(mask);
+                for (unsigned m = mask & (mask - 1); m != 0; m &= m - 1) {
+                    const int lane = std::countr_zero(m);
+                    if (t_enter[lane] < t_enter[nearest]) nearest = lane;
+                }
+                ref = node.child[nearest];
+                for (mask &= ~(1u << nearest); mask != 0; mask &= mask - 1) stack[top++] = node.child[std::countr_zero(mask)];
                 continue;
             }
         } else if (leaf(ref)) {
