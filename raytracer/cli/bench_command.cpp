@@ -71,6 +71,13 @@ void run_bench(const BenchArgs& args) {
     std::printf("%-8s %14.3f %15.3f %10zu\n", native.name().c_str(), mrays / a.cpu, mrays / a.wall, a.hits);
     std::printf("%-8s %14.3f %15.3f %10zu\n", embree->name().c_str(), mrays / b.cpu, mrays / b.wall, b.hits);
     std::printf("native / embree: %.2fx (cpu time), %.2fx (wall time)\n", b.cpu / a.cpu, b.wall / a.wall);
+    // The same rays as shadow rays (any hit within their tmax).
+    const TraceResult ao = time_occluded(native, rays);
+    const TraceResult bo = time_occluded(*embree, rays);
+    std::printf("occluded: %s %.3f, %s %.3f Mrays/s (cpu); native / embree %.2fx; occluded / intersect: native %.2fx, "
+                "embree %.2fx\n",
+                native.name().c_str(), mrays / ao.cpu, embree->name().c_str(), mrays / bo.cpu, bo.cpu / ao.cpu,
+                a.cpu / ao.cpu, b.cpu / bo.cpu);
     // An Embree device made with "threads=1" caps TBB's parallelism for the whole process while
     // it lives, which would make the multi-threaded render below run on one core.
     embree.reset();
