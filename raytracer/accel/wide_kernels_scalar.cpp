@@ -23,15 +23,7 @@ struct ScalarKernel {
                 const float ty1 = (fy[i] - r.origin[1]) * r.inv_dir[1] * kSlabFarScale;
                 const float tz0 = (nz[i] - r.origin[2]) * r.inv_dir[2];
                 const float tz1 = (fz[i] - r.origin[2]) * r.inv_dir[2] * kSlabFarScale;
-                // `new > old ? new : old` keeps `old` when `new` is NaN (the AVX2 max/min do the same).
-                float t0 = tx0 > tmin ? tx0 : tmin;
-                t0 = ty0 > t0 ? ty0 : t0;
-                t0 = tz0 > t0 ? tz0 : t0;
-                float t1 = tx1 < tmax ? tx1 : tmax;
-                t1 = ty1 < t1 ? ty1 : t1;
-                t1 = tz1 < t1 ? tz1 : t1;
-                t_enter[i] = t0;
-                mask |= static_cast<unsigned>(t0 <= t1) << i;
+                mask |= static_cast<unsigned>(slab_interval(tx0, tx1, ty0, ty1, tz0, tz1, tmin, tmax, t_enter[i])) << i;
             }
             return mask;
         }
