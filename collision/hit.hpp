@@ -17,7 +17,8 @@ struct RayHit {
     glm::vec3 normal{0.0f};      // unit geometric normal, pointing out of the shape (for flat
                                  // shapes: the shape's own normal); never flipped toward the ray
     glm::vec2 uv{0.0f};          // triangles: barycentrics (b1, b2) of b and c; quads: (s, t);
-                                 // other shapes: a surface parameterisation documented per shape
+                                 // boxes, planes: documented per shape; curved shapes and
+                                 // disks: 0, collision::surface_uv computes it on request
 };
 
 // Discrete overlap: the thesis's Data{occurred, displacement}. `displacement` is the minimal

@@ -18,7 +18,7 @@
 //         point = q + r normalize(p - q), gamma(7) |r n| + gamma(2) |point| per axis
 //         (detail::reproject_on_sphere; q's rounding eps |q_i| <= eps (|point_i| + |r n_i|)).
 // normal: normalize(point - q), outward.
-// uv: (phi / 2 pi around +y from +x toward +z, (y - bottom) / (height + 2 r)).
+// uv: not computed here (left 0): collision::surface_uv(shape, hit) gives it on request (surface_uv.hpp).
 // Degenerate: radius <= 0 or non-finite, height < 0 or non-finite (height 0 is a sphere),
 // non-finite centre/origin/direction, zero direction: false.
 #include <algorithm>
@@ -88,7 +88,7 @@ bool intersect(const Ray& ray, const Capsule& cap, RayHit& hit) {
     hit.point = point;
     hit.point_error = point_error;
     hit.normal = n;
-    hit.uv = glm::vec2(detail::turn_fraction(n.z, n.x), (point.y - (ylo - r)) / (cap.height + 2.0f * r));
+    hit.uv = glm::vec2(0.0f);
     return true;
 }
 

@@ -19,8 +19,7 @@
 //        cap hits get y = the cap exactly and (x, z) pulled inside the rim. The same per-axis
 //        bound is stored for both.
 // normal: side (n.x, 0, n.z), caps (0, +-1, 0).
-// uv: side (phi / 2 pi around +y from +x toward +z, (y - ylo) / height); caps: ((x - cx) /
-//     2r + 1/2, (z - cz) / 2r + 1/2).
+// uv: not computed here (left 0): collision::surface_uv(shape, hit) gives it on request (surface_uv.hpp).
 // Degenerate: radius or height <= 0 or non-finite, non-finite centre/origin/direction, zero
 // direction: false.
 #include <algorithm>
@@ -84,19 +83,18 @@ bool intersect(const Ray& ray, const Cylinder& cyl, RayHit& hit) {
         if (rho2 > r * r) rel *= r / std::sqrt(rho2);
         point = glm::vec3(cyl.center.x + rel.x, top ? yhi : ylo, cyl.center.z + rel.y);
         point_error = gamma(7) * glm::vec3(std::fabs(rel.x), 0.0f, std::fabs(rel.y)) + gamma(2) * glm::abs(point);
-        hit.uv = glm::vec2(rel.x / (2.0f * r) + 0.5f, rel.y / (2.0f * r) + 0.5f);
     } else {
         // p - q has y = 0 exactly, so this re-projects onto the circle at height p.y.
         const glm::vec3 q(cyl.center.x, p.y, cyl.center.z);
         if (!detail::reproject_on_sphere(p, q, r, n, point, point_error)) return false;
         point.y = std::clamp(p.y, ylo, yhi);
         point_error.y = gamma(2) * std::fabs(point.y);
-        hit.uv = glm::vec2(detail::turn_fraction(n.z, n.x), (point.y - ylo) / cyl.height);
     }
     hit.t = t;
     hit.point = point;
     hit.point_error = point_error;
     hit.normal = n;
+    hit.uv = glm::vec2(0.0f);
     return true;
 }
 

@@ -4,8 +4,7 @@
 // Bounds: |t - t_exact| <= eps |t| + 8 eps_d S / |n.d| (S as in detail/ray_plane.hpp); point within
 // point_error of the plane per axis.
 // normal: normalize(disk.normal) (two-sided, never flipped).
-// uv: (rho / r, phi / 2 pi), polar coordinates around the centre on the basis (t, b) of
-//     detail::basis_around(normal).
+// uv: not computed here (left 0): collision::surface_uv(shape, hit) gives it on request (surface_uv.hpp).
 // Degenerate: radius <= 0 or non-finite, zero or non-finite normal, non-finite ray, zero or
 // parallel direction: false.
 #include "collision/intersect.hpp"
@@ -25,14 +24,11 @@ bool intersect(const Ray& ray, const Disk& d, RayHit& hit) {
     const double r = d.radius;
     if (!(rho2 <= r * r)) return false;
     const glm::vec3 n = d.normal / std::sqrt(n_len2);
-    glm::vec3 tu, tv;
-    detail::basis_around(n, tu, tv);
-    const glm::vec3 relf(rel);
     hit.t = x.t_float;
     hit.point = glm::vec3(x.point);
     hit.point_error = x.point_error;
     hit.normal = n;
-    hit.uv = glm::vec2(float(std::sqrt(rho2) / r), detail::turn_fraction(glm::dot(relf, tv), glm::dot(relf, tu)));
+    hit.uv = glm::vec2(0.0f);
     return true;
 }
 

@@ -16,7 +16,7 @@
 //     point is as good as t up to max(radii) / min(radii): the re-projection is radial in
 //     scaled space, not the nearest-point projection in world space.
 // normal: normalize(n' / radii), outward.
-// uv: spherical (phi / 2 pi, theta / pi) of n' (detail::sphere_uv).
+// uv: not computed here (left 0): collision::surface_uv(shape, hit) gives it on request (surface_uv.hpp).
 // Degenerate: any radius <= 0 or non-finite, non-finite centre/origin/direction, zero
 // direction: false.
 #include <cmath>
@@ -46,7 +46,7 @@ bool intersect(const Ray& ray, const Ellipsoid& e, RayHit& hit) {
     hit.point = e.center + w;
     hit.point_error = gamma(8) * glm::abs(w) + gamma(2) * glm::abs(hit.point);
     hit.normal = n / std::sqrt(n_len2);
-    hit.uv = detail::sphere_uv(n_unit);
+    hit.uv = glm::vec2(0.0f);
     return true;
 }
 

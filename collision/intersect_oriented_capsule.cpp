@@ -19,8 +19,7 @@
 //     segment; then detail::reproject_on_sphere: point_error = gamma(7) |r n| + gamma(2) |point|
 //     + gamma(3) (2 |a| + |b|) per axis.
 // normal: normalize(point - q), outward.
-// uv: (angle around the axis from the basis vector t toward b, / 2 pi; distance along the
-//     axis from a - r u, / (h_len + 2 r)).
+// uv: not computed here (left 0): collision::surface_uv(shape, hit) gives it on request (surface_uv.hpp).
 // Degenerate: radius <= 0 or non-finite, non-finite a, b, origin or direction, zero direction:
 // false. a == b is a sphere.
 #include <algorithm>
@@ -60,8 +59,7 @@ bool intersect(const Ray& ray, const OrientedCapsule& c, RayHit& hit) {
     hit.point = point;
     hit.point_error = point_error + gamma(3) * (2.0f * glm::abs(c.a) + glm::abs(c.b));
     hit.normal = n;
-    hit.uv = glm::vec2(detail::turn_fraction(glm::dot(n, tv), glm::dot(n, tu)),
-                       (glm::dot(point - c.a, u) + r) / (len + 2.0f * r));
+    hit.uv = glm::vec2(0.0f);
     return true;
 }
 

@@ -26,7 +26,7 @@
 //      the *surface* (what offsetting the next ray needs); along the surface the point is as
 //      good as t (bound above times |d|).
 //  normal: unit to gamma(6), outward (c -> point), also for rays starting inside.
-//  uv: (phi / 2 pi, theta / pi), phi = atan2(n.z, n.x) in [0, 2 pi), theta = acos(n.y).
+//  uv: not computed here (left 0): collision::surface_uv(shape, hit) gives it on request (surface_uv.hpp).
 // Degenerate input: radius <= 0, NaN or infinite radius/centre/origin/direction, zero direction,
 // or coordinates so large that squares overflow float (beyond ~1e18) give false.
 #include <cmath>
@@ -52,7 +52,7 @@ bool intersect(const Ray& ray, const Sphere& s, RayHit& hit) {
     hit.point = point;
     hit.point_error = point_error;
     hit.normal = n;
-    hit.uv = detail::sphere_uv(n);
+    hit.uv = glm::vec2(0.0f);
     return true;
 }
 

@@ -50,15 +50,11 @@ inline float node_coordinate(const collision::BvhNode& node, std::uint32_t offse
 
 inline constexpr float kSlabFarScale = 1.0f + 2.0f * collision::gamma(3);
 
-// Entry distance of the ray into the node's box within (tmin, tmax), or false.
-inline bool enter_box(const collision::BvhNode& node, const TraversalRay& r, float tmin, float tmax, float& t_enter) {
-    const float tx0 = (node_coordinate(node, r.near_offset[0]) - r.origin.x) * r.inv_dir.x;
-    const float tx1 = (node_coordinate(node, r.far_offset[0]) - r.origin.x) * r.inv_dir.x * kSlabFarScale;
-    const float ty0 = (node_coordinate(node, r.near_offset[1]) - r.origin.y) * r.inv_dir.y;
-    const float ty1 = (node_coordinate(node, r.far_offset[1]) - r.origin.y) * r.inv_dir.y * kSlabFarScale;
-    const float tz0 = (node_coordinate(node, r.near_offset[2]) - r.origin.z) * r.inv_dir.z;
-    const float tz1 = (node_coordinate(node, r.far_offset[2]) - r.origin.z) * r.inv_dir.z * kSlabFarScale;
-    // `new > old ? new : old` keeps `old` when `new` is NaN.
+// The slab interval from the three near (t*0) and far (t*1) plane distances, clipped to
+// (tmin, tmax): entry distance in t_enter, true when not empty. `new > old ? new : old` keeps
+// `old` when `new` is NaN (the wide BVH's AVX2 max/min do the same).
+inline bool slab_interval(float tx0, float tx1, float ty0, float ty1, float tz0, float tz1, float tmin, float tmax,
+                          float& t_enter) {
     float t0 = tx0 > tmin ? tx0 : tmin;
     t0 = ty0 > t0 ? ty0 : t0;
     t0 = tz0 > t0 ? tz0 : t0;
@@ -67,6 +63,17 @@ inline bool enter_box(const collision::BvhNode& node, const TraversalRay& r, flo
     t1 = tz1 < t1 ? tz1 : t1;
     t_enter = t0;
     return t0 <= t1;
+}
+
+// Entry distance of the ray into the node's box within (tmin, tmax), or false.
+inline bool enter_box(const collision::BvhNode& node, const TraversalRay& r, float tmin, float tmax, float& t_enter) {
+    const float tx0 = (node_coordinate(node, r.near_offset[0]) - r.origin.x) * r.inv_dir.x;
+    const float tx1 = (node_coordinate(node, r.far_offset[0]) - r.origin.x) * r.inv_dir.x * kSlabFarScale;
+    const float ty0 = (node_coordinate(node, r.near_offset[1]) - r.origin.y) * r.inv_dir.y;
+    const float ty1 = (node_coordinate(node, r.far_offset[1]) - r.origin.y) * r.inv_dir.y * kSlabFarScale;
+    const float tz0 = (node_coordinate(node, r.near_offset[2]) - r.origin.z) * r.inv_dir.z;
+    const float tz1 = (node_coordinate(node, r.far_offset[2]) - r.origin.z) * r.inv_dir.z * kSlabFarScale;
+    return slab_interval(tx0, tx1, ty0, ty1, tz0, tz1, tmin, tmax, t_enter);
 }
 
 // Visits leaves of `bvh` nearest-first (by box entry), pruning boxes entered beyond the

@@ -2,26 +2,19 @@
 // the same scene and the same rays, one single-threaded run each: build time, Mrays/s (primary
 // rays through the camera plus one random bounce from each primary hit), their ratio, bytes per
 // triangle; then samples/s of a short render at 1 and up to --threads threads. It prints
-// figures; it asserts nothing.
-//
-// Ray rates are given per second of the tracing thread's CPU time (and wall time beside it):
-// on a shared machine CPU time is the figure that does not depend on what else runs.
-#include <algorithm>
-#include <chrono>
+// figures; it asserts nothing. `sweeptrace bench --meshes DIR` does the same per OBJ file of DIR
+// (bench_meshes.hpp). Ray rates are per second of the tracing thread's CPU time (bench_rays.hpp).
 #include <cstdio>
-#include <ctime>
 #include <memory>
-#include <random>
 #include <string>
 #include <vector>
 
-#include <glm/geometric.hpp>
-
 #include "raytracer/accel/bvh_accel.hpp"
 #include "raytracer/accel/embree_accel.hpp"
+#include "raytracer/cli/bench_meshes.hpp"
+#include "raytracer/cli/bench_rays.hpp"
 #include "raytracer/cli/commands.hpp"
 #include "raytracer/input_error.hpp"
-#include "raytracer/render/camera.hpp"
 #include "raytracer/render/renderer.hpp"
 #include "raytracer/scene/load_scene.hpp"
 
@@ -30,65 +23,22 @@ namespace {
 
 struct BenchArgs {
     std::string scene;
+    std::string meshes;
     int rays = 200000;
     int threads = 2;
     int spp = 2;
 };
 
-double thread_cpu_seconds() {
-    timespec ts{};
-    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
-    return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
-}
-
-double wall_seconds() {
-    return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
-}
-
-// Primary rays through uniformly random film points, and from each primary hit (found with
-// `accel`) one ray leaving it in a uniformly random direction of the normal's hemisphere.
-std::vector<collision::Ray> make_rays(const Scene& scene, const Accel& accel, int primaries, std::uint64_t seed) {
-    const CameraModel camera(scene.camera, scene.film.width, scene.film.height);
-    std::mt19937_64 rng(seed);
-    std::uniform_real_distribution<float> u(0.0f, 1.0f);
-    std::normal_distribution<float> gauss(0.0f, 1.0f);
-    std::vector<collision::Ray> rays;
-    rays.reserve(2 * static_cast<std::size_t>(primaries));
-    for (int i = 0; i < primaries; ++i) {
-        const collision::Ray primary = camera.generate(u(rng) * static_cast<float>(scene.film.width),
-                                                      u(rng) * static_cast<float>(scene.film.height), u(rng), u(rng));
-        rays.push_back(primary);
-        SurfaceHit hit;
-        if (!accel.intersect(primary, hit)) continue;
-        glm::vec3 d(gauss(rng), gauss(rng), gauss(rng));
-        if (glm::dot(d, d) == 0.0f) d = hit.normal;
-        if (glm::dot(d, hit.normal) < 0.0f) d = -d;
-        rays.push_back(spawn_ray(hit, glm::normalize(d)));
-    }
-    return rays;
-}
-
-struct TraceResult {
-    double cpu = 0.0, wall = 0.0;
-    std::size_t hits = 0;
-};
-
-TraceResult trace_all(const Accel& accel, const std::vector<collision::Ray>& rays) {
-    TraceResult r;
-    const double c0 = thread_cpu_seconds(), w0 = wall_seconds();
-    for (const collision::Ray& ray : rays) {
-        SurfaceHit hit;
-        r.hits += accel.intersect(ray, hit);
-    }
-    r.cpu = thread_cpu_seconds() - c0;
-    r.wall = wall_seconds() - w0;
-    return r;
-}
-
 void run_bench(const BenchArgs& args) {
     if (args.rays < 1) throw InputError("bench: --rays must be >= 1, got " + std::to_string(args.rays));
     if (args.threads < 1) throw InputError("bench: --threads must be >= 1, got " + std::to_string(args.threads));
     if (args.spp < 1) throw InputError("bench: --spp must be >= 1, got " + std::to_string(args.spp));
+    if (args.scene.empty() == args.meshes.empty())
+        throw InputError("bench: give either a scene file or --meshes DIR, not both or neither");
+    if (!args.meshes.empty()) {
+        run_mesh_bench(args.meshes, args.rays);
+        return;
+    }
     const Scene scene = load_scene(args.scene);
 
     double w0 = wall_seconds();
@@ -109,13 +59,11 @@ void run_bench(const BenchArgs& args) {
         std::printf("%-8s %10.3f %12zu %14.1f\n", accel->name().c_str(), build, accel->memory_bytes(), per_tri);
     }
 
-    const std::vector<collision::Ray> rays = make_rays(scene, native, args.rays, scene.seed);
-    // Untimed warm-up pass over a slice, so neither structure pays for first-touch page faults.
-    const std::vector<collision::Ray> warm(rays.begin(), rays.begin() + std::min<std::size_t>(rays.size(), 10000));
-    trace_all(native, warm);
-    trace_all(*embree, warm);
-    const TraceResult a = trace_all(native, rays);
-    const TraceResult b = trace_all(*embree, rays);
+    const std::vector<collision::Ray> rays = make_bench_rays(scene, native, args.rays, scene.seed);
+    warm_up(native, rays);
+    warm_up(*embree, rays);
+    const TraceResult a = time_intersect(native, rays);
+    const TraceResult b = time_intersect(*embree, rays);
     const double mrays = 1e-6 * static_cast<double>(rays.size());
     std::printf("%zu rays (%d primary + %zu bounce), single-threaded:\n", rays.size(), args.rays,
                 rays.size() - static_cast<std::size_t>(args.rays));
@@ -123,6 +71,13 @@ void run_bench(const BenchArgs& args) {
     std::printf("%-8s %14.3f %15.3f %10zu\n", native.name().c_str(), mrays / a.cpu, mrays / a.wall, a.hits);
     std::printf("%-8s %14.3f %15.3f %10zu\n", embree->name().c_str(), mrays / b.cpu, mrays / b.wall, b.hits);
     std::printf("native / embree: %.2fx (cpu time), %.2fx (wall time)\n", b.cpu / a.cpu, b.wall / a.wall);
+    // The same rays as shadow rays (any hit within their tmax).
+    const TraceResult ao = time_occluded(native, rays);
+    const TraceResult bo = time_occluded(*embree, rays);
+    std::printf("occluded: %s %.3f, %s %.3f Mrays/s (cpu); native / embree %.2fx; occluded / intersect: native %.2fx, "
+                "embree %.2fx\n",
+                native.name().c_str(), mrays / ao.cpu, embree->name().c_str(), mrays / bo.cpu, bo.cpu / ao.cpu,
+                a.cpu / ao.cpu, b.cpu / bo.cpu);
     // An Embree device made with "threads=1" caps TBB's parallelism for the whole process while
     // it lives, which would make the multi-threaded render below run on one core.
     embree.reset();
@@ -146,8 +101,9 @@ void run_bench(const BenchArgs& args) {
 
 void add_bench_command(CLI::App& app, int& exit_code) {
     auto args = std::make_shared<BenchArgs>();
-    auto* cmd = app.add_subcommand("bench", "Time the native BVH against Embree on a scene, and a short render (prints figures)");
-    cmd->add_option("scene", args->scene, "Scene file (JSON)")->required();
+    auto* cmd = app.add_subcommand("bench", "Time the native BVH against Embree on a scene or a folder of meshes (prints figures)");
+    cmd->add_option("scene", args->scene, "Scene file (JSON)");
+    cmd->add_option("--meshes", args->meshes, "Instead of a scene: every .obj file of this folder, framed alone");
     cmd->add_option("--rays", args->rays, "Primary rays (each hit adds one bounce ray)")->capture_default_str();
     cmd->add_option("--threads", args->threads, "Most threads for the render timing")->capture_default_str();
     cmd->add_option("--spp", args->spp, "Samples per pixel of the render timing")->capture_default_str();

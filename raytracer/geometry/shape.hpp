@@ -8,6 +8,7 @@
 //
 // Adding a shape: write its home in shapes/ (and its collision::intersect overload), then add
 // it to the table below. Nothing else names shapes.
+#include <array>
 #include <string_view>
 #include <type_traits>
 #include <variant>
@@ -45,6 +46,13 @@ struct ShapeTable {
     };
     template <class G>
     using HomeOf = typename Find<G, Homes...>::type;
+
+    // {f(Home{})...} in table order, i.e. indexed like the variant's alternatives: a
+    // compile-time dispatch table (e.g. of function pointers) that names no shape itself.
+    template <class F>
+    static constexpr auto make_table(F f) {
+        return std::array{f(Homes{})...};
+    }
 };
 
 // The table: one line per shape.

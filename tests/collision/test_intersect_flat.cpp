@@ -10,6 +10,7 @@
 
 #include "collision/float_error.hpp"
 #include "collision/intersect.hpp"
+#include "collision/surface_uv.hpp"
 #include "collision/triangle_watertight.hpp"
 #include "reference_check.hpp"
 #include "reference_intersect.hpp"
@@ -56,9 +57,9 @@ TEST_CASE("disk: inside, rim, outside", "[intersect][disk]") {
     RayHit h;
     REQUIRE(collision::intersect(Ray{{1.0f, 5.0f, 0.0f}, {0.0f, -1.0f, 0.0f}}, lid, h));
     CHECK(h.t == 4.0f);
-    CHECK(h.uv.x == 0.5f);
+    CHECK(collision::surface_uv(lid, h).x == 0.5f);
     REQUIRE(collision::intersect(Ray{{0.0f, 5.0f, 2.0f}, {0.0f, -1.0f, 0.0f}}, lid, h));  // on the rim
-    CHECK(h.uv.x == 1.0f);
+    CHECK(collision::surface_uv(lid, h).x == 1.0f);
     CHECK_FALSE(collision::intersect(Ray{{0.0f, 5.0f, collision::next_float_up(2.0f)}, {0.0f, -1.0f, 0.0f}}, lid, h));
     CHECK_FALSE(collision::intersect(Ray{{-5.0f, 1.0f, 0.0f}, {1.0f, 0.0f, 0.0f}}, lid, h));  // in its plane
 }

@@ -8,6 +8,7 @@
 
 #include "collision/float_error.hpp"
 #include "collision/intersect.hpp"
+#include "collision/surface_uv.hpp"
 #include "reference_check.hpp"
 #include "reference_intersect.hpp"
 #include "reference_sampling.hpp"
@@ -31,8 +32,9 @@ TEST_CASE("sphere: hit from outside, miss, behind", "[intersect][sphere]") {
     CHECK(h.t == 4.0f);
     CHECK(h.point == glm::vec3(-1.0f, 0.0f, 0.0f));
     CHECK(h.normal == glm::vec3(-1.0f, 0.0f, 0.0f));
-    CHECK(h.uv.x == Approx(0.5f));  // phi = pi
-    CHECK(h.uv.y == Approx(0.5f));  // theta = pi / 2
+    CHECK(h.uv == glm::vec2(0.0f));  // uv only on request:
+    CHECK(collision::surface_uv(s, h).x == Approx(0.5f));  // phi = pi
+    CHECK(collision::surface_uv(s, h).y == Approx(0.5f));  // theta = pi / 2
     // A non-unit direction scales t.
     REQUIRE(collision::intersect(Ray{{-5.0f, 0.0f, 0.0f}, {4.0f, 0.0f, 0.0f}}, s, h));
     CHECK(h.t == 1.0f);

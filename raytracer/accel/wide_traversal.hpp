@@ -1,0 +1,270 @@
+#pragma once
+// The wide BVH's traversals, written once over a kernel K that supplies the two SIMD-able
+// steps (K::Boxes: the slab test of a node's 8 child boxes; K::Triangles: which triangles of a
+// leaf may be hit). Only wide_kernels_scalar.cpp and wide_kernels_avx2.cpp include this, each
+// with its own kernel, and everything here has internal linkage: the AVX2 unit compiles it for
+// AVX2, and no AVX2 copy of a function may be picked by the linker for the scalar path.
+//
+// Box test: the conservative slab test of bvh_traversal.hpp (far distance enlarged by
+// 1 + 2 gamma(3), NaN never shrinks the interval), lane by lane the same float operations in
+// the same order whatever the kernel, so every kernel visits the same nodes in the same order.
+// Closest hit visits children nearest entry first (a stack sorted per node) and skips a popped
+// box entered beyond the current tmax; occluded() is any-hit: no sorting, stops at the first.
+//
+// Triangle test: the watertight test of collision/triangle_watertight.hpp, unchanged, so its
+// stated error bound holds. A SIMD kernel only pre-filters: it computes the sheared vertices and
+// the three edge functions of every triangle of a leaf at once, with exactly the scalar test's
+// operations (no FMA: the build has -ffp-contract=off and the kernels use separate multiply and
+// add), and drops the triangles with one edge function < 0 and another > 0. A non-zero float
+// edge function has the exact sign, so the scalar test (which re-decides only zeros, in double)
+// rejects those too; the others go through the scalar test itself. Hits are therefore the
+// scalar path's, bit for bit. The mesh leaf loops are flattened (the scalar test inlined into
+// them: a few percent on small meshes); in the AVX2 unit that compiles the scalar test with
+// VEX encodings but still without FMA ("fma" is not in the target, -ffp-contract=off).
+#include <bit>
+#include <cstdint>
+
+#include "collision/triangle_watertight.hpp"
+#include "raytracer/accel/bvh_traversal.hpp"
+#include "raytracer/accel/object_candidates.hpp"
+#include "raytracer/accel/wide_bvh.hpp"
+#include "raytracer/accel/wide_kernels.hpp"
+
+namespace sweeptrace {
+namespace {  // NOLINT: internal linkage on purpose, see above
+
+// The ray as the box test wants it: per axis the byte offset, in a WideNode, of the child
+// boxes' near and far planes (lo is near where the direction component is >= 0).
+struct WideRay {
+    float origin[3];
+    float inv_dir[3];
+    std::uint32_t near_offset[3], far_offset[3];
+
+    explicit WideRay(const collision::Ray& ray) {
+        for (int a = 0; a < 3; ++a) {
+            origin[a] = ray.origin[a];
+            inv_dir[a] = 1.0f / ray.dir[a];
+            const std::uint32_t lo = static_cast<std::uint32_t>(sizeof(float)) * kWideWidth * (2 * a);
+            const std::uint32_t hi = lo + static_cast<std::uint32_t>(sizeof(float)) * kWideWidth;
+            near_offset[a] = ray.dir[a] < 0.0f ? hi : lo;
+            far_offset[a] = ray.dir[a] < 0.0f ? lo : hi;
+        }
+    }
+};
+
+inline const float* node_plane(const WideNode& node, std::uint32_t offset) {
+    return reinterpret_cast<const float*>(reinterpret_cast<const unsigned char*>(&node) + offset);
+}
+
+struct StackEntry {
+    std::uint32_t ref;
+    float t_enter;
+};
+
+// Nearest-first traversal; leaf(ref, tmax&) may lower tmax.
+template <class K, class Leaf>
+inline void traverse_nearest(const WideBvh& tree, const WideRay& ray, float tmin, float& tmax, Leaf&& leaf) {
+    const typename K::Boxes boxes(ray);
+    StackEntry stack[WideBvh::stack_size];
+    int top = 0;
+    std::uint32_t ref = tree.root;
+    for (;;) {
+        if (!wide_ref::is_leaf(ref)) {
+            const WideNode& node = tree.nodes[ref];
+            alignas(32) float t_enter[kWideWidth];
+            unsigned mask = boxes.test(node, tmin, tmax, t_enter);
+            if (mask != 0 && (mask & (mask - 1)) == 0) {  // one box: no stack traffic
+                ref = node.child[std::countr_zero(mask)];
+                continue;
+            }
+            if (mask != 0) {
+                const int base = top;
+                do {  // insert sorted: the nearest box ends on top of the stack
+                    const int lane = std::countr_zero(mask);
+                    mask &= mask - 1;
+                    const StackEntry e{node.child[lane], t_enter[lane]};
+                    int j = top++;
+                    for (; j > base && stack[j - 1].t_enter < e.t_enter; --j) stack[j] = stack[j - 1];
+                    stack[j] = e;
+                } while (mask != 0);
+                ref = stack[--top].ref;
+                continue;
+            }
+        } else {
+            leaf(ref, tmax);
+        }
+        for (;;) {  // pop the next box still entered before the (possibly lowered) tmax
+            if (top == 0) return;
+            const StackEntry e = stack[--top];
+            if (e.t_enter <= tmax) {
+                ref = e.ref;
+                break;
+            }
+        }
+    }
+}
+
+// Any-hit traversal: leaf(ref) returns true to stop.
+template <class K, class Leaf>
+inline bool traverse_any(const WideBvh& tree, const WideRay& ray, float tmin, float tmax, Leaf&& leaf) {
+    const typename K::Boxes boxes(ray);
+    std::uint32_t stack[WideBvh::stack_size];
+    int top = 0;
+    std::uint32_t ref = tree.root;
+    for (;;) {
+        if (!wide_ref::is_leaf(ref)) {
+            alignas(32) float t_enter[kWideWidth];
+            const WideNode& node = tree.nodes[ref];
+            unsigned mask = boxes.test(node, tmin, tmax, t_enter);
+            if (mask != 0) {
+                // No sorting, but the nearest box first: a blocker near the origin is found
+                // before the far side of the mesh is opened.
+                int nearest = std::countr_zero(mask);
+                for (unsigned m = mask & (mask - 1); m != 0; m &= m - 1) {
+                    const int lane = std::countr_zero(m);
+                    if (t_enter[lane] < t_enter[nearest]) nearest = lane;
+                }
+                ref = node.child[nearest];
+                for (mask &= ~(1u << nearest); mask != 0; mask &= mask - 1) stack[top++] = node.child[std::countr_zero(mask)];
+                continue;
+            }
+        } else if (leaf(ref)) {
+            return true;
+        }
+        if (top == 0) return false;
+        ref = stack[--top];
+    }
+}
+
+inline glm::vec3 leaf_vertex(const float* block, std::uint32_t count, int vertex, std::uint32_t lane) {
+    return {block[(3 * vertex + 0) * count + lane], block[(3 * vertex + 1) * count + lane],
+            block[(3 * vertex + 2) * count + lane]};
+}
+
+template <class K>
+bool mesh_intersect(const WideMeshView& mesh, const collision::Ray& ray, collision::RayHit& hit, std::uint32_t& triangle) {
+    const collision::TriangleRay tr = collision::prepare_triangle_ray(ray);
+    if (!tr.valid) return false;
+    const typename K::Triangles filter(ray, tr);
+    collision::Ray clipped = ray;
+    collision::TriangleCandidate best;
+    std::uint32_t best_ref = 0, best_lane = 0;
+    bool found = false;
+    traverse_nearest<K>(*mesh.tree, WideRay(ray), ray.tmin, clipped.tmax, [&](std::uint32_t ref, float& tmax) __attribute__((flatten)) {
+        const std::uint32_t first = wide_ref::first(ref), count = wide_ref::count(ref);
+        const float* block = mesh.triangles + 9 * static_cast<std::size_t>(first);
+        for (unsigned m = filter.candidates(block, count); m != 0; m &= m - 1) {
+            const auto lane = static_cast<std::uint32_t>(std::countr_zero(m));
+            if (collision::intersect_triangle_candidate(clipped, tr, leaf_vertex(block, count, 0, lane),
+                                                        leaf_vertex(block, count, 1, lane),
+                                                        leaf_vertex(block, count, 2, lane), best)) {
+                tmax = best.t;  // clips `clipped` too: the traversal holds its tmax
+                best_ref = ref;
+                best_lane = lane;
+                found = true;
+            }
+        }
+    });
+    if (!found) return false;
+    const std::uint32_t first = wide_ref::first(best_ref), count = wide_ref::count(best_ref);
+    const float* block = mesh.triangles + 9 * static_cast<std::size_t>(first);
+    collision::finish_triangle_hit(leaf_vertex(block, count, 0, best_lane), leaf_vertex(block, count, 1, best_lane),
+                                   leaf_vertex(block, count, 2, best_lane), best, hit);
+    triangle = mesh.prims[first + best_lane];
+    return true;
+}
+
+template <class K>
+bool mesh_occluded(const WideMeshView& mesh, const collision::Ray& ray) {
+    const collision::TriangleRay tr = collision::prepare_triangle_ray(ray);
+    if (!tr.valid) return false;
+    const typename K::Triangles filter(ray, tr);
+    return traverse_any<K>(*mesh.tree, WideRay(ray), ray.tmin, ray.tmax, [&](std::uint32_t ref) __attribute__((flatten)) {
+        const std::uint32_t first = wide_ref::first(ref), count = wide_ref::count(ref);
+        const float* block = mesh.triangles + 9 * static_cast<std::size_t>(first);
+        collision::TriangleCandidate c;
+        for (unsigned m = filter.candidates(block, count); m != 0; m &= m - 1) {
+            const auto lane = static_cast<std::uint32_t>(std::countr_zero(m));
+            if (collision::intersect_triangle_candidate(ray, tr, leaf_vertex(block, count, 0, lane),
+                                                        leaf_vertex(block, count, 1, lane),
+                                                        leaf_vertex(block, count, 2, lane), c))
+                return true;
+        }
+        return false;
+    });
+}
+
+// A slot's sphere without a transform: what intersect_analytic does, from the slot's copy.
+inline bool intersect_slot_sphere(const collision::Sphere& sphere, std::uint32_t index, const collision::Ray& ray,
+                                  SurfaceHit& hit) {
+    static const Transform identity;
+    collision::RayHit h;
+    if (!collision::intersect(ray, sphere, h)) return false;
+    surface_hit_to_world(identity, h, 0.0f, hit);
+    hit.object = index;
+    hit.primitive = 0;
+    return true;
+}
+
+template <class K>
+bool object_intersect(const TopLevelView& top, std::uint32_t slot, const collision::Ray& ray, SurfaceHit& hit) {
+    const std::uint32_t index = top.objects[slot];
+    if (top.spheres[slot].radius > 0.0f) return intersect_slot_sphere(top.spheres[slot], index, ray, hit);
+    const Object& object = top.scene->objects[index];
+    const auto* instance = std::get_if<MeshInstance>(&object.shape);
+    if (!instance) return intersect_analytic_object(*top.scene, index, ray, hit);
+    const ObjectRay local = to_object_space(object.transform, ray);
+    collision::RayHit h;
+    std::uint32_t triangle = 0;
+    if (!mesh_intersect<K>(top.meshes[instance->mesh], local.ray, h, triangle)) return false;
+    mesh_hit_to_world(top.scene->meshes[instance->mesh], object, index, triangle, h, local.t_shift, hit);
+    return true;
+}
+
+template <class K>
+bool object_occluded(const TopLevelView& top, std::uint32_t slot, const collision::Ray& ray) {
+    const std::uint32_t index = top.objects[slot];
+    SurfaceHit unused;
+    if (top.spheres[slot].radius > 0.0f) return intersect_slot_sphere(top.spheres[slot], index, ray, unused);
+    const Object& object = top.scene->objects[index];
+    if (const auto* instance = std::get_if<MeshInstance>(&object.shape))
+        return mesh_occluded<K>(top.meshes[instance->mesh], to_object_space(object.transform, ray).ray);
+    return intersect_analytic_object(*top.scene, index, ray, unused);
+}
+
+template <class K>
+bool top_intersect(const TopLevelView& top, const collision::Ray& ray, SurfaceHit& hit) {
+    float tmax = ray.tmax;
+    bool found = false;
+    traverse_nearest<K>(*top.tree, WideRay(ray), ray.tmin, tmax, [&](std::uint32_t ref, float& t_limit) {
+        const std::uint32_t first = wide_ref::first(ref), end = first + wide_ref::count(ref);
+        for (std::uint32_t i = first; i < end; ++i) {
+            collision::Ray clipped = ray;
+            clipped.tmax = t_limit;
+            if (object_intersect<K>(top, i, clipped, hit)) {
+                // A transformed object's t = s + t_shift rounds once more; keep tmax monotone.
+                t_limit = hit.t < t_limit ? hit.t : t_limit;
+                found = true;
+            }
+        }
+    });
+    return found;
+}
+
+template <class K>
+bool top_occluded(const TopLevelView& top, const collision::Ray& ray) {
+    return traverse_any<K>(*top.tree, WideRay(ray), ray.tmin, ray.tmax, [&](std::uint32_t ref) {
+        const std::uint32_t first = wide_ref::first(ref), end = first + wide_ref::count(ref);
+        for (std::uint32_t i = first; i < end; ++i)
+            if (object_occluded<K>(top, i, ray)) return true;
+        return false;
+    });
+}
+
+template <class K>
+constexpr WideKernels make_kernels() {
+    return WideKernels{&mesh_intersect<K>, &mesh_occluded<K>, &top_intersect<K>, &top_occluded<K>};
+}
+
+}  // namespace
+}  // namespace sweeptrace

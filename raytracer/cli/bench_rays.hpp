@@ -1,0 +1,35 @@
+#pragma once
+// What both bench modes share: the rays (primary rays through the camera, plus one bounce from
+// each primary hit) and timed single-threaded passes of intersect() and occluded() over them.
+//
+// Ray rates are per second of the tracing thread's CPU time (wall time beside it): on a shared
+// machine CPU time is the figure that does not depend on what else runs.
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "collision/ray.hpp"
+#include "raytracer/accel/accel.hpp"
+#include "raytracer/scene/scene.hpp"
+
+namespace sweeptrace {
+
+double thread_cpu_seconds();
+double wall_seconds();
+
+// Primary rays through uniformly random film points, and from each primary hit (found with
+// `accel`) one ray leaving it in a uniformly random direction of the normal's hemisphere.
+std::vector<collision::Ray> make_bench_rays(const Scene& scene, const Accel& accel, int primaries, std::uint64_t seed);
+
+struct TraceResult {
+    double cpu = 0.0, wall = 0.0;
+    std::size_t hits = 0;
+};
+
+TraceResult time_intersect(const Accel& accel, const std::vector<collision::Ray>& rays);
+TraceResult time_occluded(const Accel& accel, const std::vector<collision::Ray>& rays);
+
+// An untimed pass over a slice of the rays, so no structure pays for first-touch page faults.
+void warm_up(const Accel& accel, const std::vector<collision::Ray>& rays);
+
+}  // namespace sweeptrace
