@@ -17,8 +17,14 @@ glm::vec3 background_radiance(const Background& bg, const glm::vec3& dir) {
 }
 
 PathIntegrator::PathIntegrator(const Scene& scene, const Accel& accel, const LightSet& lights, int max_depth,
-                               Sampling sampling, PlantedDefect defect)
-    : scene_(scene), accel_(accel), lights_(lights), max_depth_(max_depth), sampling_(sampling), defect_(defect) {}
+                               Sampling sampling, PlantedDefect defect, RoulettePolicy roulette)
+    : scene_(scene),
+      accel_(accel),
+      lights_(lights),
+      max_depth_(max_depth),
+      sampling_(sampling),
+      defect_(defect),
+      roulette_(roulette) {}
 
 collision::Ray PathIntegrator::continue_ray(const SurfaceHit& hit, const glm::vec3& dir) const {
     if (defect_ == PlantedDefect::NoRayOffset) return collision::Ray{hit.point, dir};  // planted: acne
@@ -36,15 +42,17 @@ collision::Ray PathIntegrator::shadow_ray(const SurfaceHit& hit, const LightSamp
     return r;
 }
 
-glm::vec3 PathIntegrator::radiance(collision::Ray ray, Rng& rng, std::uint64_t& rays) const {
+glm::vec3 PathIntegrator::radiance(collision::Ray ray, PixelSampler& sampler, std::uint64_t& rays) const {
     const bool nee = sampling_ == Sampling::NeeMis && !lights_.empty();
     glm::vec3 result(0.0f);
     glm::vec3 beta(1.0f);
+    float eta_scale = 1.0f;     // undoes the 1/eta^2 of refractions, for the roulette
     bool full_weight = true;    // the ray that found this vertex gets MIS weight 1
     float prev_pdf = 0.0f;      // BSDF density of that ray (non-delta only)
     glm::vec3 prev_point(0.0f); // where it left
     std::uint32_t prev_object = LightSet::kNoObject;  // and from which object's surface
     for (int depth = 1;; ++depth) {
+        const int bounce = depth - 1;  // sampler dimensions: sample_dim::bounce(bounce, slot)
         SurfaceHit hit;
         ++rays;
         if (!accel_.intersect(ray, hit)) {
@@ -70,9 +78,11 @@ glm::vec3 PathIntegrator::radiance(collision::Ray ray, Rng& rng, std::uint64_t& 
         const bool delta = is_delta(mat);
 
         if (nee && !delta) {
-            const float us = rng.uniform(), up = rng.uniform(), u1 = rng.uniform(), u2 = rng.uniform();
+            const float us = sampler.get1d(sample_dim::bounce(bounce, sample_dim::kLightChoice));
+            const float up = sampler.get1d(sample_dim::bounce(bounce, sample_dim::kLightPart));
+            const glm::vec2 u = sampler.get2d(sample_dim::bounce(bounce, sample_dim::kLightPoint));
             LightSample ls;
-            if (lights_.sample(hit.point, hit.object, us, up, u1, u2, ls)) {
+            if (lights_.sample(hit.point, hit.object, us, up, u.x, u.y, ls)) {
                 const BsdfEval e = eval_bsdf(mat, ctx, ls.wi);
                 if (e.pdf > 0.0f) {
                     ++rays;
@@ -85,17 +95,24 @@ glm::vec3 PathIntegrator::radiance(collision::Ray ray, Rng& rng, std::uint64_t& 
         }
 
         BsdfSample bs;
-        const float b0 = rng.uniform(), b1 = rng.uniform(), b2 = rng.uniform();
-        if (!sample_bsdf(mat, ctx, b0, b1, b2, bs)) break;
+        const float b0 = sampler.get1d(sample_dim::bounce(bounce, sample_dim::kBsdfLobe));
+        const glm::vec2 b = sampler.get2d(sample_dim::bounce(bounce, sample_dim::kBsdfDirection));
+        if (!sample_bsdf(mat, ctx, b0, b.x, b.y, bs)) break;
         beta *= bs.weight;
         full_weight = bs.delta;
         prev_pdf = bs.pdf;
         prev_point = hit.point;
         prev_object = hit.object;
 
-        if (depth >= 3) {
-            const float q = std::min(1.0f, max_component(beta));
-            if (!(rng.uniform() < q)) break;
+        if (mat.type == Material::Type::Dielectric && glm::dot(bs.wi, ctx.ng) < 0.0f) {
+            const float eta = ctx.front ? mat.ior : 1.0f / mat.ior;  // refracted: weight had 1/eta^2
+            eta_scale *= eta * eta;
+        }
+        if (depth >= roulette_.start_depth) {  // drawn even when q = 1: classic() keeps its old stream
+            const float u = sampler.get1d(sample_dim::bounce(bounce, sample_dim::kRoulette));
+            const float t = max_component(roulette_.undo_refraction_scale ? beta * eta_scale : beta);
+            const float q = survival_probability(roulette_, depth, t);
+            if (!(u < q)) break;
             beta /= q;
         }
         ray = continue_ray(hit, bs.wi);
