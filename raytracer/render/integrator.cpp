@@ -78,11 +78,10 @@ glm::vec3 PathIntegrator::radiance(collision::Ray ray, PixelSampler& sampler, st
         const bool delta = is_delta(mat);
 
         if (nee && !delta) {
-            const float us = sampler.get1d(sample_dim::bounce(bounce, sample_dim::kLightChoice));
-            const float up = sampler.get1d(sample_dim::bounce(bounce, sample_dim::kLightPart));
+            const glm::vec2 uc = sampler.get2d(sample_dim::bounce(bounce, sample_dim::kLightChoice));  // and part
             const glm::vec2 u = sampler.get2d(sample_dim::bounce(bounce, sample_dim::kLightPoint));
             LightSample ls;
-            if (lights_.sample(hit.point, hit.object, us, up, u.x, u.y, ls)) {
+            if (lights_.sample(hit.point, hit.object, uc.x, uc.y, u.x, u.y, ls)) {
                 const BsdfEval e = eval_bsdf(mat, ctx, ls.wi);
                 if (e.pdf > 0.0f) {
                     ++rays;

@@ -30,8 +30,8 @@ namespace sample_dim {
 inline constexpr int kFilm = 0;  // 2D: position inside the pixel
 inline constexpr int kLens = 2;  // 2D: point on the thin lens
 inline constexpr int kCameraDims = 4;
-inline constexpr int kLightChoice = 0;    // 1D: which light
-inline constexpr int kLightPart = 1;      // 1D: which triangle / face of it
+inline constexpr int kLightChoice = 0;    // 2D: which light (x) and which triangle / face of it (y)
+inline constexpr int kLightPart = 1;      // the y of kLightChoice: each coordinate of a net is stratified
 inline constexpr int kLightPoint = 2;     // 2D: the point on it
 inline constexpr int kBsdfLobe = 4;       // 1D: reflect or refract, ...
 inline constexpr int kBsdfDirection = 5;  // 2D: the direction within the lobe

@@ -82,10 +82,12 @@ std::vector<Point> sampler_points(SamplerKind kind, std::uint64_t seed, std::uin
     return pts;
 }
 
-// Every 2D slot of the camera and of the first bounces, and every 1D slot.
+// Every 2D slot of the camera and of the first bounces, and every 1D slot (each coordinate of a 2D
+// slot is stratified in 1D as the net's 2^-k x 1 boxes say).
 std::vector<int> slots_2d() {
     std::vector<int> d{sample_dim::kFilm, sample_dim::kLens};
     for (int b = 0; b < 4; ++b) {
+        d.push_back(sample_dim::bounce(b, sample_dim::kLightChoice));  // with kLightPart
         d.push_back(sample_dim::bounce(b, sample_dim::kLightPoint));
         d.push_back(sample_dim::bounce(b, sample_dim::kBsdfDirection));
     }
@@ -94,7 +96,7 @@ std::vector<int> slots_2d() {
 std::vector<int> slots_1d() {
     std::vector<int> d;
     for (int b = 0; b < 4; ++b)
-        for (int slot : {sample_dim::kLightChoice, sample_dim::kLightPart, sample_dim::kBsdfLobe, sample_dim::kRoulette})
+        for (int slot : {sample_dim::kBsdfLobe, sample_dim::kRoulette})
             d.push_back(sample_dim::bounce(b, slot));
     return d;
 }
@@ -187,7 +189,7 @@ TEST_CASE("sampler: star discrepancy of 256 Sobol points is far below random poi
 }
 
 TEST_CASE("sampler: values depend only on (seed, pixel, sample, dimension), not on the order asked", "[render][sampler]") {
-    const int dims[] = {sample_dim::kFilm, sample_dim::kLens, sample_dim::bounce(0, sample_dim::kLightChoice),
+    const int dims[] = {sample_dim::kFilm, sample_dim::kLens, sample_dim::bounce(0, sample_dim::kBsdfLobe),
                         sample_dim::bounce(3, sample_dim::kBsdfDirection),
                         sample_dim::bounce(sample_dim::kSobolBounces, sample_dim::kLightPoint),  // hashed
                         sample_dim::bounce(sample_dim::kSobolBounces + 5, sample_dim::kRoulette)};
@@ -237,7 +239,7 @@ TEST_CASE("sampler: independent is the per-sample PCG stream in call order", "[r
     const glm::vec2 a = s.get2d(sample_dim::kFilm);
     CHECK(a.x == rng.uniform());
     CHECK(a.y == rng.uniform());
-    CHECK(s.get1d(sample_dim::bounce(0, sample_dim::kLightChoice)) == rng.uniform());
+    CHECK(s.get1d(sample_dim::bounce(0, sample_dim::kBsdfLobe)) == rng.uniform());
     CHECK(s.get1d(12345) == rng.uniform());  // dimensions are ignored
 }
 
