@@ -159,7 +159,7 @@ void study_roulette(const std::string& name, const Scene& scene, const Accel& ac
 }  // namespace
 
 SamplingReport sampling_study(const std::vector<std::filesystem::path>& scenes, int size, int reference_spp,
-                              int roulette_spp, const std::filesystem::path& cache_dir) {
+                              int roulette_spp, const std::filesystem::path& cache_dir, bool convergence) {
     SamplingReport report;
     report.width = size;
     report.reference_spp = reference_spp;
@@ -171,8 +171,10 @@ SamplingReport sampling_study(const std::vector<std::filesystem::path>& scenes, 
         scene.film.height = std::max(2 * kBorder + 1, size * h / std::max(1, w));
         const auto accel = make_accel(AccelKind::Bvh, scene);
         const std::string name = path.stem().string();
-        const RenderResult ref = reference_for(path, scene, *accel, reference_spp, cache_dir);
-        study_configs(name, scene, *accel, ref, report.rows);
+        if (convergence) {
+            const RenderResult ref = reference_for(path, scene, *accel, reference_spp, cache_dir);
+            study_configs(name, scene, *accel, ref, report.rows);
+        }
         if (roulette_spp > 0) study_roulette(name, scene, *accel, roulette_spp, report.roulette);
     }
     return report;
@@ -187,9 +189,7 @@ std::string policy_text(const RoulettePolicy& p) {
     return buf;
 }
 
-}  // namespace
-
-void write_sampling_markdown(std::ostream& out, const SamplingReport& r) {
+void write_convergence_rows(std::ostream& out, const SamplingReport& r) {
     char buf[320];
     std::snprintf(buf, sizeof buf,
                   "%d px wide, 1 thread, CPU seconds; RMSE over pixels > %d px from the edges against a %d-spp "
@@ -205,11 +205,14 @@ void write_sampling_markdown(std::ostream& out, const SamplingReport& r) {
                       row.slope);
         out << buf;
     }
-    if (r.roulette.empty()) return;
+}
+
+void write_roulette_rows(std::ostream& out, const SamplingReport& r) {
+    char buf[320];
     std::snprintf(buf, sizeof buf,
-                  "\nRoulette candidates, independent sampler, %d spp: per-sample variance (mean over interior "
-                  "pixels and channels) x CPU microseconds per sample.\n\n",
-                  r.roulette_spp);
+                  "\nRoulette candidates, %d px wide, independent sampler, %d spp, 1 thread: per-sample variance "
+                  "(mean over interior pixels and channels) x CPU microseconds per sample.\n\n",
+                  r.width, r.roulette_spp);
     out << buf;
     out << "| scene | policy | per-sample variance | us/sample | variance x time | relative to classic |\n"
            "|---|---|---:|---:|---:|---:|\n";
@@ -219,6 +222,13 @@ void write_sampling_markdown(std::ostream& out, const SamplingReport& r) {
                       row.relative);
         out << buf;
     }
+}
+
+}  // namespace
+
+void write_sampling_markdown(std::ostream& out, const SamplingReport& r) {
+    if (!r.rows.empty()) write_convergence_rows(out, r);
+    if (!r.roulette.empty()) write_roulette_rows(out, r);
 }
 
 void write_sampling_csv(std::ostream& out, const SamplingReport& r) {
@@ -231,7 +241,7 @@ void write_sampling_csv(std::ostream& out, const SamplingReport& r) {
         out << buf;
     }
     for (const auto& row : r.roulette) {
-        std::snprintf(buf, sizeof buf, "roulette,%s,independent,%s,%d,,,,,%.6g,%.6g,%.6g,%.6g\n", row.scene.c_str(),
+        std::snprintf(buf, sizeof buf, "roulette,%s,independent,\"%s\",%d,,,,,%.6g,%.6g,%.6g,%.6g\n", row.scene.c_str(),
                       policy_text(row.policy).c_str(), r.roulette_spp, row.per_sample_variance, row.us_per_sample,
                       row.product, row.relative);
         out << buf;

@@ -51,8 +51,9 @@ struct SamplingReport {
     std::vector<RouletteRow> roulette;
 };
 
+// convergence = false: the roulette candidates only (no reference, no convergence rows).
 SamplingReport sampling_study(const std::vector<std::filesystem::path>& scenes, int size, int reference_spp,
-                              int roulette_spp, const std::filesystem::path& cache_dir);
+                              int roulette_spp, const std::filesystem::path& cache_dir, bool convergence = true);
 
 void write_sampling_markdown(std::ostream& out, const SamplingReport& report);
 void write_sampling_csv(std::ostream& out, const SamplingReport& report);

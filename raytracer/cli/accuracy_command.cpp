@@ -39,6 +39,7 @@ struct AccuracyOptions {
     std::vector<std::string> convergence;
     std::vector<std::string> sampling;
     int roulette_spp = 256;
+    bool roulette_only = false;
     std::string cache = "sampling-cache";
     int size = 96, spp = 16, reference_spp = 256, max_exponent = 6;
 };
@@ -54,7 +55,8 @@ void run(const AccuracyOptions& o) {
     }
     if (!o.sampling.empty()) {
         std::vector<std::filesystem::path> scenes(o.sampling.begin(), o.sampling.end());
-        const auto report = accuracy::sampling_study(scenes, o.size, o.reference_spp, o.roulette_spp, o.cache);
+        const auto report = accuracy::sampling_study(scenes, o.size, o.reference_spp, o.roulette_spp, o.cache,
+                                                     !o.roulette_only);
         accuracy::write_sampling_markdown(std::cout, report);
         if (!o.csv.empty()) accuracy::save_file(o.csv, [&](std::ostream& f) { accuracy::write_sampling_csv(f, report); });
         if (!o.markdown.empty()) {
@@ -150,6 +152,7 @@ void add_accuracy_command(CLI::App& app, int& exit_code) {
     cmd->add_option("--roulette-spp", options->roulette_spp,
                     "With --sampling: samples per pixel of the roulette candidates' variance x time (0: skip)")
         ->check(CLI::Range(0, 1 << 16));
+    cmd->add_flag("--roulette-only", options->roulette_only, "With --sampling: only the roulette candidates");
     cmd->add_option("--cache", options->cache,
                     "With --sampling: directory for the cached reference renders (run from the build tree)")
         ->capture_default_str();
