@@ -107,13 +107,11 @@ glm::vec3 PathIntegrator::radiance(collision::Ray ray, PixelSampler& sampler, st
             const float eta = ctx.front ? mat.ior : 1.0f / mat.ior;  // refracted: weight had 1/eta^2
             eta_scale *= eta * eta;
         }
-        if (depth >= roulette_.start_depth) {  // drawn even when q = 1: classic() keeps its old stream
-            const float u = sampler.get1d(sample_dim::bounce(bounce, sample_dim::kRoulette));
-            const float t = max_component(roulette_.undo_refraction_scale ? beta * eta_scale : beta);
-            const float q = survival_probability(roulette_, depth, t);
-            if (!(u < q)) break;
-            beta /= q;
-        }
+        // Drawn even when the survival probability is 1: classic() keeps the old random stream.
+        if (depth >= roulette_.start_depth &&
+            !survives_roulette(roulette_, depth, sampler.get1d(sample_dim::bounce(bounce, sample_dim::kRoulette)),
+                               eta_scale, beta))
+            break;
         ray = continue_ray(hit, bs.wi);
     }
     return result;

@@ -16,6 +16,10 @@
 // per-sample variance x CPU time relative to classic(), averaged over the five shipped scenes
 // (0.92; from vertex 3 with eta undone 0.93; lower thresholds 0.1-0.5 cut the per-sample
 // variance by up to 10-30 % on smallpt and the mesh scene, but lengthen paths by more: 0.96-1.05).
+#include <glm/vec3.hpp>
+
+#include "raytracer/render/sampling.hpp"
+
 namespace sweeptrace {
 
 struct RoulettePolicy {
@@ -31,6 +35,16 @@ struct RoulettePolicy {
 inline float survival_probability(const RoulettePolicy& p, int depth, float t) {
     if (depth < p.start_depth || !(t < p.threshold)) return 1.0f;
     return t / p.threshold;
+}
+
+// The roulette at vertex `depth` with uniform u: false when the path stops; otherwise `beta` is
+// divided by the survival probability. eta_scale: the product of eta^2 over the path's refractions.
+inline bool survives_roulette(const RoulettePolicy& p, int depth, float u, float eta_scale, glm::vec3& beta) {
+    const float t = max_component(p.undo_refraction_scale ? beta * eta_scale : beta);
+    const float q = survival_probability(p, depth, t);
+    if (!(u < q)) return false;
+    beta /= q;
+    return true;
 }
 
 }  // namespace sweeptrace
