@@ -14,8 +14,8 @@
 // adaptive() is the default: from the second vertex, below throughput 1, refractions undone. Of
 // the candidates `sweeptrace accuracy --sampling` measures (docs/sampling.md), it had the lowest
 // per-sample variance x CPU time relative to classic(), averaged over the five shipped scenes
-// (0.92; from vertex 3 with eta undone 0.93; lower thresholds 0.1-0.5 cut the per-sample
-// variance by up to 10-30 % on smallpt and the mesh scene, but lengthen paths by more: 0.96-1.05).
+// (0.92; from vertex 3 with eta undone 0.93, within timing noise; thresholds 0.1-0.5 cut the
+// per-sample variance of the glass scenes but lengthen paths by more: 0.96-1.11).
 #include <glm/vec3.hpp>
 
 #include "raytracer/render/sampling.hpp"
