@@ -5,6 +5,7 @@
 // With --structures: the thesis's structures redone for rays, speed against triangle count.
 // With --tessellation: the same objects analytic and tessellated, rendered.
 // With --convergence SCENE...: image error against time, BSDF-only / NEE+MIS, BVH / Embree.
+// With --sampling SCENE...: Sobol against independent samples, adaptive against classic roulette.
 #include <filesystem>
 #include <iostream>
 #include <memory>
@@ -17,6 +18,7 @@
 #include "raytracer/accuracy/render_studies.hpp"
 #include "raytracer/accuracy/report.hpp"
 #include "raytracer/accuracy/routines.hpp"
+#include "raytracer/accuracy/sampling_study.hpp"
 #include "raytracer/accuracy/structures.hpp"
 #include "raytracer/cli/commands.hpp"
 #include "raytracer/input_error.hpp"
@@ -38,6 +40,10 @@ struct AccuracyOptions {
     double budget = 0.5;
     bool tessellation = false;
     std::vector<std::string> convergence;
+    std::vector<std::string> sampling;
+    int roulette_spp = 256;
+    bool roulette_only = false;
+    std::string cache = "sampling-cache";
     int size = 96, spp = 16, reference_spp = 256, max_exponent = 6;
 };
 
@@ -46,8 +52,20 @@ void run(const AccuracyOptions& o) {
         if (!path->empty()) accuracy::check_writable(*path);
     }
     if (!o.methods_csv.empty() && o.meshes.empty()) throw InputError("--methods-csv: only with --meshes");
-    if (int(o.structures) + int(!o.meshes.empty()) + int(o.tessellation) + int(!o.convergence.empty()) > 1) {
-        throw InputError("--structures, --meshes, --tessellation and --convergence: choose one");
+    if (int(o.structures) + int(!o.meshes.empty()) + int(o.tessellation) + int(!o.convergence.empty()) +
+            int(!o.sampling.empty()) > 1) {
+        throw InputError("--structures, --meshes, --tessellation, --convergence and --sampling: choose one");
+    }
+    if (!o.sampling.empty()) {
+        std::vector<std::filesystem::path> scenes(o.sampling.begin(), o.sampling.end());
+        const auto report = accuracy::sampling_study(scenes, o.size, o.reference_spp, o.roulette_spp, o.cache,
+                                                     !o.roulette_only);
+        accuracy::write_sampling_markdown(std::cout, report);
+        if (!o.csv.empty()) accuracy::save_file(o.csv, [&](std::ostream& f) { accuracy::write_sampling_csv(f, report); });
+        if (!o.markdown.empty()) {
+            accuracy::save_file(o.markdown, [&](std::ostream& f) { accuracy::write_sampling_markdown(f, report); });
+        }
+        return;
     }
     if (o.tessellation) {
         const auto rows = accuracy::tessellation_study(o.size, o.spp, o.reference_spp, o.max_exponent, unsigned(o.seed));
@@ -153,7 +171,18 @@ void add_accuracy_command(CLI::App& app, int& exit_code) {
         ->check(CLI::Range(2, 7));
     cmd->add_option("--convergence", options->convergence, "Image error against time for these scene files")
         ->check(CLI::ExistingFile);
-    cmd->add_option("--size", options->size, "With --tessellation / --convergence: image width in pixels")
+    cmd->add_option("--sampling", options->sampling,
+                    "Sobol against independent samples and adaptive against classic roulette, RMSE at 16-1024 spp "
+                    "and at equal CPU time, for these scene files")
+        ->check(CLI::ExistingFile);
+    cmd->add_option("--roulette-spp", options->roulette_spp,
+                    "With --sampling: samples per pixel of the roulette candidates' variance x time (0: skip)")
+        ->check(CLI::Range(0, 1 << 16));
+    cmd->add_flag("--roulette-only", options->roulette_only, "With --sampling: only the roulette candidates");
+    cmd->add_option("--cache", options->cache,
+                    "With --sampling: directory for the cached reference renders (run from the build tree)")
+        ->capture_default_str();
+    cmd->add_option("--size", options->size, "With --tessellation / --convergence / --sampling: image width in pixels")
         ->check(CLI::Range(8, 4096));
     cmd->add_option("--spp", options->spp,
                     "With --tessellation: samples per pixel; with --convergence: the largest of 1, 2, 4 ...")

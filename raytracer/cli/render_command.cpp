@@ -59,6 +59,7 @@ struct RenderArgs {
     int spp = 0, width = 0, height = 0, threads = 0, max_depth = 0;
     std::uint64_t seed = 0;
     std::string accel = "bvh";
+    std::string sampler;  // empty: the scene's film.sampler
     bool quiet = false;
     CLI::Option *spp_opt = nullptr, *width_opt = nullptr, *height_opt = nullptr, *depth_opt = nullptr,
                 *seed_opt = nullptr;
@@ -165,6 +166,7 @@ int run_render(const RenderArgs& a) {
     if (a.spp_opt->count()) scene.film.spp = a.spp;
     if (a.depth_opt->count()) scene.film.max_depth = a.max_depth;
     if (a.seed_opt->count()) scene.seed = a.seed;
+    if (!a.sampler.empty()) scene.film.sampler = a.sampler == "independent" ? SamplerKind::Independent : SamplerKind::Sobol;
 
     const auto build_start = std::chrono::steady_clock::now();
     const std::unique_ptr<Accel> accel = make_accel(a.accel == "embree" ? AccelKind::Embree : AccelKind::Bvh, scene);
@@ -175,6 +177,7 @@ int run_render(const RenderArgs& a) {
     opt.max_depth = scene.film.max_depth;
     opt.threads = a.threads;
     opt.seed = scene.seed;
+    opt.sampler = scene.film.sampler;
     SigintGuard sigint;
     opt.cancel = &g_interrupted;
     ProgressDisplay progress(isatty(fileno(stderr)) != 0);
@@ -220,7 +223,9 @@ void add_render_command(CLI::App& app, int& exit_code) {
                     "Default: the scene's name with .png, in the current directory");
     cmd->add_option("--variance", args->variance,
                     "Also write the per-pixel variance of each pixel's mean (.exr/.pfm): the samples' unbiased "
-                    "variance / spp, from the same samples (needs spp >= 2); for `diff --variance-a/-b`");
+                    "variance / spp, from the same samples (needs spp >= 2); for `diff --variance-a/-b`. Exact for "
+                    "--sampler independent; under sobol (stratified) the true variance is smaller, so the file "
+                    "overstates it and diff's noise test is conservative");
     args->spp_opt = cmd->add_option("--spp", args->spp, "Samples per pixel (default: the scene's film.spp)");
     args->width_opt = cmd->add_option("--width", args->width,
                                       "Image width; alone, the height follows the film's aspect ratio");
@@ -233,6 +238,10 @@ void add_render_command(CLI::App& app, int& exit_code) {
     cmd->add_option("--accel", args->accel, "Acceleration structure")
         ->check(CLI::IsMember({"bvh", "embree"}))
         ->capture_default_str();
+    cmd->add_option("--sampler", args->sampler,
+                    "Sample numbers: sobol (Owen-scrambled Sobol, stratified) or independent (uniform random). "
+                    "Default: the scene's film.sampler, else sobol")
+        ->check(CLI::IsMember({"sobol", "independent"}));
     cmd->add_flag("--quiet", args->quiet, "No progress display and no summary");
     cmd->callback([args, &exit_code] { exit_code = run_render(*args); });
 }

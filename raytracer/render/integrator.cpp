@@ -17,8 +17,14 @@ glm::vec3 background_radiance(const Background& bg, const glm::vec3& dir) {
 }
 
 PathIntegrator::PathIntegrator(const Scene& scene, const Accel& accel, const LightSet& lights, int max_depth,
-                               Sampling sampling, PlantedDefect defect)
-    : scene_(scene), accel_(accel), lights_(lights), max_depth_(max_depth), sampling_(sampling), defect_(defect) {}
+                               Sampling sampling, PlantedDefect defect, RoulettePolicy roulette)
+    : scene_(scene),
+      accel_(accel),
+      lights_(lights),
+      max_depth_(max_depth),
+      sampling_(sampling),
+      defect_(defect),
+      roulette_(roulette) {}
 
 collision::Ray PathIntegrator::continue_ray(const SurfaceHit& hit, const glm::vec3& dir) const {
     if (defect_ == PlantedDefect::NoRayOffset) return collision::Ray{hit.point, dir};  // planted: acne
@@ -36,15 +42,17 @@ collision::Ray PathIntegrator::shadow_ray(const SurfaceHit& hit, const LightSamp
     return r;
 }
 
-glm::vec3 PathIntegrator::radiance(collision::Ray ray, Rng& rng, std::uint64_t& rays) const {
+glm::vec3 PathIntegrator::radiance(collision::Ray ray, PixelSampler& sampler, std::uint64_t& rays) const {
     const bool nee = sampling_ == Sampling::NeeMis && !lights_.empty();
     glm::vec3 result(0.0f);
     glm::vec3 beta(1.0f);
+    float eta_scale = 1.0f;     // undoes the 1/eta^2 of refractions, for the roulette
     bool full_weight = true;    // the ray that found this vertex gets MIS weight 1
     float prev_pdf = 0.0f;      // BSDF density of that ray (non-delta only)
     glm::vec3 prev_point(0.0f); // where it left
     std::uint32_t prev_object = LightSet::kNoObject;  // and from which object's surface
     for (int depth = 1;; ++depth) {
+        const int bounce = depth - 1;  // sampler dimensions: sample_dim::bounce(bounce, slot)
         SurfaceHit hit;
         ++rays;
         if (!accel_.intersect(ray, hit)) {
@@ -70,9 +78,10 @@ glm::vec3 PathIntegrator::radiance(collision::Ray ray, Rng& rng, std::uint64_t& 
         const bool delta = is_delta(mat);
 
         if (nee && !delta) {
-            const float us = rng.uniform(), up = rng.uniform(), u1 = rng.uniform(), u2 = rng.uniform();
+            const glm::vec2 uc = sampler.get2d(sample_dim::bounce(bounce, sample_dim::kLightChoice));  // and part
+            const glm::vec2 u = sampler.get2d(sample_dim::bounce(bounce, sample_dim::kLightPoint));
             LightSample ls;
-            if (lights_.sample(hit.point, hit.object, us, up, u1, u2, ls)) {
+            if (lights_.sample(hit.point, hit.object, uc.x, uc.y, u.x, u.y, ls)) {
                 const BsdfEval e = eval_bsdf(mat, ctx, ls.wi);
                 if (e.pdf > 0.0f) {
                     ++rays;
@@ -85,19 +94,24 @@ glm::vec3 PathIntegrator::radiance(collision::Ray ray, Rng& rng, std::uint64_t& 
         }
 
         BsdfSample bs;
-        const float b0 = rng.uniform(), b1 = rng.uniform(), b2 = rng.uniform();
-        if (!sample_bsdf(mat, ctx, b0, b1, b2, bs)) break;
+        const float b0 = sampler.get1d(sample_dim::bounce(bounce, sample_dim::kBsdfLobe));
+        const glm::vec2 b = sampler.get2d(sample_dim::bounce(bounce, sample_dim::kBsdfDirection));
+        if (!sample_bsdf(mat, ctx, b0, b.x, b.y, bs)) break;
         beta *= bs.weight;
         full_weight = bs.delta;
         prev_pdf = bs.pdf;
         prev_point = hit.point;
         prev_object = hit.object;
 
-        if (depth >= 3) {
-            const float q = std::min(1.0f, max_component(beta));
-            if (!(rng.uniform() < q)) break;
-            beta /= q;
+        if (mat.type == Material::Type::Dielectric && glm::dot(bs.wi, ctx.ng) < 0.0f) {
+            const float eta = ctx.front ? mat.ior : 1.0f / mat.ior;  // refracted: weight had 1/eta^2
+            eta_scale *= eta * eta;
         }
+        // Drawn even when the survival probability is 1: classic() keeps the old random stream.
+        if (depth >= roulette_.start_depth &&
+            !survives_roulette(roulette_, depth, sampler.get1d(sample_dim::bounce(bounce, sample_dim::kRoulette)),
+                               eta_scale, beta))
+            break;
         ray = continue_ray(hit, bs.wi);
     }
     return result;

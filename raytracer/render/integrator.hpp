@@ -14,8 +14,8 @@
 // Depth: max_depth counts path vertices after the camera, the emitting vertex included, so
 // max_depth = 1 shows only emitters (and the background) seen directly. Both strategies stop at
 // the same path length, so NeeMis and BsdfOnly estimate exactly the same truncated sum.
-// Russian roulette from the third bounce on: continue with probability min(1, max(throughput)),
-// dividing the throughput by it (unbiased).
+// Russian roulette as RoulettePolicy (roulette.hpp) states it. Each decision takes its numbers
+// from the sampler's fixed dimension layout (sample_dim in sampler.hpp).
 #include <cstdint>
 
 #include <glm/vec3.hpp>
@@ -24,7 +24,8 @@
 #include "raytracer/accel/accel.hpp"
 #include "raytracer/render/lights.hpp"
 #include "raytracer/render/planted_defect.hpp"
-#include "raytracer/render/random.hpp"
+#include "raytracer/render/roulette.hpp"
+#include "raytracer/render/sampler.hpp"
 #include "raytracer/scene/scene.hpp"
 
 namespace sweeptrace {
@@ -36,10 +37,10 @@ glm::vec3 background_radiance(const Background& bg, const glm::vec3& dir);
 class PathIntegrator {
 public:
     PathIntegrator(const Scene& scene, const Accel& accel, const LightSet& lights, int max_depth, Sampling sampling,
-                   PlantedDefect defect);
+                   PlantedDefect defect, RoulettePolicy roulette = RoulettePolicy::adaptive());
 
     // `ray` must have a unit direction. Adds every ray traced to `rays`.
-    glm::vec3 radiance(collision::Ray ray, Rng& rng, std::uint64_t& rays) const;
+    glm::vec3 radiance(collision::Ray ray, PixelSampler& sampler, std::uint64_t& rays) const;
 
 private:
     collision::Ray continue_ray(const SurfaceHit& hit, const glm::vec3& dir) const;
@@ -51,6 +52,7 @@ private:
     int max_depth_;
     Sampling sampling_;
     PlantedDefect defect_;
+    RoulettePolicy roulette_;
 };
 
 }  // namespace sweeptrace

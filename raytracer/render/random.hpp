@@ -18,6 +18,7 @@ inline std::uint64_t mix64(std::uint64_t x) {
 
 class Rng {
 public:
+    Rng() = default;  // a placeholder stream; assign a real one before use
     Rng(std::uint64_t seed, std::uint64_t pixel, std::uint64_t sample) {
         const std::uint64_t h = mix64(mix64(mix64(seed) ^ pixel) ^ sample);
         inc_ = (mix64(h ^ 0x5851f42d4c957f2dull) << 1u) | 1u;  // odd: a valid PCG stream selector

@@ -23,7 +23,7 @@
 #include "raytracer/render/camera.hpp"
 #include "raytracer/render/integrator.hpp"
 #include "raytracer/render/lights.hpp"
-#include "raytracer/render/random.hpp"
+#include "raytracer/render/sampler.hpp"
 
 namespace sweeptrace {
 
@@ -44,7 +44,7 @@ public:
           tiles_y_((height_ + kTileSize - 1) / kTileSize),
           lights_(scene, defect),
           camera_(scene.camera, width_, height_),
-          integrator_(scene, accel, lights_, opt.max_depth, opt.sampling, defect),
+          integrator_(scene, accel, lights_, opt.max_depth, opt.sampling, defect, opt.roulette),
           sum_(static_cast<std::size_t>(width_) * height_, glm::dvec3(0.0)),
           sum_sq_(sum_.size(), glm::dvec3(0.0)),
           pass_(sum_.size()) {}
@@ -124,11 +124,11 @@ private:
         for (int y = y0; y < y1; ++y) {
             for (int x = x0; x < x1; ++x) {
                 const std::size_t pixel = static_cast<std::size_t>(y) * width_ + x;
-                Rng rng(opt_.seed, pixel, static_cast<std::uint64_t>(sample));
-                const float fx = static_cast<float>(x) + rng.uniform();
-                const float fy = static_cast<float>(y) + rng.uniform();
-                const float l1 = rng.uniform(), l2 = rng.uniform();
-                glm::vec3 l = integrator_.radiance(camera_.generate(fx, fy, l1, l2), rng, rays);
+                PixelSampler sampler(opt_.sampler, opt_.seed, pixel, static_cast<std::uint64_t>(sample));
+                const glm::vec2 film = sampler.get2d(sample_dim::kFilm);
+                const glm::vec2 lens = sampler.get2d(sample_dim::kLens);
+                const glm::vec2 p = glm::vec2(static_cast<float>(x), static_cast<float>(y)) + film;
+                glm::vec3 l = integrator_.radiance(camera_.generate(p.x, p.y, lens.x, lens.y), sampler, rays);
                 if (!std::isfinite(l.x) || !std::isfinite(l.y) || !std::isfinite(l.z)) {
                     l = glm::vec3(0.0f);
                     ++nonfinite;

@@ -6,6 +6,7 @@
 
 #include "raytracer/accel/accel.hpp"
 #include "raytracer/image/image.hpp"
+#include "raytracer/render/roulette.hpp"
 #include "raytracer/scene/scene.hpp"
 
 namespace sweeptrace {
@@ -21,6 +22,8 @@ struct RenderOptions {
     int threads = 0;  // 0 = all cores
     std::uint64_t seed = 0;
     Sampling sampling = Sampling::NeeMis;
+    SamplerKind sampler = SamplerKind::Sobol;  // callers copy scene.film.sampler here
+    RoulettePolicy roulette = RoulettePolicy::adaptive();
     const std::atomic<bool>* cancel = nullptr;  // set (e.g. by SIGINT) to stop early
     // Called now and then from one thread with the fraction done in [0, 1].
     std::function<void(double)> progress;
@@ -46,8 +49,8 @@ struct RenderResult {
     RenderStats stats;
 };
 
-// Same scene + options (seed, spp, max_depth, sampling) give the same image bit for bit whatever
-// `threads` is: every pixel sample draws from its own random stream.
+// Same scene + options (seed, spp, max_depth, sampling, sampler, roulette) give the same image bit for bit whatever
+// `threads` is: every pixel sample's numbers are addressed by (seed, pixel, sample, dimension).
 // The image size is scene.film's; spp and max_depth are the options'. Rendering runs in passes of
 // one sample per pixel; when `cancel` is set, the pass in flight is dropped, so every pixel of
 // the returned image holds the same completed_spp samples (0: a black image), and the image is

@@ -21,11 +21,15 @@ struct Camera {
     float focus_distance = 0.0f;  // 0 = distance from position to look_at
 };
 
+// Where a camera sample's numbers come from (render/sampler.hpp).
+enum class SamplerKind { Independent, Sobol };
+
 struct Film {
     int width = 320;
     int height = 240;
     int spp = 16;
     int max_depth = 8;  // path vertices after the camera; Russian roulette may stop earlier
+    SamplerKind sampler = SamplerKind::Sobol;
 };
 
 struct Background {
