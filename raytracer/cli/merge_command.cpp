@@ -1,0 +1,55 @@
+// `sweeptrace merge PART... -o final.png|.exr|.pfm`: farm parts (`render --samples A:B`) summed
+// into the image one machine's `render --spp N` gives, bit for bit. Parts of different renders,
+// overlapping ranges or missing samples exit 2 naming what is wrong; nothing is written then.
+#include <cstdio>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "raytracer/cli/commands.hpp"
+#include "raytracer/image/image.hpp"
+#include "raytracer/image/partial_image.hpp"
+#include "raytracer/input_error.hpp"
+#include "raytracer/render/tone_map.hpp"
+
+namespace sweeptrace {
+namespace {
+
+struct MergeArgs {
+    std::vector<std::string> parts;
+    std::string output;
+    bool quiet = false;
+};
+
+int run_merge(const MergeArgs& a) {
+    // Fails on a bad output name before reading gigabytes of parts.
+    if (!is_display_format(a.output)) {
+        const std::string ext = std::filesystem::path(a.output).extension().string();
+        if (ext != ".exr" && ext != ".pfm" && ext != ".EXR" && ext != ".PFM")
+            throw InputError("output '" + a.output + "': unknown image extension '" + ext + "' (use .png, .pfm or .exr)");
+    }
+    std::vector<PartialImage> parts;
+    parts.reserve(a.parts.size());
+    for (const std::string& p : a.parts) parts.push_back(read_partial(p));
+    const PartialImage whole = merge_partials(parts, a.parts);
+    const Image image = whole.mean();
+    write_image(is_display_format(a.output) ? to_display(image) : image, a.output);
+    if (!a.quiet)
+        std::fprintf(stderr, "merge: %zu parts, %dx%d, %d spp -> %s\n", parts.size(), whole.id.width, whole.id.height,
+                     whole.id.spp, a.output.c_str());
+    return 0;
+}
+
+}  // namespace
+
+void add_merge_command(CLI::App& app, int& exit_code) {
+    auto args = std::make_shared<MergeArgs>();
+    auto* cmd = app.add_subcommand("merge", "Sum farm parts (render --samples A:B) into the whole render's image");
+    cmd->add_option("parts", args->parts, "Part files (.exr) of one render, covering its samples once each")->required();
+    cmd->add_option("-o,--output", args->output, "Output image: .png (8-bit sRGB), .pfm or .exr (linear float)")
+        ->required();
+    cmd->add_flag("--quiet", args->quiet, "No summary line");
+    cmd->callback([args, &exit_code] { exit_code = run_merge(*args); });
+}
+
+}  // namespace sweeptrace
