@@ -29,17 +29,19 @@ print_logs() {
     done
 }
 
-# Stops by the pid files the daemons wrote (never by name: other Slurms may run here).
+# Stops by the pid files the daemons wrote (never by name: other Slurms may run here). All are
+# signalled at once, then waited for (each takes a second or two to shut down).
 stop() {
-    local name pid
+    local name pid pids=()
     for name in slurmd slurmctld munged; do
         [ -f "$dir/run/$name.pid" ] || continue
         pid=$(cat "$dir/run/$name.pid" 2>/dev/null || true)
-        [ -n "$pid" ] || continue
-        kill "$pid" 2>/dev/null || true
-        for _ in $(seq 50); do kill -0 "$pid" 2>/dev/null || break; sleep 0.1; done
-        kill -9 "$pid" 2>/dev/null || true
         rm -f "$dir/run/$name.pid"
+        if [ -n "$pid" ] && kill "$pid" 2>/dev/null; then pids+=("$pid"); fi
+    done
+    for pid in "${pids[@]}"; do
+        for _ in $(seq 100); do kill -0 "$pid" 2>/dev/null || break; sleep 0.1; done
+        kill -9 "$pid" 2>/dev/null || true
     done
 }
 
@@ -74,6 +76,7 @@ TaskPlugin=task/none
 JobAcctGatherType=jobacct_gather/none
 AccountingStorageType=accounting_storage/none
 SchedulerType=sched/backfill
+SchedulerParameters=sched_interval=1
 SelectType=select/cons_tres
 SelectTypeParameters=CR_Core
 ReturnToService=2
