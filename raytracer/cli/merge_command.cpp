@@ -1,7 +1,10 @@
 // `sweeptrace merge PART... -o final.png|.exr|.pfm`: farm parts (`render --samples A:B`) summed
 // into the image one machine's `render --spp N` gives, bit for bit. Parts of different renders,
 // overlapping ranges or missing samples exit 2 naming what is wrong; nothing is written then.
+#include <algorithm>
+#include <cctype>
 #include <cstdio>
+#include <filesystem>
 #include <memory>
 #include <string>
 #include <vector>
@@ -22,12 +25,11 @@ struct MergeArgs {
 };
 
 int run_merge(const MergeArgs& a) {
-    // Fails on a bad output name before reading gigabytes of parts.
-    if (!is_display_format(a.output)) {
-        const std::string ext = std::filesystem::path(a.output).extension().string();
-        if (ext != ".exr" && ext != ".pfm" && ext != ".EXR" && ext != ".PFM")
-            throw InputError("output '" + a.output + "': unknown image extension '" + ext + "' (use .png, .pfm or .exr)");
-    }
+    // A bad output name fails before gigabytes of parts are read.
+    std::string ext = std::filesystem::path(a.output).extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    if (ext != ".png" && ext != ".exr" && ext != ".pfm")
+        throw InputError("output '" + a.output + "': unknown image extension '" + ext + "' (use .png, .pfm or .exr)");
     std::vector<PartialImage> parts;
     parts.reserve(a.parts.size());
     for (const std::string& p : a.parts) parts.push_back(read_partial(p));
