@@ -30,14 +30,27 @@ int run_merge(const MergeArgs& a) {
     std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
     if (ext != ".png" && ext != ".exr" && ext != ".pfm")
         throw InputError("output '" + a.output + "': unknown image extension '" + ext + "' (use .png, .pfm or .exr)");
-    std::vector<PartialImage> parts;
-    parts.reserve(a.parts.size());
-    for (const std::string& p : a.parts) parts.push_back(read_partial(p));
-    const PartialImage whole = merge_partials(parts, a.parts);
+    // Headers first, so a wrong set of parts is refused before any sums are read; then one part's
+    // sums at a time, so memory stays two parts' worth however many there are.
+    std::vector<PartialImage> headers;
+    headers.reserve(a.parts.size());
+    for (const std::string& p : a.parts) headers.push_back(read_partial_header(p));
+    const std::vector<std::size_t> order = check_partials(headers, a.parts);
+    PartialImage whole;
+    whole.id = headers[order[0]].id;
+    for (std::size_t i : order) {
+        const PartialImage part = read_partial(a.parts[i]);
+        if (part.id != headers[i].id || part.sample_begin != headers[i].sample_begin ||
+            part.sample_end != headers[i].sample_end)
+            throw InputError("'" + a.parts[i] + "' changed while the merge was reading it");
+        if (whole.sums.empty()) whole.sums.assign(part.sums.size(), PixelSum{});
+        for (std::size_t px = 0; px < whole.sums.size(); ++px) whole.sums[px] += part.sums[px];
+    }
+    whole.sample_end = whole.id.spp;
     const Image image = whole.mean();
     write_image(is_display_format(a.output) ? to_display(image) : image, a.output);
     if (!a.quiet)
-        std::fprintf(stderr, "merge: %zu parts, %dx%d, %d spp -> %s\n", parts.size(), whole.id.width, whole.id.height,
+        std::fprintf(stderr, "merge: %zu parts, %dx%d, %d spp -> %s\n", headers.size(), whole.id.width, whole.id.height,
                      whole.id.spp, a.output.c_str());
     return 0;
 }

@@ -170,6 +170,19 @@ void write_partial(const PartialImage& part, const std::filesystem::path& path) 
     });
 }
 
+PartialImage read_partial_header(const std::filesystem::path& path) {
+    const std::string file = path.string();
+    if (!std::filesystem::is_regular_file(path)) throw InputError("cannot read '" + file + "': no such file");
+    try {
+        Imf::InputFile in(path.c_str());
+        return header_part(in.header(), file);
+    } catch (const InputError&) {
+        throw;
+    } catch (const std::exception& e) {
+        throw InputError("cannot read '" + file + "': not a valid EXR part (" + e.what() + ")");
+    }
+}
+
 PartialImage read_partial(const std::filesystem::path& path) {
     const std::string file = path.string();
     if (!std::filesystem::is_regular_file(path)) throw InputError("cannot read '" + file + "': no such file");

@@ -55,10 +55,18 @@ void write_partial(const PartialImage& part, const std::filesystem::path& path);
 // attribute, or its checksum does not match its contents.
 PartialImage read_partial(const std::filesystem::path& path);
 
-// Sums parts of one render into the whole, in order of their ranges. Throws InputError when
-// there are no parts, two are of different renders (naming both files and the field), two
-// ranges overlap (naming both files and the shared samples), or samples of [0, spp) are
-// missing (naming the range). `names[i]` is the file `parts[i]` was read from.
+// The identity and range only (`sums` empty): cheap, for checking a set of parts before reading
+// their sums. Throws as read_partial does, except that the checksum is not checked.
+PartialImage read_partial_header(const std::filesystem::path& path);
+
+// Checks that `parts` (their sums are not looked at) are the whole of one render, and returns
+// their indices in order of their ranges, the order to add them in. Throws InputError when there
+// are no parts, two are of different renders (naming both files and the field), two ranges
+// overlap (naming both files and the shared samples), or samples of [0, spp) are missing
+// (naming the range). `names[i]` is the file `parts[i]` was read from.
+std::vector<std::size_t> check_partials(const std::vector<PartialImage>& parts, const std::vector<std::string>& names);
+
+// check_partials, then the sums added in that order: the whole render as one part.
 PartialImage merge_partials(const std::vector<PartialImage>& parts, const std::vector<std::string>& names);
 
 }  // namespace sweeptrace

@@ -63,7 +63,7 @@ Image PartialImage::mean() const {
     return img;
 }
 
-PartialImage merge_partials(const std::vector<PartialImage>& parts, const std::vector<std::string>& names) {
+std::vector<std::size_t> check_partials(const std::vector<PartialImage>& parts, const std::vector<std::string>& names) {
     if (parts.empty()) throw InputError("merge: no parts given");
     for (std::size_t i = 1; i < parts.size(); ++i)
         if (const std::string d = identity_difference(parts[0].id, parts[i].id); !d.empty())
@@ -73,7 +73,11 @@ PartialImage merge_partials(const std::vector<PartialImage>& parts, const std::v
     std::stable_sort(order.begin(), order.end(),
                      [&](std::size_t a, std::size_t b) { return parts[a].sample_begin < parts[b].sample_begin; });
     check_cover(parts, names, order);
+    return order;
+}
 
+PartialImage merge_partials(const std::vector<PartialImage>& parts, const std::vector<std::string>& names) {
+    const std::vector<std::size_t> order = check_partials(parts, names);
     PartialImage whole;
     whole.id = parts[0].id;
     whole.sample_begin = 0;

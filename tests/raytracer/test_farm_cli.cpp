@@ -136,6 +136,10 @@ TEST_CASE("farm cli: merge refuses other renders, overlaps and gaps, exit 2, not
     REQUIRE(run(dir, "render scene.json --quiet -o plain.exr").exit_code == 0);
     check_refused(dir, run(dir, "merge a.exr plain.exr -o final.png"), "'plain.exr': not a sweeptrace part");
     check_refused(dir, run(dir, "merge a.exr missing.exr -o final.png"), "missing.exr");
+    std::string damaged = slurp(dir / "b.exr");
+    damaged[damaged.size() / 2] = static_cast<char>(damaged[damaged.size() / 2] ^ 0x10);
+    std::ofstream(dir / "damaged.exr", std::ios::binary) << damaged;
+    check_refused(dir, run(dir, "merge a.exr damaged.exr -o final.png"), "'damaged.exr'");
     check_refused(dir, run(dir, "merge a.exr b.exr -o final.jpg"), "unknown image extension '.jpg'");
     check_refused(dir, run(dir, "render scene.json --samples 4:10 -o new.exr"), "need 0 <= A < B <= spp (9");
     check_refused(dir, run(dir, "render scene.json --samples 4 -o new.exr"), "expected A:B");
