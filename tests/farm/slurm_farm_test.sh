@@ -36,6 +36,10 @@ cleanup() {
 trap cleanup EXIT
 trap 'exit 130' INT TERM
 
+# If this script is killed outright (SIGKILL, e.g. by a ctest timeout) the trap cannot run: a
+# detached watcher then stops the daemons within a second of its death.
+setsid bash -c 'while kill -0 "$1" 2>/dev/null; do sleep 1; done; bash "$2" stop "$3"; rm -rf "$4"' \
+    watcher $$ "$src/tools/slurm/local-cluster.sh" "$tmp/cluster" "$tmp" </dev/null >/dev/null 2>&1 &
 bash "$src/tools/slurm/local-cluster.sh" start "$tmp/cluster"
 export SLURM_CONF="$tmp/cluster/slurm.conf"
 say "cluster up"
