@@ -19,6 +19,8 @@
 
 #include "raytracer/accel/accel.hpp"
 #include "raytracer/cli/commands.hpp"
+#include "raytracer/cli/render_identity.hpp"
+#include "raytracer/cli/render_part.hpp"
 #include "raytracer/input_error.hpp"
 #include "raytracer/render/renderer.hpp"
 #include "raytracer/render/tone_map.hpp"
@@ -61,6 +63,8 @@ struct RenderArgs {
     std::string accel = "bvh";
     std::string sampler;  // empty: the scene's film.sampler
     bool quiet = false;
+    std::string samples;  // "A:B": render a farm part
+    bool skip_existing = false;
     CLI::Option *spp_opt = nullptr, *width_opt = nullptr, *height_opt = nullptr, *depth_opt = nullptr,
                 *seed_opt = nullptr;
 };
@@ -140,6 +144,8 @@ int run_render(const RenderArgs& a) {
         std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
         require(ext == ".png" || ext == ".pfm" || ext == ".exr",
                 "output '" + out.string() + "': unknown image extension '" + ext + "' (use .png, .pfm or .exr)");
+        require(a.samples.empty() || ext == ".exr", "--samples writes a farm part, an .exr file; got '" + out.string() + "'");
+        require(!a.skip_existing || !a.samples.empty(), "--skip-existing needs --samples");
         const std::filesystem::path dir = out.parent_path();
         std::error_code ec;
         require(dir.empty() || std::filesystem::is_directory(dir, ec),
@@ -168,6 +174,15 @@ int run_render(const RenderArgs& a) {
     if (a.seed_opt->count()) scene.seed = a.seed;
     if (!a.sampler.empty()) scene.film.sampler = a.sampler == "independent" ? SamplerKind::Independent : SamplerKind::Sobol;
 
+    // A farm part: which samples, and the render they belong to; a re-run task skips a finished one.
+    const SampleRange range =
+        a.samples.empty() ? SampleRange{0, scene.film.spp} : parse_sample_range(a.samples, scene.film.spp);
+    const RenderIdentity identity = a.samples.empty() ? RenderIdentity{} : render_identity(scene, scene_path, a.accel);
+    if (a.skip_existing && is_finished_part(out, identity, range)) {
+        if (!a.quiet) std::fprintf(stderr, "%s: already a verified part of this render, kept\n", out.string().c_str());
+        return 0;
+    }
+
     const auto build_start = std::chrono::steady_clock::now();
     const std::unique_ptr<Accel> accel = make_accel(a.accel == "embree" ? AccelKind::Embree : AccelKind::Bvh, scene);
     const double build_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - build_start).count();
@@ -178,6 +193,8 @@ int run_render(const RenderArgs& a) {
     opt.threads = a.threads;
     opt.seed = scene.seed;
     opt.sampler = scene.film.sampler;
+    opt.first_sample = range.begin;
+    opt.spp = range.end - range.begin;
     SigintGuard sigint;
     opt.cancel = &g_interrupted;
     ProgressDisplay progress(isatty(fileno(stderr)) != 0);
@@ -187,6 +204,9 @@ int run_render(const RenderArgs& a) {
     if (!a.quiet) progress.finish();
 
     const RenderStats& st = result.stats;
+    if (st.clamped_samples > 0)
+        std::fprintf(stderr, "sweeptrace: warning: %llu sample channels were beyond 2^40 and were clamped to it\n",
+                     static_cast<unsigned long long>(st.clamped_samples));
     if (st.nonfinite_samples > 0)
         std::fprintf(stderr, "sweeptrace: warning: %llu samples had non-finite radiance and were counted as black\n",
                      static_cast<unsigned long long>(st.nonfinite_samples));
@@ -194,7 +214,8 @@ int run_render(const RenderArgs& a) {
         std::fprintf(stderr, "sweeptrace: interrupted before the first pass over the image finished; nothing written\n");
         return 130;
     }
-    write_image(is_display_format(out) ? to_display(result.image) : result.image, out);
+    if (!a.samples.empty()) write_part(result, identity, range.begin, out);
+    else write_image(is_display_format(out) ? to_display(result.image) : result.image, out);
     if (!a.variance.empty()) write_image(result.variance, a.variance);
     if (st.cancelled)
         std::fprintf(stderr, "sweeptrace: interrupted: wrote %s with %d of %d samples per pixel\n", out.string().c_str(),
@@ -243,6 +264,11 @@ void add_render_command(CLI::App& app, int& exit_code) {
                     "Default: the scene's film.sampler, else sobol")
         ->check(CLI::IsMember({"sobol", "independent"}));
     cmd->add_flag("--quiet", args->quiet, "No progress display and no summary");
+    cmd->add_option("--samples", args->samples,
+                    "A:B: render only sample indices [A, B) of the --spp render, to a farm part (.exr) for "
+                    "`sweeptrace merge`");
+    cmd->add_flag("--skip-existing", args->skip_existing,
+                  "With --samples: keep the output if it already is this render's verified part for A:B");
     cmd->callback([args, &exit_code] { exit_code = run_render(*args); });
 }
 

@@ -6,11 +6,13 @@
 #include <condition_variable>
 #include <cmath>
 #include <exception>
+#include <limits>
 #include <mutex>
 #include <optional>
 #include <stdexcept>
 #include <string>
 #include <thread>
+#include <utility>
 #include <vector>
 
 #include <glm/common.hpp>
@@ -45,7 +47,7 @@ public:
           lights_(scene, defect),
           camera_(scene.camera, width_, height_),
           integrator_(scene, accel, lights_, opt.max_depth, opt.sampling, defect, opt.roulette),
-          sum_(static_cast<std::size_t>(width_) * height_, glm::dvec3(0.0)),
+          sum_(static_cast<std::size_t>(width_) * height_),
           sum_sq_(sum_.size(), glm::dvec3(0.0)),
           pass_(sum_.size()) {}
 
@@ -68,19 +70,12 @@ public:
                             abandoned.store(true, std::memory_order_relaxed);
                             return;
                         }
-                        render_tile(t, s);
+                        render_tile(t, opt_.first_sample + s);
                         tiles_done_.fetch_add(1, std::memory_order_relaxed);
                     }
                 });
                 if (abandoned.load()) break;
-                tbb::parallel_for(tbb::blocked_range<std::size_t>(0, sum_.size(), 4096),
-                                  [&](const tbb::blocked_range<std::size_t>& r) {
-                                      for (std::size_t i = r.begin(); i < r.end(); ++i) {
-                                          const glm::dvec3 v(pass_[i]);
-                                          sum_[i] += v;
-                                          sum_sq_[i] += v * v;
-                                      }
-                                  });
+                accumulate_pass();
                 completed_spp_.store(s + 1, std::memory_order_release);
             }
         });
@@ -92,14 +87,15 @@ public:
         return std::min(1.0, static_cast<double>(tiles_done_.load(std::memory_order_relaxed)) / total);
     }
 
-    RenderResult result(double seconds) const {
+    // Called once, last: the sums move into the result rather than being copied (48 bytes a pixel).
+    RenderResult result(double seconds) {
         RenderResult res;
         res.image = Image(width_, height_);
         res.variance = Image(width_, height_);
         const int spp = completed_spp_.load();
         for (std::size_t i = 0; spp > 0 && i < sum_.size(); ++i) {
-            const glm::dvec3 mean = sum_[i] / double(spp);
-            res.image.pixels[i] = glm::vec3(mean);
+            res.image.pixels[i] = mean_of(sum_[i], spp);
+            const glm::dvec3 mean = sum_value(sum_[i]) / double(spp);
             if (spp > 1) {
                 const glm::dvec3 var = glm::max(sum_sq_[i] - double(spp) * mean * mean, glm::dvec3(0.0)) / double(spp - 1);
                 res.variance.pixels[i] = glm::vec3(var / double(spp));
@@ -110,11 +106,30 @@ public:
         res.stats.samples = static_cast<std::uint64_t>(spp) * sum_.size();
         res.stats.rays = rays_.load();
         res.stats.nonfinite_samples = nonfinite_.load();
+        res.stats.clamped_samples = clamped_.load();
         res.stats.cancelled = spp < opt_.spp;
+        res.sums = std::move(sum_);
         return res;
     }
 
 private:
+    // Adds the finished pass to the sums. Fixed point (partial_sum.hpp), so the sum of any split
+    // into sample ranges is the same integer, and so the same image.
+    void accumulate_pass() {
+        tbb::parallel_for(tbb::blocked_range<std::size_t>(0, sum_.size(), 4096),
+                          [&](const tbb::blocked_range<std::size_t>& r) {
+                              std::uint64_t clamped = 0;
+                              for (std::size_t i = r.begin(); i < r.end(); ++i) {
+                                  bool c = false;
+                                  add_sample(sum_[i], pass_[i], c);
+                                  clamped += c ? 1 : 0;
+                                  const glm::dvec3 v(pass_[i]);
+                                  sum_sq_[i] += v * v;
+                              }
+                              if (clamped != 0) clamped_.fetch_add(clamped, std::memory_order_relaxed);
+                          });
+    }
+
     bool cancelled() const { return opt_.cancel != nullptr && opt_.cancel->load(std::memory_order_relaxed); }
 
     void render_tile(int tile, int sample) {
@@ -145,12 +160,12 @@ private:
     LightSet lights_;
     CameraModel camera_;
     PathIntegrator integrator_;
-    std::vector<glm::dvec3> sum_;   // per-pixel sum over completed passes, added in pass order
+    std::vector<PixelSum> sum_;     // per-pixel exact sum over completed passes
     std::vector<glm::dvec3> sum_sq_;  // per-pixel sum of squares, for the variance
     std::vector<glm::vec3> pass_;   // the pass in flight
     std::atomic<int> completed_spp_{0};
     std::atomic<std::int64_t> tiles_done_{0};
-    std::atomic<std::uint64_t> rays_{0}, nonfinite_{0};
+    std::atomic<std::uint64_t> rays_{0}, nonfinite_{0}, clamped_{0};
 };
 
 }  // namespace
@@ -167,6 +182,8 @@ RenderResult render_with_planted_defect(const Scene& scene, const Accel& accel, 
     if (options.spp < 1) throw std::invalid_argument("render: spp must be at least 1");
     if (options.max_depth < 1) throw std::invalid_argument("render: max_depth must be at least 1");
     if (options.threads < 0) throw std::invalid_argument("render: threads must be >= 0");
+    if (options.first_sample < 0 || options.first_sample > std::numeric_limits<int>::max() - options.spp)
+        throw std::invalid_argument("render: first_sample must be >= 0 and first_sample + spp fit in an int");
 
     const auto start = std::chrono::steady_clock::now();
     PassRenderer renderer(scene, accel, options, defect);

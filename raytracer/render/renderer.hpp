@@ -3,10 +3,12 @@
 #include <atomic>
 #include <cstdint>
 #include <functional>
+#include <vector>
 
 #include "raytracer/accel/accel.hpp"
 #include "raytracer/image/image.hpp"
 #include "raytracer/render/roulette.hpp"
+#include "raytracer/image/partial_sum.hpp"
 #include "raytracer/scene/scene.hpp"
 
 namespace sweeptrace {
@@ -18,6 +20,9 @@ enum class Sampling {
 
 struct RenderOptions {
     int spp = 16;
+    // Renders sample indices [first_sample, first_sample + spp) of every pixel: the same samples,
+    // from the same random streams, that a render from 0 draws for those indices (a farm part).
+    int first_sample = 0;
     int max_depth = 8;
     int threads = 0;  // 0 = all cores
     std::uint64_t seed = 0;
@@ -38,10 +43,15 @@ struct RenderStats {
     // Samples whose radiance came out NaN or infinite, counted and replaced by black so one bad
     // path cannot poison a pixel; non-zero means a bug worth reporting.
     std::uint64_t nonfinite_samples = 0;
+    // Sample channels beyond +-kSampleLimit (partial_sum.hpp), clamped to it; non-zero means a bug.
+    std::uint64_t clamped_samples = 0;
 };
 
 struct RenderResult {
-    Image image;  // mean radiance per pixel of the completed samples
+    Image image;  // mean radiance per pixel of the completed samples: mean_of(sums[i], completed_spp)
+    // Exact fixed-point sum per pixel of the completed samples (partial_sum.hpp): what a farm part
+    // stores, and what makes a merged farm render equal to this image bit for bit.
+    std::vector<PixelSum> sums;
     // Estimated variance of each pixel's mean, per channel: the unbiased sample variance of the
     // pixel's samples divided by completed_spp (zero when completed_spp < 2). For tests whose
     // tolerances come from the noise (z-tests on pixel or block means).
@@ -55,7 +65,8 @@ struct RenderResult {
 // one sample per pixel; when `cancel` is set, the pass in flight is dropped, so every pixel of
 // the returned image holds the same completed_spp samples (0: a black image), and the image is
 // bit for bit the one a render with spp = completed_spp gives.
-// Throws std::invalid_argument for a film smaller than 1x1, spp < 1, max_depth < 1, threads < 0.
+// Throws std::invalid_argument for a film smaller than 1x1, spp < 1, max_depth < 1, threads < 0,
+// first_sample < 0 or first_sample + spp beyond INT_MAX.
 RenderResult render(const Scene& scene, const Accel& accel, const RenderOptions& options);
 
 }  // namespace sweeptrace

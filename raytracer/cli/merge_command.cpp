@@ -1,0 +1,70 @@
+// `sweeptrace merge PART... -o final.png|.exr|.pfm`: farm parts (`render --samples A:B`) summed
+// into the image one machine's `render --spp N` gives, bit for bit. Parts of different renders,
+// overlapping ranges or missing samples exit 2 naming what is wrong; nothing is written then.
+#include <algorithm>
+#include <cctype>
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "raytracer/cli/commands.hpp"
+#include "raytracer/image/image.hpp"
+#include "raytracer/image/partial_image.hpp"
+#include "raytracer/input_error.hpp"
+#include "raytracer/render/tone_map.hpp"
+
+namespace sweeptrace {
+namespace {
+
+struct MergeArgs {
+    std::vector<std::string> parts;
+    std::string output;
+    bool quiet = false;
+};
+
+int run_merge(const MergeArgs& a) {
+    // A bad output name fails before gigabytes of parts are read.
+    std::string ext = std::filesystem::path(a.output).extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    if (ext != ".png" && ext != ".exr" && ext != ".pfm")
+        throw InputError("output '" + a.output + "': unknown image extension '" + ext + "' (use .png, .pfm or .exr)");
+    // Headers first, so a wrong set of parts is refused before any sums are read; then one part's
+    // sums at a time, so memory stays two parts' worth however many there are.
+    std::vector<PartialImage> headers;
+    headers.reserve(a.parts.size());
+    for (const std::string& p : a.parts) headers.push_back(read_partial_header(p));
+    const std::vector<std::size_t> order = check_partials(headers, a.parts);
+    PartialImage whole;
+    whole.id = headers[order[0]].id;
+    for (std::size_t i : order) {
+        const PartialImage part = read_partial(a.parts[i]);
+        if (part.id != headers[i].id || part.sample_begin != headers[i].sample_begin ||
+            part.sample_end != headers[i].sample_end)
+            throw InputError("'" + a.parts[i] + "' changed while the merge was reading it");
+        if (whole.sums.empty()) whole.sums.assign(part.sums.size(), PixelSum{});
+        for (std::size_t px = 0; px < whole.sums.size(); ++px) whole.sums[px] += part.sums[px];
+    }
+    whole.sample_end = whole.id.spp;
+    const Image image = whole.mean();
+    write_image(is_display_format(a.output) ? to_display(image) : image, a.output);
+    if (!a.quiet)
+        std::fprintf(stderr, "merge: %zu parts, %dx%d, %d spp -> %s\n", headers.size(), whole.id.width, whole.id.height,
+                     whole.id.spp, a.output.c_str());
+    return 0;
+}
+
+}  // namespace
+
+void add_merge_command(CLI::App& app, int& exit_code) {
+    auto args = std::make_shared<MergeArgs>();
+    auto* cmd = app.add_subcommand("merge", "Sum farm parts (render --samples A:B) into the whole render's image");
+    cmd->add_option("parts", args->parts, "Part files (.exr) of one render, covering its samples once each")->required();
+    cmd->add_option("-o,--output", args->output, "Output image: .png (8-bit sRGB), .pfm or .exr (linear float)")
+        ->required();
+    cmd->add_flag("--quiet", args->quiet, "No summary line");
+    cmd->callback([args, &exit_code] { exit_code = run_merge(*args); });
+}
+
+}  // namespace sweeptrace

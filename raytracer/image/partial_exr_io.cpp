@@ -1,0 +1,217 @@
+// Farm parts as OpenEXR files: the layout is documented in partial_image.hpp.
+#include <OpenEXR/ImfChannelList.h>
+#include <OpenEXR/ImfFrameBuffer.h>
+#include <OpenEXR/ImfHeader.h>
+#include <OpenEXR/ImfInputFile.h>
+#include <OpenEXR/ImfOutputFile.h>
+#include <OpenEXR/ImfStringAttribute.h>
+
+#include <charconv>
+#include <cstdio>
+#include <map>
+#include <string>
+
+#include "raytracer/image/atomic_file.hpp"
+#include "raytracer/image/partial_image.hpp"
+#include "raytracer/input_error.hpp"
+
+namespace sweeptrace {
+namespace {
+
+constexpr const char* kFormatVersion = "1";
+constexpr int kWords = 4;                    // 32-bit words per 128-bit sum
+constexpr int kSumChannels = 3 * kWords;     // sum.R.0 .. sum.B.3
+const char* const kColor[3] = {"R", "G", "B"};
+
+std::string sum_channel(int color, int word) { return std::string("sum.") + kColor[color] + "." + std::to_string(word); }
+
+// The attributes in a fixed order, values as text: what the checksum covers besides the sums.
+std::map<std::string, std::string> attributes_of(const PartialImage& p) {
+    return {{"sweeptrace.part", kFormatVersion},
+            {"sweeptrace.sceneHash", p.id.scene_hash},
+            {"sweeptrace.seed", std::to_string(p.id.seed)},
+            {"sweeptrace.maxDepth", std::to_string(p.id.max_depth)},
+            {"sweeptrace.accel", p.id.accel},
+            {"sweeptrace.version", p.id.version},
+            {"sweeptrace.spp", std::to_string(p.id.spp)},
+            {"sweeptrace.samples", std::to_string(p.sample_begin) + ":" + std::to_string(p.sample_end)},
+            {"sweeptrace.fractionBits", std::to_string(kSumFractionBits)}};
+}
+
+// FNV-1a 64: not cryptographic; it catches a file changed or damaged after it was written.
+struct Fnv {
+    std::uint64_t h = 0xcbf29ce484222325ull;
+    void add(const void* data, std::size_t n) {
+        const auto* b = static_cast<const unsigned char*>(data);
+        for (std::size_t i = 0; i < n; ++i) h = (h ^ b[i]) * 0x100000001b3ull;
+    }
+    void add(const std::string& s) { add(s.data(), s.size() + 1); }  // with the NUL, so fields do not run together
+};
+
+std::string checksum_of(const PartialImage& p, const std::vector<std::uint32_t>& words) {
+    Fnv f;
+    for (const auto& [key, value] : attributes_of(p)) {
+        f.add(key);
+        f.add(value);
+    }
+    f.add(words.data(), words.size() * sizeof(std::uint32_t));
+    char buf[17];
+    std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(f.h));
+    return buf;
+}
+
+std::vector<std::uint32_t> words_of(const std::vector<PixelSum>& sums) {
+    std::vector<std::uint32_t> w(sums.size() * kSumChannels);
+    for (std::size_t i = 0; i < sums.size(); ++i)
+        for (int c = 0; c < 3; ++c) {
+            const auto u = static_cast<SumUInt>(sums[i].rgb[c]);
+            for (int k = 0; k < kWords; ++k) w[i * kSumChannels + c * kWords + k] = static_cast<std::uint32_t>(u >> (32 * k));
+        }
+    return w;
+}
+
+std::vector<PixelSum> sums_of(const std::vector<std::uint32_t>& w) {
+    std::vector<PixelSum> sums(w.size() / kSumChannels);
+    for (std::size_t i = 0; i < sums.size(); ++i)
+        for (int c = 0; c < 3; ++c) {
+            SumUInt u = 0;
+            for (int k = 0; k < kWords; ++k) u |= static_cast<SumUInt>(w[i * kSumChannels + c * kWords + k]) << (32 * k);
+            sums[i].rgb[c] = static_cast<SumInt>(u);
+        }
+    return sums;
+}
+
+void write_exr_part(const PartialImage& part, const std::vector<std::uint32_t>& words, const std::filesystem::path& path) {
+    const int w = part.id.width, h = part.id.height;
+    Imf::Header header(w, h);
+    header.compression() = Imf::ZIP_COMPRESSION;
+    for (const auto& [key, value] : attributes_of(part)) header.insert(key, Imf::StringAttribute(value));
+    header.insert("sweeptrace.checksum", Imf::StringAttribute(checksum_of(part, words)));
+    const Image preview = part.mean();
+    Imf::FrameBuffer frame;
+    auto* rgb = const_cast<char*>(reinterpret_cast<const char*>(preview.pixels.data()));
+    for (int c = 0; c < 3; ++c) {
+        header.channels().insert(kColor[c], Imf::Channel(Imf::FLOAT));
+        frame.insert(kColor[c], Imf::Slice(Imf::FLOAT, rgb + c * sizeof(float), sizeof(glm::vec3), sizeof(glm::vec3) * w));
+    }
+    auto* base = const_cast<char*>(reinterpret_cast<const char*>(words.data()));
+    const std::size_t xs = kSumChannels * sizeof(std::uint32_t);
+    for (int c = 0; c < 3; ++c)
+        for (int k = 0; k < kWords; ++k) {
+            header.channels().insert(sum_channel(c, k), Imf::Channel(Imf::UINT));
+            frame.insert(sum_channel(c, k),
+                         Imf::Slice(Imf::UINT, base + (c * kWords + k) * sizeof(std::uint32_t), xs, xs * w));
+        }
+    Imf::OutputFile file(path.c_str(), header);
+    file.setFrameBuffer(frame);
+    file.writePixels(h);
+}
+
+std::string attribute(const Imf::Header& header, const std::string& key, const std::string& file) {
+    const auto* a = header.findTypedAttribute<Imf::StringAttribute>(key);
+    if (!a) throw InputError("'" + file + "': not a sweeptrace part (no " + key + " attribute)");
+    return a->value();
+}
+
+template <class T = long long>
+T number(const std::string& text, const std::string& key, const std::string& file) {
+    T v = 0;
+    const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
+    if (ec != std::errc() || end != text.data() + text.size())
+        throw InputError("'" + file + "': attribute " + key + " is '" + text + "', not a number");
+    return v;
+}
+
+// The identity and range from the header; the sums are read by the caller.
+PartialImage header_part(const Imf::Header& hd, const std::string& file) {
+    if (attribute(hd, "sweeptrace.part", file) != kFormatVersion)
+        throw InputError("'" + file + "': part format " + attribute(hd, "sweeptrace.part", file) + ", this program reads " +
+                         kFormatVersion);
+    if (attribute(hd, "sweeptrace.fractionBits", file) != std::to_string(kSumFractionBits))
+        throw InputError("'" + file + "': fixed point with " + attribute(hd, "sweeptrace.fractionBits", file) +
+                         " fraction bits, this program uses " + std::to_string(kSumFractionBits));
+    PartialImage p;
+    const Imath::Box2i win = hd.dataWindow();
+    p.id.width = win.max.x - win.min.x + 1;
+    p.id.height = win.max.y - win.min.y + 1;
+    if (win.min.x != 0 || win.min.y != 0 || p.id.width < 1 || p.id.height < 1 || p.id.width > (1 << 16) ||
+        p.id.height > (1 << 16))
+        throw InputError("'" + file + "': data window is not a 1..65536 square from (0, 0)");
+    p.id.scene_hash = attribute(hd, "sweeptrace.sceneHash", file);
+    p.id.seed = number<std::uint64_t>(attribute(hd, "sweeptrace.seed", file), "sweeptrace.seed", file);
+    p.id.max_depth = static_cast<int>(number(attribute(hd, "sweeptrace.maxDepth", file), "sweeptrace.maxDepth", file));
+    p.id.accel = attribute(hd, "sweeptrace.accel", file);
+    p.id.version = attribute(hd, "sweeptrace.version", file);
+    p.id.spp = static_cast<int>(number(attribute(hd, "sweeptrace.spp", file), "sweeptrace.spp", file));
+    const std::string range = attribute(hd, "sweeptrace.samples", file);
+    const auto colon = range.find(':');
+    if (colon == std::string::npos) throw InputError("'" + file + "': sweeptrace.samples is '" + range + "', not A:B");
+    p.sample_begin = static_cast<int>(number(range.substr(0, colon), "sweeptrace.samples", file));
+    p.sample_end = static_cast<int>(number(range.substr(colon + 1), "sweeptrace.samples", file));
+    if (p.sample_begin < 0 || p.sample_end <= p.sample_begin || p.sample_end > p.id.spp)
+        throw InputError("'" + file + "': samples " + range + " is not a range inside [0, " + std::to_string(p.id.spp) + ")");
+    return p;
+}
+
+}  // namespace
+
+void write_partial(const PartialImage& part, const std::filesystem::path& path) {
+    if (part.sums.size() != static_cast<std::size_t>(part.id.width) * static_cast<std::size_t>(part.id.height) ||
+        part.sums.empty())
+        throw InputError("cannot write '" + path.string() + "': part of " + std::to_string(part.id.width) + "x" +
+                         std::to_string(part.id.height) + " holds " + std::to_string(part.sums.size()) + " sums");
+    const std::vector<std::uint32_t> words = words_of(part.sums);
+    write_atomically(path, [&](const std::filesystem::path& temp) {
+        try {
+            write_exr_part(part, words, temp);
+        } catch (const std::exception& e) {
+            throw InputError("cannot write '" + path.string() + "': " + e.what());
+        }
+    });
+}
+
+PartialImage read_partial_header(const std::filesystem::path& path) {
+    const std::string file = path.string();
+    if (!std::filesystem::is_regular_file(path)) throw InputError("cannot read '" + file + "': no such file");
+    try {
+        Imf::InputFile in(path.c_str());
+        return header_part(in.header(), file);
+    } catch (const InputError&) {
+        throw;
+    } catch (const std::exception& e) {
+        throw InputError("cannot read '" + file + "': not a valid EXR part (" + e.what() + ")");
+    }
+}
+
+PartialImage read_partial(const std::filesystem::path& path) {
+    const std::string file = path.string();
+    if (!std::filesystem::is_regular_file(path)) throw InputError("cannot read '" + file + "': no such file");
+    try {
+        Imf::InputFile in(path.c_str());
+        PartialImage p = header_part(in.header(), file);
+        const int w = p.id.width;
+        std::vector<std::uint32_t> words(static_cast<std::size_t>(w) * p.id.height * kSumChannels);
+        Imf::FrameBuffer frame;
+        const std::size_t xs = kSumChannels * sizeof(std::uint32_t);
+        for (int c = 0; c < 3; ++c)
+            for (int k = 0; k < kWords; ++k) {
+                if (!in.header().channels().findChannel(sum_channel(c, k)))
+                    throw InputError("'" + file + "': not a sweeptrace part (no " + sum_channel(c, k) + " channel)");
+                frame.insert(sum_channel(c, k), Imf::Slice(Imf::UINT, reinterpret_cast<char*>(words.data()) +
+                                                                          (c * kWords + k) * sizeof(std::uint32_t),
+                                                           xs, xs * w));
+            }
+        in.setFrameBuffer(frame);
+        in.readPixels(0, p.id.height - 1);
+        if (checksum_of(p, words) != attribute(in.header(), "sweeptrace.checksum", file))
+            throw InputError("'" + file + "': checksum does not match its contents (damaged or edited part)");
+        p.sums = sums_of(words);
+        return p;
+    } catch (const InputError&) {
+        throw;
+    } catch (const std::exception& e) {
+        throw InputError("cannot read '" + file + "': not a valid EXR part (" + e.what() + ")");
+    }
+}
+
+}  // namespace sweeptrace

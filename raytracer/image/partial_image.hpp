@@ -1,0 +1,72 @@
+#pragma once
+// A farm part: the exact per-pixel sums of sample indices [sample_begin, sample_end) of one
+// render, and what identifies that render, so that parts from different renders are never summed.
+//
+// File format (`render --samples A:B -o part.exr`): an OpenEXR file any viewer opens, whose
+// R, G, B (FLOAT) hold the part's own mean (a preview), and whose twelve UINT channels
+// `sum.R.0` .. `sum.B.3` hold each channel's 128-bit two's-complement fixed-point sum
+// (partial_sum.hpp) as four 32-bit words, least significant first. String attributes:
+//   sweeptrace.part         format version, "1"
+//   sweeptrace.sceneHash    hash of the scene file and the mesh files it loads
+//   sweeptrace.seed, sweeptrace.maxDepth, sweeptrace.accel, sweeptrace.version (the program's)
+//   sweeptrace.spp          samples per pixel of the whole render the part belongs to
+//   sweeptrace.samples      "A:B", the part's half-open range of sample indices
+//   sweeptrace.fractionBits "56", the fixed point's scale
+//   sweeptrace.checksum     FNV-1a 64 of the sums and the attributes above, in hex
+// The resolution is the data window. A part that reads and whose checksum matches "verifies".
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "raytracer/image/image.hpp"
+#include "raytracer/image/partial_sum.hpp"
+
+namespace sweeptrace {
+
+// Everything that must be equal for two parts to be parts of the same image.
+struct RenderIdentity {
+    std::string scene_hash;
+    int width = 0, height = 0;
+    std::uint64_t seed = 0;
+    int max_depth = 0;
+    std::string accel;
+    std::string version;
+    int spp = 0;  // the whole render's samples per pixel: the parts cover [0, spp)
+
+    bool operator==(const RenderIdentity&) const = default;
+};
+
+// The first field in which `a` and `b` differ, as "seed 1 vs 2"; empty when they are equal.
+std::string identity_difference(const RenderIdentity& a, const RenderIdentity& b);
+
+struct PartialImage {
+    RenderIdentity id;
+    int sample_begin = 0, sample_end = 0;  // [begin, end): every pixel holds end - begin samples
+    std::vector<PixelSum> sums;            // row-major, id.width * id.height
+
+    Image mean() const;  // mean_of each sum over the part's sample count
+};
+
+// Atomic (temporary file + rename). Throws InputError naming `path`.
+void write_partial(const PartialImage& part, const std::filesystem::path& path);
+
+// Throws InputError naming `path` when it is not a sweeptrace part, is truncated, lacks an
+// attribute, or its checksum does not match its contents.
+PartialImage read_partial(const std::filesystem::path& path);
+
+// The identity and range only (`sums` empty): cheap, for checking a set of parts before reading
+// their sums. Throws as read_partial does, except that the checksum is not checked.
+PartialImage read_partial_header(const std::filesystem::path& path);
+
+// Checks that `parts` (their sums are not looked at) are the whole of one render, and returns
+// their indices in order of their ranges, the order to add them in. Throws InputError when there
+// are no parts, two are of different renders (naming both files and the field), two ranges
+// overlap (naming both files and the shared samples), or samples of [0, spp) are missing
+// (naming the range). `names[i]` is the file `parts[i]` was read from.
+std::vector<std::size_t> check_partials(const std::vector<PartialImage>& parts, const std::vector<std::string>& names);
+
+// check_partials, then the sums added in that order: the whole render as one part.
+PartialImage merge_partials(const std::vector<PartialImage>& parts, const std::vector<std::string>& names);
+
+}  // namespace sweeptrace
