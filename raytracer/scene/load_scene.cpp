@@ -30,7 +30,7 @@ constexpr std::int64_t kMaxDepth = 1024;
 bool parallel(const glm::dvec3& a, const glm::dvec3& b) { return glm::cross(a, b) == glm::dvec3(0.0); }
 
 Camera read_camera(const Node& node) {
-    node.require_object({"position", "look_at", "up", "fov", "aperture", "focus_distance"});
+    node.require_object({"position", "look_at", "up", "fov", "aperture", "focus_distance", "near_clip"});
     Camera camera;
     camera.position = node.at("position").vec3();
     camera.look_at = node.at("look_at").vec3();
@@ -47,6 +47,7 @@ Camera read_camera(const Node& node) {
     }
     if (auto aperture = node.find("aperture")) camera.aperture = aperture->number_at_least(0.0f, true);
     if (auto focus = node.find("focus_distance")) camera.focus_distance = focus->number_at_least(0.0f, false);
+    if (auto near = node.find("near_clip")) camera.near_clip = near->number_at_least(0.0f, true);
     return camera;
 }
 

@@ -19,6 +19,9 @@ struct Camera {
     float vfov_degrees = 40.0f;
     float aperture = 0.0f;        // lens diameter; 0 = pinhole
     float focus_distance = 0.0f;  // 0 = distance from position to look_at
+    // Primary rays start on the plane this far ahead along the view axis (smallpt's camera sits
+    // outside the room and starts its rays 140 units ahead); 0 = at the eye.
+    float near_clip = 0.0f;
 };
 
 struct Film {
