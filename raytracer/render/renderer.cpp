@@ -37,6 +37,7 @@ class PassRenderer {
 public:
     PassRenderer(const Scene& scene, const Accel& accel, const RenderOptions& opt)
         : opt_(opt),
+          budget_(opt.budget_clock, opt.time_budget),
           width_(scene.film.width),
           height_(scene.film.height),
           tiles_x_((width_ + kTileSize - 1) / kTileSize),
@@ -59,11 +60,11 @@ public:
         arena.execute([this] {
             const int tiles = tiles_x_ * tiles_y_;
             for (int s = 0; s < opt_.spp; ++s) {
-                if (cancelled()) break;
+                if (stopped(s)) break;
                 std::atomic<bool> abandoned{false};
                 tbb::parallel_for(tbb::blocked_range<int>(0, tiles, 1), [&](const tbb::blocked_range<int>& r) {
                     for (int t = r.begin(); t < r.end(); ++t) {
-                        if (cancelled()) {
+                        if (stopped(s)) {
                             abandoned.store(true, std::memory_order_relaxed);
                             return;
                         }
@@ -85,10 +86,17 @@ public:
         });
     }
 
-    // Tiles finished over all passes: only grows, so progress never steps back.
-    double fraction_done() const {
+    // Tiles finished over all passes, or the budget's time spent: both only grow, so progress
+    // never steps back.
+    RenderProgress progress() const {
         const double total = static_cast<double>(tiles_x_) * tiles_y_ * opt_.spp;
-        return std::min(1.0, static_cast<double>(tiles_done_.load(std::memory_order_relaxed)) / total);
+        RenderProgress p;
+        p.fraction = std::max(budget_.fraction(),
+                              std::min(1.0, static_cast<double>(tiles_done_.load(std::memory_order_relaxed)) / total));
+        p.completed_spp = completed_spp_.load(std::memory_order_acquire);
+        p.seconds = budget_.elapsed();
+        p.seconds_left = budget_.left();
+        return p;
     }
 
     RenderResult result(double seconds) const {
@@ -109,12 +117,15 @@ public:
         res.stats.samples = static_cast<std::uint64_t>(spp) * sum_.size();
         res.stats.rays = rays_.load();
         res.stats.nonfinite_samples = nonfinite_.load();
-        res.stats.cancelled = spp < opt_.spp;
+        res.stats.cancelled = spp < opt_.spp && cancelled();
+        res.stats.budget_spent = spp < opt_.spp && !res.stats.cancelled;
         return res;
     }
 
 private:
     bool cancelled() const { return opt_.cancel != nullptr && opt_.cancel->load(std::memory_order_relaxed); }
+    // Pass `pass` is not started, or is dropped: the first pass is kept whatever the budget says.
+    bool stopped(int pass) const { return cancelled() || (pass > 0 && budget_.spent()); }
 
     void render_tile(int tile, int sample) {
         const int x0 = (tile % tiles_x_) * kTileSize, y0 = (tile / tiles_x_) * kTileSize;
@@ -140,6 +151,7 @@ private:
     }
 
     const RenderOptions& opt_;
+    TimeBudget budget_;
     int width_, height_, tiles_x_, tiles_y_;
     LightSet lights_;
     CameraModel camera_;
@@ -161,6 +173,7 @@ RenderResult render(const Scene& scene, const Accel& accel, const RenderOptions&
     if (options.spp < 1) throw std::invalid_argument("render: spp must be at least 1");
     if (options.max_depth < 1) throw std::invalid_argument("render: max_depth must be at least 1");
     if (options.threads < 0) throw std::invalid_argument("render: threads must be >= 0");
+    if (!(options.time_budget >= 0.0)) throw std::invalid_argument("render: time_budget must be >= 0 seconds");
 
     const auto start = std::chrono::steady_clock::now();
     PassRenderer renderer(scene, accel, options);
@@ -188,13 +201,13 @@ RenderResult render(const Scene& scene, const Accel& accel, const RenderOptions&
             std::unique_lock lock(m);
             while (!cv.wait_for(lock, std::chrono::milliseconds(100), [&] { return done; })) {
                 lock.unlock();
-                options.progress(renderer.fraction_done());
+                options.progress(renderer.progress());
                 lock.lock();
             }
         }
         worker.join();
         if (error) std::rethrow_exception(error);
-        options.progress(renderer.fraction_done());
+        options.progress(renderer.progress());
     }
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return renderer.result(seconds);

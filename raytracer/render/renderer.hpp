@@ -6,6 +6,7 @@
 
 #include "raytracer/accel/accel.hpp"
 #include "raytracer/image/image.hpp"
+#include "raytracer/render/time_budget.hpp"
 #include "raytracer/scene/scene.hpp"
 
 namespace sweeptrace {
@@ -19,23 +20,36 @@ enum class Sampling {
 // tests reject a renderer with this bug. Never set by the command line.
 enum class PlantedDefect { None, FlippedNormals, NoRayOffset };
 
+// What the progress callback sees.
+struct RenderProgress {
+    double fraction = 0.0;    // of the spp target or of the time budget, whichever is further
+    int completed_spp = 0;    // passes finished
+    double seconds = 0.0;     // elapsed on the budget's clock
+    double seconds_left = -1.0;  // of the time budget; negative without one
+};
+
 struct RenderOptions {
-    int spp = 16;
+    int spp = 16;  // with a time budget: the most passes to render
     int max_depth = 8;
     int threads = 0;  // 0 = all cores
     std::uint64_t seed = 0;
     Sampling sampling = Sampling::NeeMis;
     PlantedDefect defect = PlantedDefect::None;
     const std::atomic<bool>* cancel = nullptr;  // set (e.g. by SIGINT) to stop early
-    // Called now and then from one thread with the fraction done in [0, 1].
-    std::function<void(double)> progress;
+    // Seconds (0 = none) after which the pass in flight is dropped and the render ends; the first
+    // pass always completes. Counted on budget_clock from the start of render().
+    double time_budget = 0.0;
+    BudgetClock budget_clock = BudgetClock::Wall;
+    // Called now and then from one thread.
+    std::function<void(const RenderProgress&)> progress;
 };
 
 struct RenderStats {
     double seconds = 0.0;
     std::uint64_t samples = 0;  // camera samples completed
     std::uint64_t rays = 0;     // every ray traced (camera, bounce, shadow)
-    bool cancelled = false;
+    bool cancelled = false;      // stopped by `cancel`
+    bool budget_spent = false;   // stopped by the time budget before reaching spp
     int completed_spp = 0;      // samples per pixel in the returned image
     // Samples whose radiance came out NaN or infinite, counted and replaced by black so one bad
     // path cannot poison a pixel; non-zero means a bug worth reporting.
@@ -57,7 +71,10 @@ struct RenderResult {
 // one sample per pixel; when `cancel` is set, the pass in flight is dropped, so every pixel of
 // the returned image holds the same completed_spp samples (0: a black image), and the image is
 // bit for bit the one a render with spp = completed_spp gives.
-// Throws std::invalid_argument for a film smaller than 1x1, spp < 1, max_depth < 1, threads < 0.
+// A time budget ends the render the same way (after at least one pass): the image is the one
+// spp = completed_spp gives.
+// Throws std::invalid_argument for a film smaller than 1x1, spp < 1, max_depth < 1, threads < 0,
+// time_budget < 0.
 RenderResult render(const Scene& scene, const Accel& accel, const RenderOptions& options);
 
 }  // namespace sweeptrace
