@@ -62,6 +62,7 @@ struct RenderArgs {
     double time = 0.0;
     std::uint64_t seed = 0;
     std::string accel = "bvh";
+    std::string guiding;  // "on", "off" or empty: the scene's film.guiding
     bool quiet = false;
     CLI::Option *spp_opt = nullptr, *width_opt = nullptr, *height_opt = nullptr, *depth_opt = nullptr,
                 *seed_opt = nullptr, *time_opt = nullptr;
@@ -179,6 +180,7 @@ int run_render(const RenderArgs& a) {
     opt.max_depth = scene.film.max_depth;
     opt.threads = a.threads;
     opt.seed = scene.seed;
+    opt.guiding = a.guiding.empty() ? scene.film.guiding : a.guiding == "on";
     SigintGuard sigint;
     opt.cancel = &g_interrupted;
     ProgressDisplay progress(isatty(fileno(stderr)) != 0, std::uint64_t(scene.film.width) * scene.film.height);
@@ -205,8 +207,9 @@ int run_render(const RenderArgs& a) {
         const int threads = a.threads > 0 ? a.threads : tbb::info::default_concurrency();
         const double secs = std::max(st.seconds, 1e-9);
         std::fprintf(stderr,
-                     "%s: %dx%d, %d spp, %s (%s, built in %.2f s), %d thread%s: %.2f s, %s samples/s, %s rays/s -> %s\n",
+                     "%s: %dx%d, %d spp%s, %s (%s, built in %.2f s), %d thread%s: %.2f s, %s samples/s, %s rays/s -> %s\n",
                      scene_path.filename().string().c_str(), scene.film.width, scene.film.height, st.completed_spp,
+                     opt.guiding ? " guided" : "",
                      accel->name().c_str(), si_text(double(accel->memory_bytes())).append("B").c_str(), build_seconds,
                      threads, threads == 1 ? "" : "s", st.seconds, si_text(double(st.samples) / secs).c_str(),
                      si_text(double(st.rays) / secs).c_str(), out.string().c_str());
@@ -239,6 +242,9 @@ void add_render_command(CLI::App& app, int& exit_code) {
     cmd->add_option("--accel", args->accel, "Acceleration structure")
         ->check(CLI::IsMember({"bvh", "embree"}))
         ->capture_default_str();
+    cmd->add_option("--guiding", args->guiding,
+                    "Path guiding (learned during the render, unbiased): on or off (default: the scene's film.guiding)")
+        ->check(CLI::IsMember({"on", "off"}));
     cmd->add_flag("--quiet", args->quiet, "No progress display and no summary");
     cmd->callback([args, &exit_code] { exit_code = run_render(*args); });
 }

@@ -6,6 +6,8 @@
 #include <glm/geometric.hpp>
 
 #include "raytracer/render/bsdf.hpp"
+#include "raytracer/render/guiding_path_recorder.hpp"
+#include "raytracer/render/guiding_sampler.hpp"
 #include "raytracer/render/sampling.hpp"
 
 namespace sweeptrace {
@@ -36,8 +38,10 @@ collision::Ray PathIntegrator::shadow_ray(const SurfaceHit& hit, const LightSamp
     return r;
 }
 
-glm::vec3 PathIntegrator::radiance(collision::Ray ray, Rng& rng, std::uint64_t& rays) const {
+glm::vec3 PathIntegrator::radiance(collision::Ray ray, Rng& rng, std::uint64_t& rays,
+                                   std::vector<GuideRecord>* records) const {
     const bool nee = sampling_ == Sampling::NeeMis && !lights_.empty();
+    GuidePathRecorder recorder(records);
     glm::vec3 result(0.0f);
     glm::vec3 beta(1.0f);
     bool full_weight = true;    // the ray that found this vertex gets MIS weight 1
@@ -68,6 +72,8 @@ glm::vec3 PathIntegrator::radiance(collision::Ray ray, Rng& rng, std::uint64_t& 
 
         const ShadingContext ctx = make_shading_context(hit, wo);
         const bool delta = is_delta(mat);
+        const bool learn = recorder.on() && is_guided(mat);
+        const DirectionalQuadtree* guide = guide_ != nullptr && is_guided(mat) ? guide_->guide(hit.point) : nullptr;
 
         if (nee && !delta) {
             const float us = rng.uniform(), up = rng.uniform(), u1 = rng.uniform(), u2 = rng.uniform();
@@ -76,18 +82,20 @@ glm::vec3 PathIntegrator::radiance(collision::Ray ray, Rng& rng, std::uint64_t& 
                 const BsdfEval e = eval_bsdf(mat, ctx, ls.wi);
                 if (e.pdf > 0.0f) {
                     ++rays;
-                    if (!accel_.occluded(shadow_ray(hit, ls))) {
-                        const float w = power_heuristic(ls.pdf, e.pdf);
-                        result += beta * e.f_cos * ls.radiance * (w / ls.pdf);
-                    }
+                    const bool visible = !accel_.occluded(shadow_ray(hit, ls));
+                    const float w = power_heuristic(ls.pdf, guide ? guided_pdf(*guide, e.pdf, ls.wi) : e.pdf);
+                    if (visible) result += beta * e.f_cos * ls.radiance * (w / ls.pdf);
+                    if (learn) recorder.add_light_sample(hit.point, ls.wi, visible ? ls.radiance * (w / ls.pdf) : glm::vec3(0.0f));
                 }
             }
         }
 
         BsdfSample bs;
         const float b0 = rng.uniform(), b1 = rng.uniform(), b2 = rng.uniform();
-        if (!sample_bsdf(mat, ctx, b0, b1, b2, bs)) break;
+        if (guide ? !sample_guided(mat, ctx, *guide, rng.uniform(), b0, b1, b2, bs) : !sample_bsdf(mat, ctx, b0, b1, b2, bs))
+            break;
         beta *= bs.weight;
+        if (learn && !bs.delta) recorder.add_vertex(hit.point, bs.wi, bs.pdf, beta, result);
         full_weight = bs.delta;
         prev_pdf = bs.pdf;
         prev_point = hit.point;
@@ -100,6 +108,7 @@ glm::vec3 PathIntegrator::radiance(collision::Ray ray, Rng& rng, std::uint64_t& 
         }
         ray = continue_ray(hit, bs.wi);
     }
+    if (recorder.on()) recorder.finish(result);
     return result;
 }
 

@@ -17,11 +17,13 @@
 // Russian roulette from the third bounce on: continue with probability min(1, max(throughput)),
 // dividing the throughput by it (unbiased).
 #include <cstdint>
+#include <vector>
 
 #include <glm/vec3.hpp>
 
 #include "collision/ray.hpp"
 #include "raytracer/accel/accel.hpp"
+#include "raytracer/render/guiding_sd_tree.hpp"
 #include "raytracer/render/lights.hpp"
 #include "raytracer/render/random.hpp"
 #include "raytracer/render/renderer.hpp"
@@ -38,8 +40,15 @@ public:
     PathIntegrator(const Scene& scene, const Accel& accel, const LightSet& lights, int max_depth, Sampling sampling,
                    PlantedDefect defect);
 
-    // `ray` must have a unit direction. Adds every ray traced to `rays`.
-    glm::vec3 radiance(collision::Ray ray, Rng& rng, std::uint64_t& rays) const;
+    // `ray` must have a unit direction. Adds every ray traced to `rays`. With `records`, what
+    // the path teaches the guide is appended there (guiding_path_recorder.hpp).
+    glm::vec3 radiance(collision::Ray ray, Rng& rng, std::uint64_t& rays,
+                       std::vector<GuideRecord>* records = nullptr) const;
+
+    // Path guiding (guiding_sampler.hpp): at guided vertices where `guide` has learned something,
+    // BSDF directions come from the BSDF + guide mixture, and its density is the BSDF strategy's
+    // in MIS. The guide must not change during a radiance() call. nullptr: no guiding.
+    void set_guide(const GuidingSdTree* guide) { guide_ = guide; }
 
 private:
     collision::Ray continue_ray(const SurfaceHit& hit, const glm::vec3& dir) const;
@@ -51,6 +60,7 @@ private:
     int max_depth_;
     Sampling sampling_;
     PlantedDefect defect_;
+    const GuidingSdTree* guide_ = nullptr;
 };
 
 }  // namespace sweeptrace

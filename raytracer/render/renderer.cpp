@@ -20,6 +20,7 @@
 #include <tbb/task_arena.h>
 
 #include "raytracer/render/camera.hpp"
+#include "raytracer/render/guiding_sd_tree.hpp"
 #include "raytracer/render/integrator.hpp"
 #include "raytracer/render/lights.hpp"
 #include "raytracer/render/random.hpp"
@@ -47,7 +48,12 @@ public:
           integrator_(scene, accel, lights_, opt.max_depth, opt.sampling, opt.defect),
           sum_(static_cast<std::size_t>(width_) * height_, glm::dvec3(0.0)),
           sum_sq_(sum_.size(), glm::dvec3(0.0)),
-          pass_(sum_.size()) {}
+          pass_(sum_.size()) {
+        if (opt.guiding) {
+            tile_records_.resize(static_cast<std::size_t>(tiles_x_) * tiles_y_);
+            integrator_.set_guide(&guide_);
+        }
+    }
 
     void run() {
         const int threads = opt_.threads > 0 ? opt_.threads : tbb::task_arena::automatic;
@@ -73,6 +79,7 @@ public:
                     }
                 });
                 if (abandoned.load()) break;
+                if (opt_.guiding) learn(s + 1);
                 tbb::parallel_for(tbb::blocked_range<std::size_t>(0, sum_.size(), 4096),
                                   [&](const tbb::blocked_range<std::size_t>& r) {
                                       for (std::size_t i = r.begin(); i < r.end(); ++i) {
@@ -123,6 +130,13 @@ public:
     }
 
 private:
+    // Training on the pass just finished: tiles merged in tile order, so the guide the next pass
+    // reads is the same for any thread count.
+    void learn(int completed_passes) {
+        for (const std::vector<GuideRecord>& records : tile_records_) guide_.add(records);
+        guide_.end_pass(completed_passes);
+    }
+
     bool cancelled() const { return opt_.cancel != nullptr && opt_.cancel->load(std::memory_order_relaxed); }
     // Pass `pass` is not started, or is dropped: the first pass is kept whatever the budget says.
     bool stopped(int pass) const { return cancelled() || (pass > 0 && budget_.spent()); }
@@ -131,6 +145,8 @@ private:
         const int x0 = (tile % tiles_x_) * kTileSize, y0 = (tile / tiles_x_) * kTileSize;
         const int x1 = std::min(x0 + kTileSize, width_), y1 = std::min(y0 + kTileSize, height_);
         std::uint64_t rays = 0, nonfinite = 0;
+        std::vector<GuideRecord>* records = opt_.guiding ? &tile_records_[static_cast<std::size_t>(tile)] : nullptr;
+        if (records != nullptr) records->clear();
         for (int y = y0; y < y1; ++y) {
             for (int x = x0; x < x1; ++x) {
                 const std::size_t pixel = static_cast<std::size_t>(y) * width_ + x;
@@ -138,7 +154,7 @@ private:
                 const float fx = static_cast<float>(x) + rng.uniform();
                 const float fy = static_cast<float>(y) + rng.uniform();
                 const float l1 = rng.uniform(), l2 = rng.uniform();
-                glm::vec3 l = integrator_.radiance(camera_.generate(fx, fy, l1, l2), rng, rays);
+                glm::vec3 l = integrator_.radiance(camera_.generate(fx, fy, l1, l2), rng, rays, records);
                 if (!std::isfinite(l.x) || !std::isfinite(l.y) || !std::isfinite(l.z)) {
                     l = glm::vec3(0.0f);
                     ++nonfinite;
@@ -159,6 +175,8 @@ private:
     std::vector<glm::dvec3> sum_;   // per-pixel sum over completed passes, added in pass order
     std::vector<glm::dvec3> sum_sq_;  // per-pixel sum of squares, for the variance
     std::vector<glm::vec3> pass_;   // the pass in flight
+    GuidingSdTree guide_;           // read during a pass, trained between passes
+    std::vector<std::vector<GuideRecord>> tile_records_;  // the pass in flight's, per tile
     std::atomic<int> completed_spp_{0};
     std::atomic<std::int64_t> tiles_done_{0};
     std::atomic<std::uint64_t> rays_{0}, nonfinite_{0};

@@ -34,6 +34,9 @@ struct RenderOptions {
     int threads = 0;  // 0 = all cores
     std::uint64_t seed = 0;
     Sampling sampling = Sampling::NeeMis;
+    // Path guiding (render/guiding_*.hpp): learned from whole passes, so the image stays the same
+    // for any thread count; unbiased, like the unguided render of the same scene.
+    bool guiding = false;
     PlantedDefect defect = PlantedDefect::None;
     const std::atomic<bool>* cancel = nullptr;  // set (e.g. by SIGINT) to stop early
     // Seconds (0 = none) after which the pass in flight is dropped and the render ends; the first

@@ -52,12 +52,13 @@ Camera read_camera(const Node& node) {
 }
 
 Film read_film(const Node& node) {
-    node.require_object({"width", "height", "spp", "max_depth"});
+    node.require_object({"width", "height", "spp", "max_depth", "guiding"});
     Film film;
     film.width = static_cast<int>(node.at("width").integer(1, kMaxImageSide));
     film.height = static_cast<int>(node.at("height").integer(1, kMaxImageSide));
     if (auto spp = node.find("spp")) film.spp = static_cast<int>(spp->integer(1, kMaxSpp));
     if (auto depth = node.find("max_depth")) film.max_depth = static_cast<int>(depth->integer(1, kMaxDepth));
+    if (auto guiding = node.find("guiding")) film.guiding = guiding->boolean();
     return film;
 }
 

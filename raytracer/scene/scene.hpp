@@ -29,6 +29,7 @@ struct Film {
     int height = 240;
     int spp = 16;
     int max_depth = 8;  // path vertices after the camera; Russian roulette may stop earlier
+    bool guiding = false;  // path guiding by default (render --guiding overrides)
 };
 
 struct Background {

@@ -1,0 +1,133 @@
+#include "raytracer/render/guiding_quadtree.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "raytracer/render/sampling.hpp"
+
+namespace sweeptrace {
+
+namespace {
+
+constexpr double kBelowOne = 0x1.fffffffffffffp-1;  // the largest double below 1
+
+// Picks the half of [0, 1) holding `u` when the lower half has probability `p_low`, and
+// stretches u back over [0, 1) inside it (one bit of u used per level, as a 2D warp does).
+bool pick_upper(double& u, double p_low) {
+    if (u < p_low) {
+        u = std::min(u / p_low, kBelowOne);
+        return false;
+    }
+    u = std::min((u - p_low) / (1.0 - p_low), kBelowOne);
+    return true;
+}
+
+}  // namespace
+
+glm::vec2 direction_to_square(const glm::vec3& dir) {
+    const float u = std::clamp(0.5f * (dir.z + 1.0f), 0.0f, 1.0f);
+    float v = std::atan2(dir.y, dir.x) * (0.5f * kInvPi);
+    if (v < 0.0f) v += 1.0f;
+    // Both ends at 1 are the same places as 0's neighbourhood, mapped into the last cell.
+    constexpr float kBelowOneF = 0x1.fffffep-1f;
+    return {std::min(u, kBelowOneF), std::min(v, kBelowOneF)};
+}
+
+glm::vec3 square_to_direction(const glm::vec2& p) {
+    const float z = 2.0f * p.x - 1.0f;
+    const float r = std::sqrt(std::max(0.0f, 1.0f - z * z));
+    const float phi = 2.0f * kPi * p.y;
+    return {r * std::cos(phi), r * std::sin(phi), z};
+}
+
+DirectionalQuadtree::DirectionalQuadtree() : nodes_(1) {}
+
+void DirectionalQuadtree::record(const glm::vec3& dir, float value) {
+    const glm::vec2 p = direction_to_square(dir);
+    double x = p.x, y = p.y;
+    std::uint32_t node = 0;
+    for (;;) {
+        const int xb = x >= 0.5 ? 1 : 0, yb = y >= 0.5 ? 1 : 0;
+        const int q = xb + 2 * yb;
+        nodes_[node].energy[q] += value;
+        const std::uint32_t next = nodes_[node].child[q];
+        if (next == 0) return;
+        x = 2.0 * x - xb;  // exact: scaling by 2 and subtracting 0 or 1
+        y = 2.0 * y - yb;
+        node = next;
+    }
+}
+
+double DirectionalQuadtree::total() const { return nodes_[0].sum(); }
+
+glm::vec3 DirectionalQuadtree::sample(float u1, float u2) const {
+    double ux = u1, uy = u2;
+    double ox = 0.0, oy = 0.0, size = 1.0;
+    std::uint32_t node = 0;
+    for (;;) {
+        const Node& n = nodes_[node];
+        const double left = n.energy[0] + n.energy[2], right = n.energy[1] + n.energy[3];
+        const int xb = pick_upper(ux, left / (left + right)) ? 1 : 0;
+        const double column = xb ? right : left;
+        const int yb = pick_upper(uy, n.energy[xb] / column) ? 1 : 0;
+        size *= 0.5;
+        ox += xb * size;
+        oy += yb * size;
+        const std::uint32_t next = n.child[xb + 2 * yb];
+        if (next == 0) break;
+        node = next;
+    }
+    return square_to_direction(glm::vec2(static_cast<float>(ox + ux * size), static_cast<float>(oy + uy * size)));
+}
+
+float DirectionalQuadtree::pdf(const glm::vec3& dir) const {
+    const glm::vec2 p = direction_to_square(dir);
+    double x = p.x, y = p.y;
+    double density = 1.0;  // on the square
+    std::uint32_t node = 0;
+    for (;;) {
+        const Node& n = nodes_[node];
+        const int xb = x >= 0.5 ? 1 : 0, yb = y >= 0.5 ? 1 : 0;
+        const int q = xb + 2 * yb;
+        if (n.energy[q] <= 0.0) return 0.0f;
+        density *= 4.0 * n.energy[q] / n.sum();
+        if (n.child[q] == 0) break;
+        x = 2.0 * x - xb;
+        y = 2.0 * y - yb;
+        node = n.child[q];
+    }
+    return static_cast<float>(density / (4.0 * M_PI));
+}
+
+DirectionalQuadtree DirectionalQuadtree::refined(double threshold, int max_depth) const {
+    DirectionalQuadtree out;
+    refine_into(out, 0, 0, nodes_[0].energy, total(), threshold, 1, max_depth);
+    return out;
+}
+
+void DirectionalQuadtree::refine_into(DirectionalQuadtree& out, std::uint32_t out_node, int old_node,
+                                      const double* energy, double total, double threshold, int depth,
+                                      int max_depth) const {
+    for (int q = 0; q < 4; ++q) {
+        if (!(total > 0.0) || energy[q] / total <= threshold || depth >= max_depth) continue;
+        const auto child = static_cast<std::uint32_t>(out.nodes_.size());
+        out.nodes_.emplace_back();
+        out.nodes_[out_node].child[q] = child;
+        const int old_child = old_node >= 0 && nodes_[old_node].child[q] != 0 ? int(nodes_[old_node].child[q]) : -1;
+        double spread[4];
+        if (old_child >= 0) std::copy(nodes_[old_child].energy, nodes_[old_child].energy + 4, spread);
+        else std::fill(spread, spread + 4, 0.25 * energy[q]);
+        refine_into(out, child, old_child, spread, total, threshold, depth + 1, max_depth);
+    }
+}
+
+int DirectionalQuadtree::depth_below(std::uint32_t node) const {
+    int d = 0;
+    for (const std::uint32_t c : nodes_[node].child)
+        if (c != 0) d = std::max(d, depth_below(c));
+    return d + 1;
+}
+
+int DirectionalQuadtree::depth() const { return depth_below(0); }
+
+}  // namespace sweeptrace

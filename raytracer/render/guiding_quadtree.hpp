@@ -1,0 +1,61 @@
+#pragma once
+// The directional half of path guiding (Müller, Gross, Novák 2017, "Practical Path Guiding",
+// §3.3): a distribution of incident radiance over the unit sphere, as a quadtree over the square
+// [0, 1)^2 that the cylindrical map takes to the sphere,
+//     (u, v) = ((cos theta + 1) / 2, phi / 2 pi),   theta, phi of the direction about world +z,
+// which preserves area (dA_sphere = 4 pi du dv), so a density on the square divided by 4 pi is
+// the density on the sphere. Each node holds the recorded energy of its four quadrants; a
+// quadrant is either a leaf or another node. Sampling descends choosing quadrants in proportion
+// to their energy and ends uniform inside a leaf; pdf() follows the same descent, so the density
+// it returns is exactly the one sample() draws with (both products of the same ratios).
+//
+// Quadrant order: index = x_bit + 2 y_bit, x_bit = (u >= mid), y_bit = (v >= mid).
+// A tree with zero energy has no distribution: callers check total() > 0 before sample/pdf.
+#include <cstdint>
+#include <vector>
+
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+
+namespace sweeptrace {
+
+// The equal-area cylindrical map and its inverse (unit direction <-> point of [0, 1)^2).
+glm::vec2 direction_to_square(const glm::vec3& dir);
+glm::vec3 square_to_direction(const glm::vec2& p);
+
+class DirectionalQuadtree {
+public:
+    DirectionalQuadtree();  // a root of four empty leaves
+
+    // Adds `value` (>= 0) to the leaf holding direction `dir` and to every quadrant above it.
+    void record(const glm::vec3& dir, float value);
+    double total() const;
+
+    // A direction drawn from the tree's distribution, from two uniforms in [0, 1).
+    // Requires total() > 0.
+    glm::vec3 sample(float u1, float u2) const;
+    // Solid-angle density of sample() producing `dir`. Requires total() > 0.
+    float pdf(const glm::vec3& dir) const;
+
+    // The structure for the next training iteration (PPG §3.4): a quadrant is a node when its
+    // share of this tree's energy exceeds `threshold` and it is shallower than `max_depth`
+    // (a leaf's energy counts as spread evenly over its would-be children); all energy zero.
+    DirectionalQuadtree refined(double threshold, int max_depth) const;
+
+    std::size_t node_count() const { return nodes_.size(); }
+    int depth() const;
+
+private:
+    struct Node {
+        double energy[4] = {0.0, 0.0, 0.0, 0.0};
+        std::uint32_t child[4] = {0, 0, 0, 0};  // 0: the quadrant is a leaf (node 0 is the root)
+        double sum() const { return energy[0] + energy[1] + energy[2] + energy[3]; }
+    };
+    void refine_into(DirectionalQuadtree& out, std::uint32_t out_node, int old_node, const double* energy,
+                     double total, double threshold, int depth, int max_depth) const;
+    int depth_below(std::uint32_t node) const;
+
+    std::vector<Node> nodes_;
+};
+
+}  // namespace sweeptrace
