@@ -63,6 +63,7 @@ struct RenderArgs {
     std::uint64_t seed = 0;
     std::string accel = "bvh";
     std::string guiding;  // "on", "off" or empty: the scene's film.guiding
+    std::string time_clock = "wall";
     bool quiet = false;
     CLI::Option *spp_opt = nullptr, *width_opt = nullptr, *height_opt = nullptr, *depth_opt = nullptr,
                 *seed_opt = nullptr, *time_opt = nullptr;
@@ -177,6 +178,7 @@ int run_render(const RenderArgs& a) {
     // --time alone renders until the budget is spent; with --spp, whichever comes first.
     opt.spp = a.time_opt->count() && !a.spp_opt->count() ? kMaxTimedSpp : scene.film.spp;
     opt.time_budget = a.time_opt->count() ? a.time : 0.0;
+    opt.budget_clock = a.time_clock == "cpu" ? BudgetClock::ProcessCpu : BudgetClock::Wall;
     opt.max_depth = scene.film.max_depth;
     opt.threads = a.threads;
     opt.seed = scene.seed;
@@ -241,6 +243,11 @@ void add_render_command(CLI::App& app, int& exit_code) {
                                       "Path vertices after the camera (default: the scene's film.max_depth)");
     cmd->add_option("--accel", args->accel, "Acceleration structure")
         ->check(CLI::IsMember({"bvh", "embree"}))
+        ->capture_default_str();
+    cmd->add_option("--time-clock", args->time_clock,
+                    "What --time counts: wall seconds, or cpu seconds of all threads (equal-time comparisons on a "
+                    "shared machine)")
+        ->check(CLI::IsMember({"wall", "cpu"}))
         ->capture_default_str();
     cmd->add_option("--guiding", args->guiding,
                     "Path guiding (learned during the render, unbiased): on or off (default: the scene's film.guiding)")

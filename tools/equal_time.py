@@ -1,0 +1,177 @@
+#!/usr/bin/python3
+"""Equal-time image error, guided against unguided (issue #10).
+
+For each scene: a converged unguided reference (two independent halves of --ref-spp / 2 spp
+each, cached in BUILD/equal-time/), then `sweeptrace render --time T --time-clock cpu` for each T,
+with --guiding on and off, and the RMSE of each against the reference:
+  - linear: sqrt(mean over pixels and channels of (render - reference)^2), and the same with the
+    reference's own noise taken out (MSE - Var(reference), Var from the two halves: E[(a-b)^2]/4);
+  - display: both clamped to [0, 1] and raised to 1/2.2 (the way smallpt shows an image).
+T is CPU time of all the render's threads (the renderer's ProcessCpu budget clock), so the
+figures do not grow while other processes share the machine. The unbiasedness check: the block
+z-test of the golden tests (`sweeptrace diff --linear --noise`) of the longest guided render
+(two seeds) against the reference.
+
+Writes docs/equal-time.md (table) and docs/equal-time.png (log-log error against time).
+Usage: /usr/bin/python3 tools/equal_time.py [--build build] [--times 0.5,1,2,4,8] [--threads 2]
+"""
+import argparse
+import os
+import re
+import subprocess
+import sys
+
+import numpy as np
+
+SCENES = [("smallpt", 128, 96), ("cornell-box", 96, 96), ("default", 128, 72)]
+
+
+def read_pfm(path):
+    with open(path, "rb") as f:
+        if f.readline().strip() != b"PF":
+            raise SystemExit(f"equal_time: {path}: not a colour PFM")
+        w, h = (int(v) for v in f.readline().split())
+        scale = float(f.readline())
+        data = np.fromfile(f, dtype="<f4" if scale < 0 else ">f4")
+    return data.reshape(h, w, 3)[::-1].astype(np.float64)
+
+
+def render(binary, scene, w, h, out, extra):
+    cmd = [binary, "render", scene, "--width", str(w), "--height", str(h), "-o", out] + extra
+    res = subprocess.run(cmd, stderr=subprocess.PIPE, text=True)
+    if res.returncode != 0:
+        raise SystemExit(f"equal_time: {' '.join(cmd)} failed:\n{res.stderr}")
+    m = re.search(r", (\d+) spp", res.stderr)
+    return int(m.group(1)) if m else None
+
+
+def reference(args, name, w, h):
+    cache = os.path.join(args.build, "equal-time")
+    os.makedirs(cache, exist_ok=True)
+    halves = []
+    for half, seed in (("a", 1001), ("b", 1002)):
+        path = os.path.join(cache, f"ref-{name}-{w}x{h}-{args.ref_spp // 2}spp-{half}.pfm")
+        if not os.path.exists(path):
+            print(f"equal_time: rendering reference {path}", file=sys.stderr)
+            tmp = path + ".tmp.pfm"
+            render(args.binary, f"scenes/{name}.json", w, h, tmp,
+                   ["--spp", str(args.ref_spp // 2), "--seed", str(seed), "--guiding", "off",
+                    "--threads", str(args.threads), "--quiet"])
+            os.replace(tmp, path)
+        halves.append(read_pfm(path))
+    a, b = halves
+    ref = 0.5 * (a + b)
+    ref_var = float(np.mean((a - b) ** 2) / 4.0)  # mean per-pixel variance of the reference
+    return ref, ref_var, [os.path.join(cache, f"ref-{name}-{w}x{h}-{args.ref_spp // 2}spp-{x}.pfm") for x in "ab"]
+
+
+def errors(img, ref, ref_var):
+    mse = float(np.mean((img - ref) ** 2))
+    disp = lambda x: np.clip(x, 0.0, 1.0) ** (1.0 / 2.2)
+    return {"rmse": mse ** 0.5, "rmse_net": max(mse - ref_var, 0.0) ** 0.5,
+            "rmse_display": float(np.mean((disp(img) - disp(ref)) ** 2)) ** 0.5}
+
+
+def z_test(binary, guided_a, guided_b, ref_path):
+    # The image tests' criterion: mean(a, b) against the reference, sigma from a - b.
+    res = subprocess.run([binary, "diff", guided_a, ref_path, "--noise", guided_b, "--linear",
+                          "--max-rmse", "1e9", "--max-share", "1"], stdout=subprocess.PIPE,
+                         stderr=subprocess.STDOUT, text=True)
+    line = next((l.strip() for l in res.stdout.splitlines() if "max z" in l), res.stdout.strip()[-200:])
+    return line
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("--build", default="build")
+    ap.add_argument("--times", default="0.5,1,2,4,8")
+    ap.add_argument("--threads", type=int, default=2)
+    ap.add_argument("--ref-spp", type=int, default=8192)
+    ap.add_argument("--scenes", default=",".join(s[0] for s in SCENES))
+    ap.add_argument("--docs", default="docs")
+    args = ap.parse_args()
+    args.binary = os.path.join(args.build, "sweeptrace")
+    times = [float(t) for t in args.times.split(",")]
+    work = os.path.join(args.build, "equal-time")
+    rows, z_lines = [], []
+    for name, w, h in SCENES:
+        if name not in args.scenes.split(","):
+            continue
+        ref, ref_var, ref_paths = reference(args, name, w, h)
+        # The reference as one image, for diff.
+        ref_pfm = os.path.join(work, f"ref-{name}-{w}x{h}-{args.ref_spp}spp.pfm")
+        write_pfm(ref_pfm, ref)
+        for t in times:
+            for mode in ("off", "on"):
+                out = os.path.join(work, f"{name}-{mode}-{t:g}.pfm")
+                spp = render(args.binary, f"scenes/{name}.json", w, h, out,
+                             ["--time", str(t), "--time-clock", "cpu", "--guiding", mode, "--seed", "7",
+                              "--threads", str(args.threads)])
+                e = errors(read_pfm(out), ref, ref_var)
+                rows.append(dict(scene=name, size=f"{w}x{h}", t=t, guiding=mode, spp=spp, **e))
+                print(f"{name} T={t:g} guiding {mode}: {spp} spp, RMSE {e['rmse']:.5f} "
+                      f"(net {e['rmse_net']:.5f}), display {e['rmse_display']:.5f}", file=sys.stderr)
+        t = times[-1]
+        second = os.path.join(work, f"{name}-on-{t:g}-seed8.pfm")
+        render(args.binary, f"scenes/{name}.json", w, h, second,
+               ["--time", str(t), "--time-clock", "cpu", "--guiding", "on", "--seed", "8",
+                "--threads", str(args.threads), "--quiet"])
+        z_lines.append((name, z_test(args.binary, os.path.join(work, f"{name}-on-{t:g}.pfm"), second, ref_pfm)))
+    write_docs(args, rows, z_lines, times)
+
+
+def write_pfm(path, img):
+    h, w, _ = img.shape
+    with open(path, "wb") as f:
+        f.write(f"PF\n{w} {h}\n-1.0\n".encode())
+        img[::-1].astype("<f4").tofile(f)
+
+
+def write_docs(args, rows, z_lines, times):
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    scenes = sorted({r["scene"] for r in rows}, key=[s[0] for s in SCENES].index)
+    md = ["# Equal-time error: path guiding on and off", "",
+          "Generated by `/usr/bin/python3 tools/equal_time.py " + " ".join(sys.argv[1:]) + "`.",
+          f"T is CPU seconds of all {args.threads} render threads (`--time T --time-clock cpu`); the reference "
+          f"is unguided, {args.ref_spp} spp (two halves of {args.ref_spp // 2}, seeds 1001/1002). "
+          "RMSE linear: against the reference; net: with the reference's own noise subtracted; "
+          "display: clamp to [0, 1], gamma 1/2.2. Ratio = guided / unguided at the same T.", "",
+          "| scene | size | T (CPU s) | spp off | spp on | RMSE off | RMSE on | ratio | net off | net on | net ratio "
+          "| display off | display on | display ratio |",
+          "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
+    for s in scenes:
+        for t in times:
+            off = next(r for r in rows if r["scene"] == s and r["t"] == t and r["guiding"] == "off")
+            on = next(r for r in rows if r["scene"] == s and r["t"] == t and r["guiding"] == "on")
+            ratio = lambda k: on[k] / off[k] if off[k] > 0 else float("nan")
+            md.append(f"| {s} | {off['size']} | {t:g} | {off['spp']} | {on['spp']} | {off['rmse']:.4g} | "
+                      f"{on['rmse']:.4g} | {ratio('rmse'):.3f} | {off['rmse_net']:.4g} | {on['rmse_net']:.4g} | "
+                      f"{ratio('rmse_net'):.3f} | {off['rmse_display']:.4g} | {on['rmse_display']:.4g} | "
+                      f"{ratio('rmse_display'):.3f} |")
+    md += ["", "Unbiasedness: block z-test (`sweeptrace diff --linear --noise`, the golden tests' criterion) of "
+           f"the guided T = {times[-1]:g} renders (seeds 7 and 8) against the reference:", ""]
+    md += [f"- {s}: {line}" for s, line in z_lines]
+    with open(os.path.join(args.docs, "equal-time.md"), "w") as f:
+        f.write("\n".join(md) + "\n")
+
+    fig, axes = plt.subplots(2, len(scenes), figsize=(4.2 * len(scenes), 7), squeeze=False)
+    for i, s in enumerate(scenes):
+        for j, (key, label) in enumerate((("rmse", "linear RMSE"), ("rmse_display", "display RMSE (gamma 1/2.2)"))):
+            ax = axes[j][i]
+            for mode, style in (("off", "o-"), ("on", "s-")):
+                pts = [(r["t"], r[key]) for r in rows if r["scene"] == s and r["guiding"] == mode]
+                ax.loglog(*zip(*pts), style, label=f"guiding {mode}")
+            ax.set_title(f"{s} ({next(r['size'] for r in rows if r['scene'] == s)})")
+            ax.set_xlabel("CPU seconds")
+            ax.set_ylabel(label)
+            ax.grid(True, which="both", alpha=0.3)
+            ax.legend()
+    fig.tight_layout()
+    fig.savefig(os.path.join(args.docs, "equal-time.png"), dpi=100)
+
+
+if __name__ == "__main__":
+    main()
