@@ -60,16 +60,26 @@ void DirectionalQuadtree::record(const glm::vec3& dir, float value) {
 
 double DirectionalQuadtree::total() const { return nodes_[0].sum(); }
 
+void DirectionalQuadtree::freeze() {
+    for (Node& n : nodes_) {
+        const double sum = n.sum();
+        if (!(sum > 0.0)) continue;  // never reached: its parent's quadrant has no energy
+        for (int q = 0; q < 4; ++q) n.factor[q] = static_cast<float>(4.0 * n.energy[q] / sum);
+        const double left = n.energy[0] + n.energy[2], right = n.energy[1] + n.energy[3];
+        n.p_left = static_cast<float>(left / sum);
+        n.p_lower[0] = left > 0.0 ? static_cast<float>(n.energy[0] / left) : 0.5f;
+        n.p_lower[1] = right > 0.0 ? static_cast<float>(n.energy[1] / right) : 0.5f;
+    }
+}
+
 glm::vec3 DirectionalQuadtree::sample(float u1, float u2) const {
     double ux = u1, uy = u2;
     double ox = 0.0, oy = 0.0, size = 1.0;
     std::uint32_t node = 0;
     for (;;) {
         const Node& n = nodes_[node];
-        const double left = n.energy[0] + n.energy[2], right = n.energy[1] + n.energy[3];
-        const int xb = pick_upper(ux, left / (left + right)) ? 1 : 0;
-        const double column = xb ? right : left;
-        const int yb = pick_upper(uy, n.energy[xb] / column) ? 1 : 0;
+        const int xb = pick_upper(ux, n.p_left) ? 1 : 0;
+        const int yb = pick_upper(uy, n.p_lower[xb]) ? 1 : 0;
         size *= 0.5;
         ox += xb * size;
         oy += yb * size;
@@ -82,21 +92,19 @@ glm::vec3 DirectionalQuadtree::sample(float u1, float u2) const {
 
 float DirectionalQuadtree::pdf(const glm::vec3& dir) const {
     const glm::vec2 p = direction_to_square(dir);
-    double x = p.x, y = p.y;
-    double density = 1.0;  // on the square
+    float x = p.x, y = p.y;
+    float density = 1.0f / (4.0f * kPi);  // on the sphere
     std::uint32_t node = 0;
     for (;;) {
         const Node& n = nodes_[node];
-        const int xb = x >= 0.5 ? 1 : 0, yb = y >= 0.5 ? 1 : 0;
+        const int xb = x >= 0.5f ? 1 : 0, yb = y >= 0.5f ? 1 : 0;
         const int q = xb + 2 * yb;
-        if (n.energy[q] <= 0.0) return 0.0f;
-        density *= 4.0 * n.energy[q] / n.sum();
-        if (n.child[q] == 0) break;
-        x = 2.0 * x - xb;
-        y = 2.0 * y - yb;
+        density *= n.factor[q];
+        if (n.child[q] == 0 || density == 0.0f) return density;
+        x = 2.0f * x - float(xb);  // exact in float too
+        y = 2.0f * y - float(yb);
         node = n.child[q];
     }
-    return static_cast<float>(density / (4.0 * M_PI));
 }
 
 DirectionalQuadtree DirectionalQuadtree::refined(double threshold, int max_depth) const {

@@ -7,7 +7,8 @@
 // the density on the sphere. Each node holds the recorded energy of its four quadrants; a
 // quadrant is either a leaf or another node. Sampling descends choosing quadrants in proportion
 // to their energy and ends uniform inside a leaf; pdf() follows the same descent, so the density
-// it returns is exactly the one sample() draws with (both products of the same ratios).
+// it returns is the one sample() draws with (both products of the same ratios, which freeze()
+// computes once in float: equal up to float rounding).
 //
 // Quadrant order: index = x_bit + 2 y_bit, x_bit = (u >= mid), y_bit = (v >= mid).
 // A tree with zero energy has no distribution: callers check total() > 0 before sample/pdf.
@@ -31,10 +32,12 @@ public:
     void record(const glm::vec3& dir, float value);
     double total() const;
 
+    // Computes the ratios sample() and pdf() read from the energies; call once recording is done.
+    void freeze();
     // A direction drawn from the tree's distribution, from two uniforms in [0, 1).
-    // Requires total() > 0.
+    // Requires total() > 0 and freeze().
     glm::vec3 sample(float u1, float u2) const;
-    // Solid-angle density of sample() producing `dir`. Requires total() > 0.
+    // Solid-angle density of sample() producing `dir`. Requires total() > 0 and freeze().
     float pdf(const glm::vec3& dir) const;
 
     // The structure for the next training iteration (PPG §3.4): a quadrant is a node when its
@@ -49,6 +52,11 @@ private:
     struct Node {
         double energy[4] = {0.0, 0.0, 0.0, 0.0};
         std::uint32_t child[4] = {0, 0, 0, 0};  // 0: the quadrant is a leaf (node 0 is the root)
+        // From freeze(): density factor 4 e_q / sum of each quadrant, the probability of the
+        // left column (x_bit 0), and of the lower quadrant within each column.
+        float factor[4] = {0.0f, 0.0f, 0.0f, 0.0f};
+        float p_left = 0.5f;
+        float p_lower[2] = {0.5f, 0.5f};
         double sum() const { return energy[0] + energy[1] + energy[2] + energy[3]; }
     };
     void refine_into(DirectionalQuadtree& out, std::uint32_t out_node, int old_node, const double* energy,

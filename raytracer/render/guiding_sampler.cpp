@@ -3,11 +3,14 @@
 namespace sweeptrace {
 
 bool sample_guided(const Material& m, const ShadingContext& ctx, const DirectionalQuadtree& guide, float u_select,
-                   float u0, float u1, float u2, BsdfSample& out) {
+                   float u0, float u1, float u2, BsdfSample& out, float& bsdf_pdf) {
     glm::vec3 wi;
     if (u_select < kBsdfFraction) {
         if (!sample_bsdf(m, ctx, u0, u1, u2, out)) return false;
-        if (out.delta) return true;  // not a guided lobe: the BSDF alone
+        if (out.delta) {  // not a guided lobe: the BSDF alone
+            bsdf_pdf = out.pdf;
+            return true;
+        }
         wi = out.wi;
     } else {
         wi = guide.sample(u1, u2);
@@ -17,6 +20,7 @@ bool sample_guided(const Material& m, const ShadingContext& ctx, const Direction
     const BsdfEval e = eval_bsdf(m, ctx, wi);
     if (!(e.pdf > 0.0f)) return false;
     const float pdf = guided_pdf(guide, e.pdf, wi);
+    bsdf_pdf = e.pdf;
     out = BsdfSample{wi, e.f_cos / pdf, pdf, false};
     return true;
 }

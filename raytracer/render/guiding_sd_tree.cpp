@@ -8,12 +8,13 @@
 
 namespace sweeptrace {
 
-void GuidingSdTree::set_box(const std::vector<GuideRecord>& records) {
+void GuidingSdTree::set_box(const std::vector<std::vector<GuideRecord>>& batches) {
     glm::vec3 lo(INFINITY), hi(-INFINITY);
-    for (const GuideRecord& r : records) {
-        lo = glm::min(lo, r.point);
-        hi = glm::max(hi, r.point);
-    }
+    for (const std::vector<GuideRecord>& records : batches)
+        for (const GuideRecord& r : records) {
+            lo = glm::min(lo, r.point);
+            hi = glm::max(hi, r.point);
+        }
     if (!(lo.x <= hi.x)) return;  // no records yet
     // A cube, so that splitting x, y, z in turn keeps leaves near cubes; 1% margin so that the
     // extreme records are not on the boundary.
@@ -24,6 +25,7 @@ void GuidingSdTree::set_box(const std::vector<GuideRecord>& records) {
 }
 
 std::uint32_t GuidingSdTree::leaf_of(const glm::vec3& point) const {
+    if (nodes_[0].child[0] == 0) return 0;  // one leaf (and perhaps no box yet)
     glm::vec3 lo = lo_, size = size_;
     std::uint32_t node = 0;
     for (int depth = 0;; ++depth) {
@@ -38,14 +40,15 @@ std::uint32_t GuidingSdTree::leaf_of(const glm::vec3& point) const {
     }
 }
 
-void GuidingSdTree::add(const std::vector<GuideRecord>& records) {
-    if (!has_box_) set_box(records);
+void GuidingSdTree::add(const std::vector<std::vector<GuideRecord>>& batches) {
+    if (!has_box_) set_box(batches);
     if (!has_box_) return;
-    for (const GuideRecord& r : records) {
-        Leaf& leaf = leaves_[leaf_of(r.point)];
-        ++leaf.records;
-        if (r.value > 0.0f) leaf.building.record(r.dir, r.value);
-    }
+    for (const std::vector<GuideRecord>& records : batches)
+        for (const GuideRecord& r : records) {
+            Leaf& leaf = leaves_[r.leaf];
+            ++leaf.records;
+            if (r.value > 0.0f) leaf.building.record(r.dir, r.value);
+        }
 }
 
 void GuidingSdTree::end_pass(int completed_passes) {
@@ -79,15 +82,12 @@ void GuidingSdTree::end_iteration(int iteration) {
     for (std::uint32_t n = 0; n < nodes; ++n) split(n, threshold);
     for (Leaf& leaf : leaves_) {
         leaf.sampling = std::move(leaf.building);
+        leaf.sampling.freeze();
+        leaf.usable = leaf.sampling.total() > 0.0;
         leaf.building = leaf.sampling.refined(kQuadtreeThreshold, kQuadtreeMaxDepth);
         leaf.records = 0;
     }
 }
 
-const DirectionalQuadtree* GuidingSdTree::guide(const glm::vec3& point) const {
-    if (iterations_done_ == 0) return nullptr;
-    const DirectionalQuadtree& q = leaves_[leaf_of(point)].sampling;
-    return q.total() > 0.0 ? &q : nullptr;
-}
 
 }  // namespace sweeptrace

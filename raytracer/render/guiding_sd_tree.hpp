@@ -32,22 +32,29 @@ struct GuideRecord {
     glm::vec3 point{0.0f};
     glm::vec3 dir{0.0f};
     float value = 0.0f;
+    std::uint32_t leaf = 0;  // leaf_of(point) in the tree of the pass that made the record
 };
 
 class GuidingSdTree {
 public:
-    static constexpr double kSplitRecords = 12000.0;   // c of PPG §3.4
+    static constexpr double kSplitRecords = 2000.0;   // c of PPG §3.4
     static constexpr double kQuadtreeThreshold = 0.01;  // rho of PPG §3.4
     static constexpr int kQuadtreeMaxDepth = 20;
 
-    // Adds records to the building quadtrees (the first batch also fixes the box).
-    void add(const std::vector<GuideRecord>& records);
+    // Adds one pass's records, batch by batch in order, to the building quadtrees (the first
+    // pass with records also fixes the box).
+    void add(const std::vector<std::vector<GuideRecord>>& batches);
     // Call after each completed pass with the number of passes completed so far: at the end of
     // an iteration, the building distribution becomes the sampling one and the tree is refined.
     void end_pass(int completed_passes);
 
-    // The learned distribution around `point`, or nullptr where nothing was learned yet.
-    const DirectionalQuadtree* guide(const glm::vec3& point) const;
+    // The leaf holding `point` (valid until the next end_pass).
+    std::uint32_t leaf_of(const glm::vec3& point) const;
+    // The learned distribution of a leaf, or nullptr where nothing was learned yet.
+    const DirectionalQuadtree* guide_at(std::uint32_t leaf) const {
+        return leaves_[leaf].usable ? &leaves_[leaf].sampling : nullptr;
+    }
+    const DirectionalQuadtree* guide(const glm::vec3& point) const { return guide_at(leaf_of(point)); }
 
     std::size_t leaf_count() const { return leaves_.size(); }
     int iterations_done() const { return iterations_done_; }
@@ -60,9 +67,9 @@ private:
     struct Leaf {
         DirectionalQuadtree sampling, building;
         std::uint64_t records = 0;  // in the building tree
+        bool usable = false;        // sampling has energy (and is frozen)
     };
-    void set_box(const std::vector<GuideRecord>& records);
-    std::uint32_t leaf_of(const glm::vec3& point) const;
+    void set_box(const std::vector<std::vector<GuideRecord>>& batches);
     void end_iteration(int iteration);
     void split(std::uint32_t node, double threshold);
 

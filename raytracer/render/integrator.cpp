@@ -42,6 +42,10 @@ glm::vec3 PathIntegrator::radiance(collision::Ray ray, Rng& rng, std::uint64_t& 
                                    std::vector<GuideRecord>* records) const {
     const bool nee = sampling_ == Sampling::NeeMis && !lights_.empty();
     GuidePathRecorder recorder(records);
+    // Russian roulette judges a path by the throughput BSDF sampling would have given it: a
+    // guided sample aimed at a bright light has a small weight (its density is high), and
+    // roulette on that would end most of the very paths guiding found.
+    float rr_scale = 1.0f;
     glm::vec3 result(0.0f);
     glm::vec3 beta(1.0f);
     bool full_weight = true;    // the ray that found this vertex gets MIS weight 1
@@ -73,7 +77,12 @@ glm::vec3 PathIntegrator::radiance(collision::Ray ray, Rng& rng, std::uint64_t& 
         const ShadingContext ctx = make_shading_context(hit, wo);
         const bool delta = is_delta(mat);
         const bool learn = recorder.on() && is_guided(mat);
-        const DirectionalQuadtree* guide = guide_ != nullptr && is_guided(mat) ? guide_->guide(hit.point) : nullptr;
+        const DirectionalQuadtree* guide = nullptr;
+        if (guide_ != nullptr && is_guided(mat)) {
+            const std::uint32_t leaf = guide_->leaf_of(hit.point);
+            guide = guide_->guide_at(leaf);
+            recorder.at_leaf(leaf);
+        }
 
         if (nee && !delta) {
             const float us = rng.uniform(), up = rng.uniform(), u1 = rng.uniform(), u2 = rng.uniform();
@@ -82,27 +91,33 @@ glm::vec3 PathIntegrator::radiance(collision::Ray ray, Rng& rng, std::uint64_t& 
                 const BsdfEval e = eval_bsdf(mat, ctx, ls.wi);
                 if (e.pdf > 0.0f) {
                     ++rays;
-                    const bool visible = !accel_.occluded(shadow_ray(hit, ls));
-                    const float w = power_heuristic(ls.pdf, guide ? guided_pdf(*guide, e.pdf, ls.wi) : e.pdf);
-                    if (visible) result += beta * e.f_cos * ls.radiance * (w / ls.pdf);
-                    if (learn) recorder.add_light_sample(hit.point, ls.wi, visible ? ls.radiance * (w / ls.pdf) : glm::vec3(0.0f));
+                    if (!accel_.occluded(shadow_ray(hit, ls))) {
+                        const float w = power_heuristic(ls.pdf, guide ? guided_pdf(*guide, e.pdf, ls.wi) : e.pdf);
+                        result += beta * e.f_cos * ls.radiance * (w / ls.pdf);
+                        if (learn) recorder.add_light_sample(hit.point, ctx.frame.n, ls.wi, ls.radiance * (w / ls.pdf));
+                    } else if (learn) {
+                        recorder.add_light_sample(hit.point, ctx.frame.n, ls.wi, glm::vec3(0.0f));
+                    }
                 }
             }
         }
 
         BsdfSample bs;
         const float b0 = rng.uniform(), b1 = rng.uniform(), b2 = rng.uniform();
-        if (guide ? !sample_guided(mat, ctx, *guide, rng.uniform(), b0, b1, b2, bs) : !sample_bsdf(mat, ctx, b0, b1, b2, bs))
+        float bsdf_pdf = 0.0f;
+        if (guide ? !sample_guided(mat, ctx, *guide, rng.uniform(), b0, b1, b2, bs, bsdf_pdf)
+                  : !sample_bsdf(mat, ctx, b0, b1, b2, bs))
             break;
         beta *= bs.weight;
-        if (learn && !bs.delta) recorder.add_vertex(hit.point, bs.wi, bs.pdf, beta, result);
+        if (guide != nullptr && !bs.delta) rr_scale *= std::max(1.0f, bs.pdf / bsdf_pdf);
+        if (learn && !bs.delta) recorder.add_vertex(hit.point, ctx.frame.n, bs.wi, bs.pdf, beta, result);
         full_weight = bs.delta;
         prev_pdf = bs.pdf;
         prev_point = hit.point;
         prev_object = hit.object;
 
         if (depth >= 3) {
-            const float q = std::min(1.0f, max_component(beta));
+            const float q = std::min(1.0f, max_component(beta) * rr_scale);
             if (!(rng.uniform() < q)) break;
             beta /= q;
         }

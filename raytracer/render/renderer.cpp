@@ -133,7 +133,7 @@ private:
     // Training on the pass just finished: tiles merged in tile order, so the guide the next pass
     // reads is the same for any thread count.
     void learn(int completed_passes) {
-        for (const std::vector<GuideRecord>& records : tile_records_) guide_.add(records);
+        guide_.add(tile_records_);
         guide_.end_pass(completed_passes);
     }
 

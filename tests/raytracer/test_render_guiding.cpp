@@ -47,6 +47,7 @@ DirectionalQuadtree trained_tree() {
         if (iteration > 0) tree = tree.refined(0.01, kDepth);
         for (int i = 0; i < 30000; ++i) tree.record(lobe_direction(rng, axis), 0.5f + rng.uniform());
     }
+    tree.freeze();
     return tree;
 }
 
@@ -127,12 +128,14 @@ TEST_CASE("guiding: mixture samples weigh f cos / (the mixture's density): E[wei
     for (int s = 0; s < 200000; ++s) {
         const float us = rng.uniform(), u0 = rng.uniform(), u1 = rng.uniform(), u2 = rng.uniform();
         BsdfSample bs;
-        const bool ok = sample_guided(m, ctx, tree, us, u0, u1, u2, bs);
+        float bsdf_pdf = 0.0f;
+        const bool ok = sample_guided(m, ctx, tree, us, u0, u1, u2, bs, bsdf_pdf);
         weight.add(ok ? bs.weight.g : 0.0);
         guided_share.add(us >= kBsdfFraction && ok ? 1.0 : 0.0);
         if (ok) {
             const BsdfEval e = eval_bsdf(m, ctx, bs.wi);
             CHECK(bs.pdf == Approx(guided_pdf(tree, e.pdf, bs.wi)));
+            CHECK(bsdf_pdf == Approx(e.pdf));
         }
     }
     INFO("mean weight " << weight.mean << " +- " << weight.standard_error());
@@ -147,7 +150,7 @@ TEST_CASE("guiding: the spatial tree learns only between passes and splits where
     Rng rng(2, 2, 2);
     for (int i = 0; i < 60000; ++i)
         records.push_back({glm::vec3(rng.uniform(), rng.uniform(), rng.uniform()), glm::vec3(0.0f, 0.0f, 1.0f), 1.0f});
-    sd.add(records);
+    sd.add({records});
     CHECK(sd.guide(glm::vec3(0.5f)) == nullptr);  // nothing learned until the iteration ends
     sd.end_pass(1);                                // iteration 0 (1 pass) ends
     CHECK(sd.iterations_done() == 1);
