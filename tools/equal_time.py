@@ -23,7 +23,8 @@ import sys
 
 import numpy as np
 
-SCENES = [("smallpt", 128, 96), ("cornell-box", 96, 96), ("default", 128, 72)]
+# Reduced sizes (the machine is shared); reference spp per scene (two halves of half as many).
+SCENES = [("smallpt", 128, 96, 8192), ("cornell-box", 96, 96, 4096), ("default", 128, 72, 4096)]
 
 
 def read_pfm(path):
@@ -41,28 +42,28 @@ def render(binary, scene, w, h, out, extra):
     res = subprocess.run(cmd, stderr=subprocess.PIPE, text=True)
     if res.returncode != 0:
         raise SystemExit(f"equal_time: {' '.join(cmd)} failed:\n{res.stderr}")
-    m = re.search(r", (\d+) spp", res.stderr)
+    m = re.search(r"\d+x\d+, (\d+) spp", res.stderr)  # the summary line, not the progress lines
     return int(m.group(1)) if m else None
 
 
-def reference(args, name, w, h):
+def reference(args, name, w, h, ref_spp):
     cache = os.path.join(args.build, "equal-time")
     os.makedirs(cache, exist_ok=True)
     halves = []
     for half, seed in (("a", 1001), ("b", 1002)):
-        path = os.path.join(cache, f"ref-{name}-{w}x{h}-{args.ref_spp // 2}spp-{half}.pfm")
+        path = os.path.join(cache, f"ref-{name}-{w}x{h}-{ref_spp // 2}spp-{half}.pfm")
         if not os.path.exists(path):
             print(f"equal_time: rendering reference {path}", file=sys.stderr)
             tmp = path + ".tmp.pfm"
             render(args.binary, f"scenes/{name}.json", w, h, tmp,
-                   ["--spp", str(args.ref_spp // 2), "--seed", str(seed), "--guiding", "off",
+                   ["--spp", str(ref_spp // 2), "--seed", str(seed), "--guiding", "off",
                     "--threads", str(args.threads), "--quiet"])
             os.replace(tmp, path)
         halves.append(read_pfm(path))
     a, b = halves
     ref = 0.5 * (a + b)
     ref_var = float(np.mean((a - b) ** 2) / 4.0)  # mean per-pixel variance of the reference
-    return ref, ref_var, [os.path.join(cache, f"ref-{name}-{w}x{h}-{args.ref_spp // 2}spp-{x}.pfm") for x in "ab"]
+    return ref, ref_var
 
 
 def errors(img, ref, ref_var):
@@ -86,36 +87,44 @@ def main():
     ap.add_argument("--build", default="build")
     ap.add_argument("--times", default="0.5,1,2,4,8")
     ap.add_argument("--threads", type=int, default=2)
-    ap.add_argument("--ref-spp", type=int, default=8192)
     ap.add_argument("--scenes", default=",".join(s[0] for s in SCENES))
     ap.add_argument("--docs", default="docs")
+    ap.add_argument("--reuse", action="store_true",
+                    help="reuse timed renders already in BUILD/equal-time (same binary only: the spp is re-read)")
     args = ap.parse_args()
     args.binary = os.path.join(args.build, "sweeptrace")
     times = [float(t) for t in args.times.split(",")]
     work = os.path.join(args.build, "equal-time")
     rows, z_lines = [], []
-    for name, w, h in SCENES:
+    for name, w, h, ref_spp in SCENES:
         if name not in args.scenes.split(","):
             continue
-        ref, ref_var, ref_paths = reference(args, name, w, h)
+        ref, ref_var = reference(args, name, w, h, ref_spp)
         # The reference as one image, for diff.
-        ref_pfm = os.path.join(work, f"ref-{name}-{w}x{h}-{args.ref_spp}spp.pfm")
+        ref_pfm = os.path.join(work, f"ref-{name}-{w}x{h}-{ref_spp}spp.pfm")
         write_pfm(ref_pfm, ref)
         for t in times:
             for mode in ("off", "on"):
                 out = os.path.join(work, f"{name}-{mode}-{t:g}.pfm")
-                spp = render(args.binary, f"scenes/{name}.json", w, h, out,
-                             ["--time", str(t), "--time-clock", "cpu", "--guiding", mode, "--seed", "7",
-                              "--threads", str(args.threads)])
+                spp_file = out + ".spp"
+                if args.reuse and os.path.exists(out) and os.path.exists(spp_file):
+                    spp = int(open(spp_file).read())
+                else:
+                    spp = render(args.binary, f"scenes/{name}.json", w, h, out,
+                                 ["--time", str(t), "--time-clock", "cpu", "--guiding", mode, "--seed", "7",
+                                  "--threads", str(args.threads)])
+                    with open(spp_file, "w") as f:
+                        f.write(str(spp))
                 e = errors(read_pfm(out), ref, ref_var)
-                rows.append(dict(scene=name, size=f"{w}x{h}", t=t, guiding=mode, spp=spp, **e))
+                rows.append(dict(scene=name, size=f"{w}x{h}", ref_spp=ref_spp, t=t, guiding=mode, spp=spp, **e))
                 print(f"{name} T={t:g} guiding {mode}: {spp} spp, RMSE {e['rmse']:.5f} "
                       f"(net {e['rmse_net']:.5f}), display {e['rmse_display']:.5f}", file=sys.stderr)
         t = times[-1]
         second = os.path.join(work, f"{name}-on-{t:g}-seed8.pfm")
-        render(args.binary, f"scenes/{name}.json", w, h, second,
-               ["--time", str(t), "--time-clock", "cpu", "--guiding", "on", "--seed", "8",
-                "--threads", str(args.threads), "--quiet"])
+        if not (args.reuse and os.path.exists(second)):
+            render(args.binary, f"scenes/{name}.json", w, h, second,
+                   ["--time", str(t), "--time-clock", "cpu", "--guiding", "on", "--seed", "8",
+                    "--threads", str(args.threads), "--quiet"])
         z_lines.append((name, z_test(args.binary, os.path.join(work, f"{name}-on-{t:g}.pfm"), second, ref_pfm)))
     write_docs(args, rows, z_lines, times)
 
@@ -132,11 +141,12 @@ def write_docs(args, rows, z_lines, times):
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
 
-    scenes = sorted({r["scene"] for r in rows}, key=[s[0] for s in SCENES].index)
+    order = [s[0] for s in SCENES]
+    scenes = sorted({r["scene"] for r in rows}, key=order.index)
     md = ["# Equal-time error: path guiding on and off", "",
           "Generated by `/usr/bin/python3 tools/equal_time.py " + " ".join(sys.argv[1:]) + "`.",
           f"T is CPU seconds of all {args.threads} render threads (`--time T --time-clock cpu`); the reference "
-          f"is unguided, {args.ref_spp} spp (two halves of {args.ref_spp // 2}, seeds 1001/1002). "
+          "is unguided, at the spp of the table (two halves of half as many, seeds 1001/1002). "
           "RMSE linear: against the reference; net: with the reference's own noise subtracted; "
           "display: clamp to [0, 1], gamma 1/2.2. Ratio = guided / unguided at the same T.", "",
           "| scene | size | T (CPU s) | spp off | spp on | RMSE off | RMSE on | ratio | net off | net on | net ratio "
@@ -151,7 +161,8 @@ def write_docs(args, rows, z_lines, times):
                       f"{on['rmse']:.4g} | {ratio('rmse'):.3f} | {off['rmse_net']:.4g} | {on['rmse_net']:.4g} | "
                       f"{ratio('rmse_net'):.3f} | {off['rmse_display']:.4g} | {on['rmse_display']:.4g} | "
                       f"{ratio('rmse_display'):.3f} |")
-    md += ["", "Unbiasedness: block z-test (`sweeptrace diff --linear --noise`, the golden tests' criterion) of "
+    md += ["", "References: " + ", ".join(f"{s[0]} {s[1]}x{s[2]} {s[3]} spp" for s in SCENES if s[0] in scenes) + ".",
+           "", "Unbiasedness: block z-test (`sweeptrace diff --linear --noise`, the golden tests' criterion) of "
            f"the guided T = {times[-1]:g} renders (seeds 7 and 8) against the reference:", ""]
     md += [f"- {s}: {line}" for s, line in z_lines]
     with open(os.path.join(args.docs, "equal-time.md"), "w") as f:

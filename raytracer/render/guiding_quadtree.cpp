@@ -9,16 +9,17 @@ namespace sweeptrace {
 
 namespace {
 
-constexpr double kBelowOne = 0x1.fffffffffffffp-1;  // the largest double below 1
+constexpr float kBelowOne = 0x1.fffffep-1f;  // the largest float below 1
 
 // Picks the half of [0, 1) holding `u` when the lower half has probability `p_low`, and
-// stretches u back over [0, 1) inside it (one bit of u used per level, as a 2D warp does).
-bool pick_upper(double& u, double p_low) {
+// stretches u back over [0, 1) inside it (about one bit of u used per level, as a 2D warp does;
+// 24-bit uniforms leave ~17 bits inside a leaf at depth 7, far finer than any pixel resolves).
+bool pick_upper(float& u, float p_low) {
     if (u < p_low) {
         u = std::min(u / p_low, kBelowOne);
         return false;
     }
-    u = std::min((u - p_low) / (1.0 - p_low), kBelowOne);
+    u = std::min((u - p_low) / (1.0f - p_low), kBelowOne);
     return true;
 }
 
@@ -73,21 +74,21 @@ void DirectionalQuadtree::freeze() {
 }
 
 glm::vec3 DirectionalQuadtree::sample(float u1, float u2) const {
-    double ux = u1, uy = u2;
-    double ox = 0.0, oy = 0.0, size = 1.0;
+    float ux = u1, uy = u2;
+    float ox = 0.0f, oy = 0.0f, size = 1.0f;  // the cell: powers of two, exact in float
     std::uint32_t node = 0;
     for (;;) {
         const Node& n = nodes_[node];
         const int xb = pick_upper(ux, n.p_left) ? 1 : 0;
         const int yb = pick_upper(uy, n.p_lower[xb]) ? 1 : 0;
-        size *= 0.5;
-        ox += xb * size;
-        oy += yb * size;
+        size *= 0.5f;
+        ox += float(xb) * size;
+        oy += float(yb) * size;
         const std::uint32_t next = n.child[xb + 2 * yb];
         if (next == 0) break;
         node = next;
     }
-    return square_to_direction(glm::vec2(static_cast<float>(ox + ux * size), static_cast<float>(oy + uy * size)));
+    return square_to_direction(glm::vec2(ox + ux * size, oy + uy * size));
 }
 
 float DirectionalQuadtree::pdf(const glm::vec3& dir) const {

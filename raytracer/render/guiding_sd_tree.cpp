@@ -52,6 +52,7 @@ void GuidingSdTree::add(const std::vector<std::vector<GuideRecord>>& batches) {
 }
 
 void GuidingSdTree::end_pass(int completed_passes) {
+    if (!training()) return;
     // Iteration k ends when 2^(k+1) - 1 passes are done.
     const long long end = (2ll << iterations_done_) - 1;
     if (completed_passes < end) return;

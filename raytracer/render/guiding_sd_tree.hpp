@@ -5,7 +5,8 @@
 // `building`, filled with this iteration's records.
 //
 // Training (§3.4) runs in iterations of doubling length: iteration k spans 2^k passes of one
-// sample per pixel (passes 2^k - 1 .. 2^(k+1) - 2). At its end, building becomes sampling; a
+// sample per pixel (passes 2^k - 1 .. 2^(k+1) - 2), for kTrainingIterations iterations; later
+// passes sample the last guide without recording. At its end, building becomes sampling; a
 // leaf that received more than kSplitRecords * sqrt(2^k) records splits (repeatedly, assuming its
 // records spread evenly) and its children start from copies of its quadtrees; each new building
 // quadtree takes the structure its sampling tree's energy asks for (quadrants holding more than
@@ -40,6 +41,10 @@ public:
     static constexpr double kSplitRecords = 2000.0;   // c of PPG §3.4
     static constexpr double kQuadtreeThreshold = 0.01;  // rho of PPG §3.4
     static constexpr int kQuadtreeMaxDepth = 20;
+    // Training ends after this many iterations (2^k - 1 = 255 passes): recording and merging cost
+    // about as much as the guide saves on scenes next event estimation already handles, and the
+    // guide gains little from more records once its cells are fine.
+    static constexpr int kTrainingIterations = 8;
 
     // Adds one pass's records, batch by batch in order, to the building quadtrees (the first
     // pass with records also fixes the box).
@@ -56,6 +61,7 @@ public:
     }
     const DirectionalQuadtree* guide(const glm::vec3& point) const { return guide_at(leaf_of(point)); }
 
+    bool training() const { return iterations_done_ < kTrainingIterations; }
     std::size_t leaf_count() const { return leaves_.size(); }
     int iterations_done() const { return iterations_done_; }
 

@@ -79,7 +79,7 @@ public:
                     }
                 });
                 if (abandoned.load()) break;
-                if (opt_.guiding) learn(s + 1);
+                if (opt_.guiding && guide_.training()) learn(s + 1);
                 tbb::parallel_for(tbb::blocked_range<std::size_t>(0, sum_.size(), 4096),
                                   [&](const tbb::blocked_range<std::size_t>& r) {
                                       for (std::size_t i = r.begin(); i < r.end(); ++i) {
@@ -145,7 +145,8 @@ private:
         const int x0 = (tile % tiles_x_) * kTileSize, y0 = (tile / tiles_x_) * kTileSize;
         const int x1 = std::min(x0 + kTileSize, width_), y1 = std::min(y0 + kTileSize, height_);
         std::uint64_t rays = 0, nonfinite = 0;
-        std::vector<GuideRecord>* records = opt_.guiding ? &tile_records_[static_cast<std::size_t>(tile)] : nullptr;
+        std::vector<GuideRecord>* records =
+            opt_.guiding && guide_.training() ? &tile_records_[static_cast<std::size_t>(tile)] : nullptr;
         if (records != nullptr) records->clear();
         for (int y = y0; y < y1; ++y) {
             for (int x = x0; x < x1; ++x) {
