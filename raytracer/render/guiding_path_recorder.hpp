@@ -38,7 +38,7 @@ public:
     // the shadow ray was blocked.
     void add_light_sample(const glm::vec3& point, const glm::vec3& normal, const glm::vec3& wi,
                           const glm::vec3& contribution) {
-        push(point, wi, mean(contribution) * cosine(normal, wi));
+        push(point, wi, mean(contribution) * cosine(normal, wi), true);
     }
     // The path continued from `point` along wi drawn with density `pdf`; `throughput` is the
     // path's throughput after the sample's weight, `total` the path's radiance so far.
@@ -69,9 +69,10 @@ private:
     };
     static float mean(const glm::vec3& c) { return (c.r + c.g + c.b) * (1.0f / 3.0f); }
     static float cosine(const glm::vec3& n, const glm::vec3& w) { return std::max(0.0f, glm::dot(n, w)); }
-    void push(const glm::vec3& point, const glm::vec3& wi, float value) {
+    void push(const glm::vec3& point, const glm::vec3& wi, float value, bool light_sample = false) {
         // A non-finite or negative estimate (a degenerate path) teaches nothing; it still counts as a record.
-        out_->push_back(GuideRecord{point, wi, std::isfinite(value) && value > 0.0f ? value : 0.0f, leaf_});
+        out_->push_back(GuideRecord{point, wi, std::isfinite(value) && value > 0.0f ? value : 0.0f, leaf_,
+                                    light_sample});
     }
 
     std::vector<GuideRecord>* out_;

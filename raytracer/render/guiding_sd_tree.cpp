@@ -47,7 +47,11 @@ void GuidingSdTree::add(const std::vector<std::vector<GuideRecord>>& batches) {
         for (const GuideRecord& r : records) {
             Leaf& leaf = leaves_[r.leaf];
             ++leaf.records;
-            if (r.value > 0.0f) leaf.building.record(r.dir, r.value);
+            if (r.light_sample) {
+                ++leaf.light_samples;
+                if (!(r.value > 0.0f)) ++leaf.light_misses;
+            }
+            if (r.value > 0.0f && leaf.learning) leaf.building.record(r.dir, r.value);
         }
 }
 
@@ -65,6 +69,8 @@ void GuidingSdTree::split(std::uint32_t node, double threshold) {
     if (nodes_[node].child[0] != 0 || double(leaves_[leaf].records) <= threshold) return;
     // The records are assumed to spread evenly over the two halves (PPG §3.4).
     leaves_[leaf].records /= 2;
+    leaves_[leaf].light_samples /= 2;
+    leaves_[leaf].light_misses /= 2;
     Leaf copy = leaves_[leaf];
     leaves_.push_back(std::move(copy));
     const auto other = static_cast<std::uint32_t>(leaves_.size() - 1);
@@ -84,7 +90,10 @@ void GuidingSdTree::end_iteration(int iteration) {
     for (Leaf& leaf : leaves_) {
         leaf.sampling = std::move(leaf.building);
         leaf.sampling.freeze();
-        leaf.usable = leaf.sampling.total() > 0.0;
+        leaf.learning =
+            leaf.light_samples == 0 || double(leaf.light_misses) > kNeeMissShare * double(leaf.light_samples);
+        leaf.usable = leaf.learning && leaf.sampling.total() > 0.0;
+        leaf.light_samples = leaf.light_misses = 0;
         leaf.building = leaf.sampling.refined(kQuadtreeThreshold, kQuadtreeMaxDepth);
         leaf.records = 0;
     }

@@ -11,6 +11,10 @@
 // records spread evenly) and its children start from copies of its quadtrees; each new building
 // quadtree takes the structure its sampling tree's energy asks for (quadrants holding more than
 // kQuadtreeThreshold of the energy subdivided, to depth kQuadtreeMaxDepth) with zero energy.
+// A leaf's guide is used only where most next-event samples of the iteration found no light
+// (kNeeMissShare): a choice of where to guide, so any rule keeps the estimator unbiased. Leaves
+// where NEE found the light only count records in the next iteration (no quadtree updates), so
+// they learn again, one iteration late, if that changes.
 //
 // Determinism: the tree changes only between passes, from records merged in a fixed order (the
 // renderer adds each tile's records in tile order, each tile's in pixel order), so the guide a
@@ -34,6 +38,7 @@ struct GuideRecord {
     glm::vec3 dir{0.0f};
     float value = 0.0f;
     std::uint32_t leaf = 0;  // leaf_of(point) in the tree of the pass that made the record
+    bool light_sample = false;  // from next event estimation (value 0: it found no light)
 };
 
 class GuidingSdTree {
@@ -45,6 +50,10 @@ public:
     // about as much as the guide saves on scenes next event estimation already handles, and the
     // guide gains little from more records once its cells are fine.
     static constexpr int kTrainingIterations = 8;
+    // A leaf guides only where next event estimation fails more often than this (its light
+    // samples blocked or on the wrong side): where NEE finds the light, BSDF sampling is
+    // already the right partner for it and the guide would only add its cost.
+    static constexpr double kNeeMissShare = 0.5;
 
     // Adds one pass's records, batch by batch in order, to the building quadtrees (the first
     // pass with records also fixes the box).
@@ -73,7 +82,9 @@ private:
     struct Leaf {
         DirectionalQuadtree sampling, building;
         std::uint64_t records = 0;  // in the building tree
-        bool usable = false;        // sampling has energy (and is frozen)
+        std::uint64_t light_samples = 0, light_misses = 0;  // NEE records among them, and blank ones
+        bool usable = false;        // sampling has energy (and is frozen), and NEE misses here
+        bool learning = true;       // NEE missed here last iteration: fill `building`
     };
     void set_box(const std::vector<std::vector<GuideRecord>>& batches);
     void end_iteration(int iteration);
