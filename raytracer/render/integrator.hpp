@@ -15,7 +15,10 @@
 // max_depth = 1 shows only emitters (and the background) seen directly. Both strategies stop at
 // the same path length, so NeeMis and BsdfOnly estimate exactly the same truncated sum.
 // Russian roulette from the third bounce on: continue with probability min(1, max(throughput)),
-// dividing the throughput by it (unbiased).
+// dividing the throughput by it (unbiased). With path guiding the throughput it looks at is the
+// one BSDF sampling would have given (each guided vertex's mixture / BSDF density ratio, never
+// below 1, multiplied in): any continuation probability in (0, 1] is unbiased, and this one
+// does not end the guided paths that head for a light just because their density was high.
 #include <cstdint>
 #include <vector>
 
