@@ -65,6 +65,13 @@ std::vector<double> cell_probabilities(const DirectionalQuadtree& tree, int n) {
     return p;
 }
 
+Scene smallpt(int width, int height) {
+    Scene s = load_scene(std::filesystem::path(SWEEPTRACE_SOURCE_DIR) / "scenes" / "smallpt.json");
+    s.film.width = width;
+    s.film.height = height;
+    return s;
+}
+
 bool same_bits(const Image& a, const Image& b) {
     return a.width == b.width && a.height == b.height &&
            std::memcmp(a.pixels.data(), b.pixels.data(), a.pixels.size() * sizeof(glm::vec3)) == 0;
@@ -166,9 +173,7 @@ TEST_CASE("guiding: the spatial tree learns only between passes and splits where
 TEST_CASE("guiding: a guided render is the same bit for bit on 1, 2 and 3 threads", "[render][guiding]") {
     // smallpt: next event estimation misses there, so the leaves guide (not so in scenes whose
     // light NEE finds, where guided and unguided renders are the same).
-    Scene s = load_scene(std::filesystem::path(SWEEPTRACE_SOURCE_DIR) / "scenes" / "smallpt.json");
-    s.film.width = 24;
-    s.film.height = 16;
+    const Scene s = smallpt(24, 16);
     const BruteForceAccel accel(s);
     RenderOptions o;
     o.spp = 8;  // iterations of 1, 2 and 4 passes: the guide is rebuilt twice and used
@@ -192,9 +197,7 @@ TEST_CASE("guiding: a guided render is the same bit for bit on 1, 2 and 3 thread
 }
 
 TEST_CASE("guiding: guided and unguided renders of smallpt agree within the variance bound", "[render][guiding]") {
-    Scene scene = load_scene(std::filesystem::path(SWEEPTRACE_SOURCE_DIR) / "scenes" / "smallpt.json");
-    scene.film.width = 32;
-    scene.film.height = 24;
+    const Scene scene = smallpt(32, 24);
     const BruteForceAccel accel(scene);
     RenderOptions o;
     o.spp = 128;
