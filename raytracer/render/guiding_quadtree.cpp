@@ -41,7 +41,7 @@ glm::vec3 square_to_direction(const glm::vec2& p) {
     return {r * std::cos(phi), r * std::sin(phi), z};
 }
 
-DirectionalQuadtree::DirectionalQuadtree() : nodes_(1) {}
+DirectionalQuadtree::DirectionalQuadtree() : nodes_(1), energy_(1) {}
 
 void DirectionalQuadtree::record(const glm::vec3& dir, float value) {
     const glm::vec2 p = direction_to_square(dir);
@@ -50,7 +50,7 @@ void DirectionalQuadtree::record(const glm::vec3& dir, float value) {
     for (;;) {
         const int xb = x >= 0.5 ? 1 : 0, yb = y >= 0.5 ? 1 : 0;
         const int q = xb + 2 * yb;
-        nodes_[node].energy[q] += value;
+        energy_[node].e[q] += value;
         const std::uint32_t next = nodes_[node].child[q];
         if (next == 0) return;
         x = 2.0 * x - xb;  // exact: scaling by 2 and subtracting 0 or 1
@@ -59,17 +59,13 @@ void DirectionalQuadtree::record(const glm::vec3& dir, float value) {
     }
 }
 
-double DirectionalQuadtree::total() const { return nodes_[0].sum(); }
+double DirectionalQuadtree::total() const { return energy_[0].sum(); }
 
 void DirectionalQuadtree::freeze() {
-    for (Node& n : nodes_) {
-        const double sum = n.sum();
+    for (std::size_t i = 0; i < nodes_.size(); ++i) {
+        const double sum = energy_[i].sum();
         if (!(sum > 0.0)) continue;  // never reached: its parent's quadrant has no energy
-        for (int q = 0; q < 4; ++q) n.factor[q] = static_cast<float>(4.0 * n.energy[q] / sum);
-        const double left = n.energy[0] + n.energy[2], right = n.energy[1] + n.energy[3];
-        n.p_left = static_cast<float>(left / sum);
-        n.p_lower[0] = left > 0.0 ? static_cast<float>(n.energy[0] / left) : 0.5f;
-        n.p_lower[1] = right > 0.0 ? static_cast<float>(n.energy[1] / right) : 0.5f;
+        for (int q = 0; q < 4; ++q) nodes_[i].factor[q] = static_cast<float>(4.0 * energy_[i].e[q] / sum);
     }
 }
 
@@ -79,8 +75,11 @@ glm::vec3 DirectionalQuadtree::sample(float u1, float u2) const {
     std::uint32_t node = 0;
     for (;;) {
         const Node& n = nodes_[node];
-        const int xb = pick_upper(ux, n.p_left) ? 1 : 0;
-        const int yb = pick_upper(uy, n.p_lower[xb]) ? 1 : 0;
+        // The column by its share, then the quadrant within it; a column with no energy has
+        // share exactly 0, so it is never picked (and never divides by zero below).
+        const float left = n.factor[0] + n.factor[2], right = n.factor[1] + n.factor[3];
+        const int xb = pick_upper(ux, left / (left + right)) ? 1 : 0;
+        const int yb = pick_upper(uy, n.factor[xb] / (n.factor[xb] + n.factor[xb + 2])) ? 1 : 0;
         size *= 0.5f;
         ox += float(xb) * size;
         oy += float(yb) * size;
@@ -110,7 +109,7 @@ float DirectionalQuadtree::pdf(const glm::vec3& dir) const {
 
 DirectionalQuadtree DirectionalQuadtree::refined(double threshold, int max_depth) const {
     DirectionalQuadtree out;
-    refine_into(out, 0, 0, nodes_[0].energy, total(), threshold, 1, max_depth);
+    refine_into(out, 0, 0, energy_[0].e, total(), threshold, 1, max_depth);
     return out;
 }
 
@@ -121,10 +120,11 @@ void DirectionalQuadtree::refine_into(DirectionalQuadtree& out, std::uint32_t ou
         if (!(total > 0.0) || energy[q] / total <= threshold || depth >= max_depth) continue;
         const auto child = static_cast<std::uint32_t>(out.nodes_.size());
         out.nodes_.emplace_back();
+        out.energy_.emplace_back();
         out.nodes_[out_node].child[q] = child;
         const int old_child = old_node >= 0 && nodes_[old_node].child[q] != 0 ? int(nodes_[old_node].child[q]) : -1;
         double spread[4];
-        if (old_child >= 0) std::copy(nodes_[old_child].energy, nodes_[old_child].energy + 4, spread);
+        if (old_child >= 0) std::copy(energy_[old_child].e, energy_[old_child].e + 4, spread);
         else std::fill(spread, spread + 4, 0.25 * energy[q]);
         refine_into(out, child, old_child, spread, total, threshold, depth + 1, max_depth);
     }
