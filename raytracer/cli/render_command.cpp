@@ -32,6 +32,9 @@ namespace {
 
 // Lock-free, so setting it from a signal handler is well defined.
 std::atomic<bool> g_interrupted{false};
+
+// --time without --spp: no pass limit a render could reach (the scene format's own spp limit).
+constexpr int kMaxTimedSpp = 1 << 20;
 static_assert(std::atomic<bool>::is_always_lock_free);
 
 extern "C" void on_sigint(int) {
@@ -59,14 +62,17 @@ struct RenderArgs {
     std::string output;
     std::string variance;  // optional: per-pixel variance of the pixel means (float formats only)
     int spp = 0, width = 0, height = 0, threads = 0, max_depth = 0;
+    double time = 0.0;
     std::uint64_t seed = 0;
     std::string accel = "bvh";
     std::string sampler;  // empty: the scene's film.sampler
+    std::string guiding;  // "on", "off" or empty: the scene's film.guiding
+    std::string time_clock = "wall";
     bool quiet = false;
     std::string samples;  // "A:B": render a farm part
     bool skip_existing = false;
     CLI::Option *spp_opt = nullptr, *width_opt = nullptr, *height_opt = nullptr, *depth_opt = nullptr,
-                *seed_opt = nullptr;
+                *seed_opt = nullptr, *time_opt = nullptr;
 };
 
 std::string clock_text(double seconds) {
@@ -86,29 +92,34 @@ std::string si_text(double v) {
     return buf;
 }
 
-// On a terminal: one bar redrawn in place with elapsed time and ETA. Otherwise (a log, CI): a
-// plain line at each 10%.
+// On a terminal: one bar redrawn in place with elapsed time, time left (the ETA, or what is left
+// of --time), the spp reached and samples/s. Otherwise (a log, CI): a plain line at each 10%.
 class ProgressDisplay {
 public:
-    explicit ProgressDisplay(bool tty) : tty_(tty), start_(std::chrono::steady_clock::now()) {}
+    ProgressDisplay(bool tty, std::uint64_t pixels) : tty_(tty), pixels_(pixels) {}
 
-    void update(double fraction) {
-        const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+    void update(const RenderProgress& p) {
         if (tty_) {
             constexpr int kWidth = 30;
-            const int filled = static_cast<int>(fraction * kWidth);
+            const int filled = static_cast<int>(p.fraction * kWidth);
             std::string bar(static_cast<std::size_t>(filled), '#');
             bar.resize(kWidth, '.');
-            const std::string eta = fraction > 0.0 ? clock_text(elapsed * (1.0 - fraction) / fraction) : "?";
-            std::fprintf(stderr, "\r[%s] %3d%%  elapsed %s  ETA %s ", bar.c_str(), static_cast<int>(fraction * 100.0),
-                         clock_text(elapsed).c_str(), eta.c_str());
+            std::string left = "?";
+            if (p.seconds_left >= 0.0) left = clock_text(p.seconds_left);
+            else if (p.fraction > 0.0) left = clock_text(p.seconds * (1.0 - p.fraction) / p.fraction);
+            const std::string rate =
+                p.completed_spp > 0 ? si_text(double(p.completed_spp) * double(pixels_) / std::max(p.seconds, 1e-9)) : "?";
+            std::fprintf(stderr, "\r[%s] %3d%%  elapsed %s  left %s  %d spp  %s samples/s ", bar.c_str(),
+                         static_cast<int>(p.fraction * 100.0), clock_text(p.seconds).c_str(), left.c_str(),
+                         p.completed_spp, rate.c_str());
             std::fflush(stderr);
             drawn_ = true;
         } else {
-            const int tenth = static_cast<int>(fraction * 10.0 + 1e-9);
+            const int tenth = static_cast<int>(p.fraction * 10.0 + 1e-9);
             while (printed_tenths_ < tenth) {
                 ++printed_tenths_;
-                std::fprintf(stderr, "render: %d%% (%s elapsed)\n", printed_tenths_ * 10, clock_text(elapsed).c_str());
+                std::fprintf(stderr, "render: %d%% (%s elapsed, %d spp)\n", printed_tenths_ * 10,
+                             clock_text(p.seconds).c_str(), p.completed_spp);
             }
         }
     }
@@ -118,7 +129,7 @@ public:
 
 private:
     bool tty_;
-    std::chrono::steady_clock::time_point start_;
+    std::uint64_t pixels_;
     bool drawn_ = false;
     int printed_tenths_ = 0;
 };
@@ -134,6 +145,8 @@ int run_render(const RenderArgs& a) {
     if (a.depth_opt->count())
         require(a.max_depth >= 1, "--max-depth must be at least 1, got " + std::to_string(a.max_depth));
     require(a.threads >= 0, "--threads must be 0 (all cores) or more, got " + std::to_string(a.threads));
+    if (a.time_opt->count())
+        require(a.time > 0.0 && std::isfinite(a.time), "--time must be a positive number of seconds, got " + a.time_opt->as<std::string>());
 
     const std::filesystem::path scene_path(a.scene);
     const std::filesystem::path out =
@@ -188,17 +201,27 @@ int run_render(const RenderArgs& a) {
     const double build_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - build_start).count();
 
     RenderOptions opt;
-    opt.spp = scene.film.spp;
+    // --time alone renders until the budget is spent; with --spp, whichever comes first.
+    opt.spp = a.time_opt->count() && !a.spp_opt->count() ? kMaxTimedSpp : scene.film.spp;
+    opt.time_budget = a.time_opt->count() ? a.time : 0.0;
+    opt.budget_clock = a.time_clock == "cpu" ? BudgetClock::ProcessCpu : BudgetClock::Wall;
     opt.max_depth = scene.film.max_depth;
     opt.threads = a.threads;
     opt.seed = scene.seed;
     opt.sampler = scene.film.sampler;
-    opt.first_sample = range.begin;
-    opt.spp = range.end - range.begin;
+    opt.guiding = a.guiding.empty() ? scene.film.guiding : a.guiding == "on";
+    if (!a.samples.empty()) {
+        // A part must be exactly the samples [A, B) a whole render draws: a time budget would cut
+        // it short, and a guided sample depends on the guide trained on every pass before it.
+        require(!a.time_opt->count(), "--samples and --time cannot be combined: a farm part renders its whole range");
+        require(!opt.guiding, "--samples needs --guiding off: a guided sample depends on the passes rendered before it");
+        opt.first_sample = range.begin;
+        opt.spp = range.end - range.begin;
+    }
     SigintGuard sigint;
     opt.cancel = &g_interrupted;
-    ProgressDisplay progress(isatty(fileno(stderr)) != 0);
-    if (!a.quiet) opt.progress = [&progress](double f) { progress.update(f); };
+    ProgressDisplay progress(isatty(fileno(stderr)) != 0, std::uint64_t(scene.film.width) * scene.film.height);
+    if (!a.quiet) opt.progress = [&progress](const RenderProgress& p) { progress.update(p); };
 
     const RenderResult result = render(scene, *accel, opt);
     if (!a.quiet) progress.finish();
@@ -220,12 +243,15 @@ int run_render(const RenderArgs& a) {
     if (st.cancelled)
         std::fprintf(stderr, "sweeptrace: interrupted: wrote %s with %d of %d samples per pixel\n", out.string().c_str(),
                      st.completed_spp, opt.spp);
+    if (st.budget_spent && !a.quiet)
+        std::fprintf(stderr, "sweeptrace: --time %g s spent: %d spp reached\n", a.time, st.completed_spp);
     if (!a.quiet) {
         const int threads = a.threads > 0 ? a.threads : tbb::info::default_concurrency();
         const double secs = std::max(st.seconds, 1e-9);
         std::fprintf(stderr,
-                     "%s: %dx%d, %d spp, %s (%s, built in %.2f s), %d thread%s: %.2f s, %s samples/s, %s rays/s -> %s\n",
+                     "%s: %dx%d, %d spp%s, %s (%s, built in %.2f s), %d thread%s: %.2f s, %s samples/s, %s rays/s -> %s\n",
                      scene_path.filename().string().c_str(), scene.film.width, scene.film.height, st.completed_spp,
+                     opt.guiding ? " guided" : "",
                      accel->name().c_str(), si_text(double(accel->memory_bytes())).append("B").c_str(), build_seconds,
                      threads, threads == 1 ? "" : "s", st.seconds, si_text(double(st.samples) / secs).c_str(),
                      si_text(double(st.rays) / secs).c_str(), out.string().c_str());
@@ -247,7 +273,11 @@ void add_render_command(CLI::App& app, int& exit_code) {
                     "variance / spp, from the same samples (needs spp >= 2); for `diff --variance-a/-b`. Exact for "
                     "--sampler independent; under sobol (stratified) the true variance is smaller, so the file "
                     "overstates it and diff's noise test is conservative");
-    args->spp_opt = cmd->add_option("--spp", args->spp, "Samples per pixel (default: the scene's film.spp)");
+    args->spp_opt = cmd->add_option("--spp", args->spp,
+                                    "Samples per pixel (default: the scene's film.spp; with --time: no limit)");
+    args->time_opt = cmd->add_option("--time", args->time,
+                                     "Time budget in seconds (wall clock): whole passes of 1 spp until it is spent, at "
+                                     "least one; the image holds the finished passes. With --spp, whichever comes first");
     args->width_opt = cmd->add_option("--width", args->width,
                                       "Image width; alone, the height follows the film's aspect ratio");
     args->height_opt = cmd->add_option("--height", args->height,
@@ -263,6 +293,14 @@ void add_render_command(CLI::App& app, int& exit_code) {
                     "Sample numbers: sobol (Owen-scrambled Sobol, stratified) or independent (uniform random). "
                     "Default: the scene's film.sampler, else sobol")
         ->check(CLI::IsMember({"sobol", "independent"}));
+    cmd->add_option("--time-clock", args->time_clock,
+                    "What --time counts: wall seconds, or cpu seconds of all threads (equal-time comparisons on a "
+                    "shared machine)")
+        ->check(CLI::IsMember({"wall", "cpu"}))
+        ->capture_default_str();
+    cmd->add_option("--guiding", args->guiding,
+                    "Path guiding (learned during the render, unbiased): on or off (default: the scene's film.guiding)")
+        ->check(CLI::IsMember({"on", "off"}));
     cmd->add_flag("--quiet", args->quiet, "No progress display and no summary");
     cmd->add_option("--samples", args->samples,
                     "A:B: render only sample indices [A, B) of the --spp render, to a farm part (.exr) for "

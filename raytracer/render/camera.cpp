@@ -18,6 +18,7 @@ CameraModel::CameraModel(const Camera& c, int width, int height) : origin_(c.pos
     inv_height_ = 1.0f / static_cast<float>(height);
     lens_radius_ = 0.5f * c.aperture;
     focus_distance_ = c.focus_distance > 0.0f ? c.focus_distance : glm::length(c.look_at - c.position);
+    near_clip_ = c.near_clip;
 }
 
 collision::Ray CameraModel::generate(float x, float y, float u1, float u2) const {
@@ -26,7 +27,9 @@ collision::Ray CameraModel::generate(float x, float y, float u1, float u2) const
     const glm::vec3 dir = forward_ + sx * right_ + sy * up_;  // through the plane at distance 1
     collision::Ray ray;
     if (lens_radius_ <= 0.0f) {
-        ray.origin = origin_;
+        // dir's component along forward_ is 1, so near_clip * dir lies on the clip plane (as
+        // smallpt's cam.o + d * 140 does).
+        ray.origin = origin_ + near_clip_ * dir;
         ray.dir = glm::normalize(dir);
         return ray;
     }
@@ -35,6 +38,8 @@ collision::Ray CameraModel::generate(float x, float y, float u1, float u2) const
     const glm::vec2 lens = lens_radius_ * concentric_disk(u1, u2);
     ray.origin = origin_ + lens.x * right_ + lens.y * up_;
     ray.dir = glm::normalize(focus - ray.origin);
+    // The lens point lies on the plane through the eye, so the clip plane is near_clip / cos away.
+    if (near_clip_ > 0.0f) ray.origin += (near_clip_ / glm::dot(ray.dir, forward_)) * ray.dir;
     return ray;
 }
 

@@ -1,7 +1,8 @@
 #pragma once
 // Primary rays: a pinhole, or a thin lens (aperture diameter > 0) focused at focus_distance
 // (by default the distance to look_at). The vertical field of view spans the film's height; the
-// horizontal extent follows the film's aspect ratio (width / height).
+// horizontal extent follows the film's aspect ratio (width / height). Rays start on the plane
+// near_clip ahead of the eye along the view axis (nothing between the eye and it is seen).
 #include <glm/vec3.hpp>
 
 #include "collision/ray.hpp"
@@ -24,6 +25,7 @@ private:
     float inv_width_ = 1.0f, inv_height_ = 1.0f;
     float lens_radius_ = 0.0f;
     float focus_distance_ = 1.0f;
+    float near_clip_ = 0.0f;
 };
 
 }  // namespace sweeptrace

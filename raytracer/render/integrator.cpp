@@ -6,6 +6,8 @@
 #include <glm/geometric.hpp>
 
 #include "raytracer/render/bsdf.hpp"
+#include "raytracer/render/guiding_path_recorder.hpp"
+#include "raytracer/render/guiding_sampler.hpp"
 #include "raytracer/render/sampling.hpp"
 
 namespace sweeptrace {
@@ -42,8 +44,14 @@ collision::Ray PathIntegrator::shadow_ray(const SurfaceHit& hit, const LightSamp
     return r;
 }
 
-glm::vec3 PathIntegrator::radiance(collision::Ray ray, PixelSampler& sampler, std::uint64_t& rays) const {
+glm::vec3 PathIntegrator::radiance(collision::Ray ray, PixelSampler& sampler, std::uint64_t& rays,
+                                   std::vector<GuideRecord>* records) const {
     const bool nee = sampling_ == Sampling::NeeMis && !lights_.empty();
+    GuidePathRecorder recorder(records);
+    // Russian roulette judges a path by the throughput BSDF sampling would have given it: a
+    // guided sample aimed at a bright light has a small weight (its density is high), and
+    // roulette on that would end most of the very paths guiding found.
+    float rr_scale = 1.0f;
     glm::vec3 result(0.0f);
     glm::vec3 beta(1.0f);
     float eta_scale = 1.0f;     // undoes the 1/eta^2 of refractions, for the roulette
@@ -76,6 +84,13 @@ glm::vec3 PathIntegrator::radiance(collision::Ray ray, PixelSampler& sampler, st
 
         const ShadingContext ctx = make_shading_context(hit, wo);
         const bool delta = is_delta(mat);
+        const bool learn = recorder.on() && is_guided(mat);
+        const DirectionalQuadtree* guide = nullptr;
+        if (guide_ != nullptr && is_guided(mat)) {
+            const std::uint32_t leaf = guide_->leaf_of(hit.point);
+            guide = guide_->guide_at(leaf);
+            recorder.at_leaf(leaf);
+        }
 
         if (nee && !delta) {
             const glm::vec2 uc = sampler.get2d(sample_dim::bounce(bounce, sample_dim::kLightChoice));  // and part
@@ -86,8 +101,11 @@ glm::vec3 PathIntegrator::radiance(collision::Ray ray, PixelSampler& sampler, st
                 if (e.pdf > 0.0f) {
                     ++rays;
                     if (!accel_.occluded(shadow_ray(hit, ls))) {
-                        const float w = power_heuristic(ls.pdf, e.pdf);
+                        const float w = power_heuristic(ls.pdf, guide ? guided_pdf(*guide, e.pdf, ls.wi) : e.pdf);
                         result += beta * e.f_cos * ls.radiance * (w / ls.pdf);
+                        if (learn) recorder.add_light_sample(hit.point, ctx.frame.n, ls.wi, ls.radiance * (w / ls.pdf));
+                    } else if (learn) {
+                        recorder.add_light_sample(hit.point, ctx.frame.n, ls.wi, glm::vec3(0.0f));
                     }
                 }
             }
@@ -96,8 +114,14 @@ glm::vec3 PathIntegrator::radiance(collision::Ray ray, PixelSampler& sampler, st
         BsdfSample bs;
         const float b0 = sampler.get1d(sample_dim::bounce(bounce, sample_dim::kBsdfLobe));
         const glm::vec2 b = sampler.get2d(sample_dim::bounce(bounce, sample_dim::kBsdfDirection));
-        if (!sample_bsdf(mat, ctx, b0, b.x, b.y, bs)) break;
+        float bsdf_pdf = 0.0f;
+        if (guide ? !sample_guided(mat, ctx, *guide, sampler.get1d(sample_dim::bounce(bounce, sample_dim::kGuiding)),
+                                   b0, b.x, b.y, bs, bsdf_pdf)
+                  : !sample_bsdf(mat, ctx, b0, b.x, b.y, bs))
+            break;
         beta *= bs.weight;
+        if (guide != nullptr && !bs.delta) rr_scale *= std::max(1.0f, bs.pdf / bsdf_pdf);
+        if (learn && !bs.delta) recorder.add_vertex(hit.point, ctx.frame.n, bs.wi, bs.pdf, beta, result);
         full_weight = bs.delta;
         prev_pdf = bs.pdf;
         prev_point = hit.point;
@@ -110,10 +134,11 @@ glm::vec3 PathIntegrator::radiance(collision::Ray ray, PixelSampler& sampler, st
         // Drawn even when the survival probability is 1: classic() keeps the old random stream.
         if (depth >= roulette_.start_depth &&
             !survives_roulette(roulette_, depth, sampler.get1d(sample_dim::bounce(bounce, sample_dim::kRoulette)),
-                               eta_scale, beta))
+                               eta_scale, beta, rr_scale))
             break;
         ray = continue_ray(hit, bs.wi);
     }
+    if (recorder.on()) recorder.finish(result);
     return result;
 }
 

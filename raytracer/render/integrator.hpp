@@ -15,13 +15,19 @@
 // max_depth = 1 shows only emitters (and the background) seen directly. Both strategies stop at
 // the same path length, so NeeMis and BsdfOnly estimate exactly the same truncated sum.
 // Russian roulette as RoulettePolicy (roulette.hpp) states it. Each decision takes its numbers
-// from the sampler's fixed dimension layout (sample_dim in sampler.hpp).
+// from the sampler's fixed dimension layout (sample_dim in sampler.hpp). With path guiding the
+// throughput roulette looks at is the one BSDF sampling would have given (each guided vertex's
+// mixture / BSDF density ratio, never below 1, multiplied in): any continuation probability in
+// (0, 1] is unbiased, and this one does not end the guided paths that head for a light just
+// because their density was high.
 #include <cstdint>
+#include <vector>
 
 #include <glm/vec3.hpp>
 
 #include "collision/ray.hpp"
 #include "raytracer/accel/accel.hpp"
+#include "raytracer/render/guiding_sd_tree.hpp"
 #include "raytracer/render/lights.hpp"
 #include "raytracer/render/planted_defect.hpp"
 #include "raytracer/render/roulette.hpp"
@@ -39,8 +45,15 @@ public:
     PathIntegrator(const Scene& scene, const Accel& accel, const LightSet& lights, int max_depth, Sampling sampling,
                    PlantedDefect defect, RoulettePolicy roulette = RoulettePolicy::adaptive());
 
-    // `ray` must have a unit direction. Adds every ray traced to `rays`.
-    glm::vec3 radiance(collision::Ray ray, PixelSampler& sampler, std::uint64_t& rays) const;
+    // `ray` must have a unit direction. Adds every ray traced to `rays`. With `records`, what
+    // the path teaches the guide is appended there (guiding_path_recorder.hpp).
+    glm::vec3 radiance(collision::Ray ray, PixelSampler& sampler, std::uint64_t& rays,
+                       std::vector<GuideRecord>* records = nullptr) const;
+
+    // Path guiding (guiding_sampler.hpp): at guided vertices where `guide` has learned something,
+    // BSDF directions come from the BSDF + guide mixture, and its density is the BSDF strategy's
+    // in MIS. The guide must not change during a radiance() call. nullptr: no guiding.
+    void set_guide(const GuidingSdTree* guide) { guide_ = guide; }
 
 private:
     collision::Ray continue_ray(const SurfaceHit& hit, const glm::vec3& dir) const;
@@ -53,6 +66,7 @@ private:
     Sampling sampling_;
     PlantedDefect defect_;
     RoulettePolicy roulette_;
+    const GuidingSdTree* guide_ = nullptr;
 };
 
 }  // namespace sweeptrace

@@ -23,6 +23,7 @@
 #include <tbb/task_arena.h>
 
 #include "raytracer/render/camera.hpp"
+#include "raytracer/render/guiding_sd_tree.hpp"
 #include "raytracer/render/integrator.hpp"
 #include "raytracer/render/lights.hpp"
 #include "raytracer/render/sampler.hpp"
@@ -40,6 +41,7 @@ class PassRenderer {
 public:
     PassRenderer(const Scene& scene, const Accel& accel, const RenderOptions& opt, PlantedDefect defect)
         : opt_(opt),
+          budget_(opt.budget_clock, opt.time_budget),
           width_(scene.film.width),
           height_(scene.film.height),
           tiles_x_((width_ + kTileSize - 1) / kTileSize),
@@ -49,7 +51,12 @@ public:
           integrator_(scene, accel, lights_, opt.max_depth, opt.sampling, defect, opt.roulette),
           sum_(static_cast<std::size_t>(width_) * height_),
           sum_sq_(sum_.size(), glm::dvec3(0.0)),
-          pass_(sum_.size()) {}
+          pass_(sum_.size()) {
+        if (opt.guiding) {
+            tile_records_.resize(static_cast<std::size_t>(tiles_x_) * tiles_y_);
+            integrator_.set_guide(&guide_);
+        }
+    }
 
     void run() {
         const int threads = opt_.threads > 0 ? opt_.threads : tbb::task_arena::automatic;
@@ -62,11 +69,11 @@ public:
         arena.execute([this] {
             const int tiles = tiles_x_ * tiles_y_;
             for (int s = 0; s < opt_.spp; ++s) {
-                if (cancelled()) break;
+                if (stopped(s)) break;
                 std::atomic<bool> abandoned{false};
                 tbb::parallel_for(tbb::blocked_range<int>(0, tiles, 1), [&](const tbb::blocked_range<int>& r) {
                     for (int t = r.begin(); t < r.end(); ++t) {
-                        if (cancelled()) {
+                        if (stopped(s)) {
                             abandoned.store(true, std::memory_order_relaxed);
                             return;
                         }
@@ -75,16 +82,24 @@ public:
                     }
                 });
                 if (abandoned.load()) break;
+                if (opt_.guiding && guide_.training()) learn(s + 1);
                 accumulate_pass();
                 completed_spp_.store(s + 1, std::memory_order_release);
             }
         });
     }
 
-    // Tiles finished over all passes: only grows, so progress never steps back.
-    double fraction_done() const {
+    // Tiles finished over all passes, or the budget's time spent: both only grow, so progress
+    // never steps back.
+    RenderProgress progress() const {
         const double total = static_cast<double>(tiles_x_) * tiles_y_ * opt_.spp;
-        return std::min(1.0, static_cast<double>(tiles_done_.load(std::memory_order_relaxed)) / total);
+        RenderProgress p;
+        p.fraction = std::max(budget_.fraction(),
+                              std::min(1.0, static_cast<double>(tiles_done_.load(std::memory_order_relaxed)) / total));
+        p.completed_spp = completed_spp_.load(std::memory_order_acquire);
+        p.seconds = budget_.elapsed();
+        p.seconds_left = budget_.left();
+        return p;
     }
 
     // Called once, last: the sums move into the result rather than being copied (48 bytes a pixel).
@@ -107,7 +122,8 @@ public:
         res.stats.rays = rays_.load();
         res.stats.nonfinite_samples = nonfinite_.load();
         res.stats.clamped_samples = clamped_.load();
-        res.stats.cancelled = spp < opt_.spp;
+        res.stats.cancelled = spp < opt_.spp && cancelled();
+        res.stats.budget_spent = spp < opt_.spp && !res.stats.cancelled;
         res.sums = std::move(sum_);
         return res;
     }
@@ -130,12 +146,24 @@ private:
                           });
     }
 
+    // Training on the pass just finished: tiles merged in tile order, so the guide the next pass
+    // reads is the same for any thread count.
+    void learn(int completed_passes) {
+        guide_.add(tile_records_);
+        guide_.end_pass(completed_passes);
+    }
+
     bool cancelled() const { return opt_.cancel != nullptr && opt_.cancel->load(std::memory_order_relaxed); }
+    // Pass `pass` is not started, or is dropped: the first pass is kept whatever the budget says.
+    bool stopped(int pass) const { return cancelled() || (pass > 0 && budget_.spent()); }
 
     void render_tile(int tile, int sample) {
         const int x0 = (tile % tiles_x_) * kTileSize, y0 = (tile / tiles_x_) * kTileSize;
         const int x1 = std::min(x0 + kTileSize, width_), y1 = std::min(y0 + kTileSize, height_);
         std::uint64_t rays = 0, nonfinite = 0;
+        std::vector<GuideRecord>* records =
+            opt_.guiding && guide_.training() ? &tile_records_[static_cast<std::size_t>(tile)] : nullptr;
+        if (records != nullptr) records->clear();
         for (int y = y0; y < y1; ++y) {
             for (int x = x0; x < x1; ++x) {
                 const std::size_t pixel = static_cast<std::size_t>(y) * width_ + x;
@@ -143,7 +171,7 @@ private:
                 const glm::vec2 film = sampler.get2d(sample_dim::kFilm);
                 const glm::vec2 lens = sampler.get2d(sample_dim::kLens);
                 const glm::vec2 p = glm::vec2(static_cast<float>(x), static_cast<float>(y)) + film;
-                glm::vec3 l = integrator_.radiance(camera_.generate(p.x, p.y, lens.x, lens.y), sampler, rays);
+                glm::vec3 l = integrator_.radiance(camera_.generate(p.x, p.y, lens.x, lens.y), sampler, rays, records);
                 if (!std::isfinite(l.x) || !std::isfinite(l.y) || !std::isfinite(l.z)) {
                     l = glm::vec3(0.0f);
                     ++nonfinite;
@@ -156,6 +184,7 @@ private:
     }
 
     const RenderOptions& opt_;
+    TimeBudget budget_;
     int width_, height_, tiles_x_, tiles_y_;
     LightSet lights_;
     CameraModel camera_;
@@ -163,6 +192,8 @@ private:
     std::vector<PixelSum> sum_;     // per-pixel exact sum over completed passes
     std::vector<glm::dvec3> sum_sq_;  // per-pixel sum of squares, for the variance
     std::vector<glm::vec3> pass_;   // the pass in flight
+    GuidingSdTree guide_;           // read during a pass, trained between passes
+    std::vector<std::vector<GuideRecord>> tile_records_;  // the pass in flight's, per tile
     std::atomic<int> completed_spp_{0};
     std::atomic<std::int64_t> tiles_done_{0};
     std::atomic<std::uint64_t> rays_{0}, nonfinite_{0}, clamped_{0};
@@ -184,6 +215,7 @@ RenderResult render_with_planted_defect(const Scene& scene, const Accel& accel, 
     if (options.threads < 0) throw std::invalid_argument("render: threads must be >= 0");
     if (options.first_sample < 0 || options.first_sample > std::numeric_limits<int>::max() - options.spp)
         throw std::invalid_argument("render: first_sample must be >= 0 and first_sample + spp fit in an int");
+    if (!(options.time_budget >= 0.0)) throw std::invalid_argument("render: time_budget must be >= 0 seconds");
 
     const auto start = std::chrono::steady_clock::now();
     PassRenderer renderer(scene, accel, options, defect);
@@ -211,13 +243,13 @@ RenderResult render_with_planted_defect(const Scene& scene, const Accel& accel, 
             std::unique_lock lock(m);
             while (!cv.wait_for(lock, std::chrono::milliseconds(100), [&] { return done; })) {
                 lock.unlock();
-                options.progress(renderer.fraction_done());
+                options.progress(renderer.progress());
                 lock.lock();
             }
         }
         worker.join();
         if (error) std::rethrow_exception(error);
-        options.progress(renderer.fraction_done());
+        options.progress(renderer.progress());
     }
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return renderer.result(seconds);

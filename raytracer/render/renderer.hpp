@@ -9,6 +9,7 @@
 #include "raytracer/image/image.hpp"
 #include "raytracer/render/roulette.hpp"
 #include "raytracer/image/partial_sum.hpp"
+#include "raytracer/render/time_budget.hpp"
 #include "raytracer/scene/scene.hpp"
 
 namespace sweeptrace {
@@ -18,8 +19,16 @@ enum class Sampling {
     BsdfOnly,  // light found only by BSDF-sampled paths (the reference the MIS test compares to)
 };
 
+// What the progress callback sees.
+struct RenderProgress {
+    double fraction = 0.0;    // of the spp target or of the time budget, whichever is further
+    int completed_spp = 0;    // passes finished
+    double seconds = 0.0;     // elapsed on the budget's clock
+    double seconds_left = -1.0;  // of the time budget; negative without one
+};
+
 struct RenderOptions {
-    int spp = 16;
+    int spp = 16;  // with a time budget: the most passes to render
     // Renders sample indices [first_sample, first_sample + spp) of every pixel: the same samples,
     // from the same random streams, that a render from 0 draws for those indices (a farm part).
     int first_sample = 0;
@@ -29,16 +38,24 @@ struct RenderOptions {
     Sampling sampling = Sampling::NeeMis;
     SamplerKind sampler = SamplerKind::Sobol;  // callers copy scene.film.sampler here
     RoulettePolicy roulette = RoulettePolicy::adaptive();
+    // Path guiding (render/guiding_*.hpp): learned from whole passes, so the image stays the same
+    // for any thread count; unbiased, like the unguided render of the same scene.
+    bool guiding = false;
     const std::atomic<bool>* cancel = nullptr;  // set (e.g. by SIGINT) to stop early
-    // Called now and then from one thread with the fraction done in [0, 1].
-    std::function<void(double)> progress;
+    // Seconds (0 = none) after which the pass in flight is dropped and the render ends; the first
+    // pass always completes. Counted on budget_clock from the start of render().
+    double time_budget = 0.0;
+    BudgetClock budget_clock = BudgetClock::Wall;
+    // Called now and then from one thread.
+    std::function<void(const RenderProgress&)> progress;
 };
 
 struct RenderStats {
     double seconds = 0.0;
     std::uint64_t samples = 0;  // camera samples completed
     std::uint64_t rays = 0;     // every ray traced (camera, bounce, shadow)
-    bool cancelled = false;
+    bool cancelled = false;      // stopped by `cancel`
+    bool budget_spent = false;   // stopped by the time budget before reaching spp
     int completed_spp = 0;      // samples per pixel in the returned image
     // Samples whose radiance came out NaN or infinite, counted and replaced by black so one bad
     // path cannot poison a pixel; non-zero means a bug worth reporting.
@@ -65,8 +82,10 @@ struct RenderResult {
 // one sample per pixel; when `cancel` is set, the pass in flight is dropped, so every pixel of
 // the returned image holds the same completed_spp samples (0: a black image), and the image is
 // bit for bit the one a render with spp = completed_spp gives.
+// A time budget ends the render the same way (after at least one pass): the image is the one
+// spp = completed_spp gives.
 // Throws std::invalid_argument for a film smaller than 1x1, spp < 1, max_depth < 1, threads < 0,
-// first_sample < 0 or first_sample + spp beyond INT_MAX.
+// first_sample < 0 or first_sample + spp beyond INT_MAX, time_budget < 0.
 RenderResult render(const Scene& scene, const Accel& accel, const RenderOptions& options);
 
 }  // namespace sweeptrace

@@ -39,8 +39,13 @@ inline float survival_probability(const RoulettePolicy& p, int depth, float t) {
 
 // The roulette at vertex `depth` with uniform u: false when the path stops; otherwise `beta` is
 // divided by the survival probability. eta_scale: the product of eta^2 over the path's refractions.
-inline bool survives_roulette(const RoulettePolicy& p, int depth, float u, float eta_scale, glm::vec3& beta) {
-    const float t = max_component(p.undo_refraction_scale ? beta * eta_scale : beta);
+// guide_scale (>= 1): with path guiding, the ratio by which guided vertices' mixture densities
+// lowered the throughput below what BSDF sampling would have given; the path is judged by the
+// latter, so roulette does not end the guided paths that head for a light (any continuation
+// probability in (0, 1] stays unbiased).
+inline bool survives_roulette(const RoulettePolicy& p, int depth, float u, float eta_scale, glm::vec3& beta,
+                              float guide_scale = 1.0f) {
+    const float t = max_component(p.undo_refraction_scale ? beta * eta_scale : beta) * guide_scale;
     const float q = survival_probability(p, depth, t);
     if (!(u < q)) return false;
     beta /= q;

@@ -29,7 +29,7 @@ constexpr std::int64_t kMaxDepth = 1024;
 using scene_keys::parallel;
 
 Camera read_camera(const Node& node) {
-    node.require_object({"position", "look_at", "up", "fov", "aperture", "focus_distance"});
+    node.require_object({"position", "look_at", "up", "fov", "aperture", "focus_distance", "near_clip"});
     Camera camera;
     camera.position = node.at("position").vec3();
     camera.look_at = node.at("look_at").vec3();
@@ -46,11 +46,12 @@ Camera read_camera(const Node& node) {
     }
     if (auto aperture = node.find("aperture")) camera.aperture = aperture->number_at_least(0.0f, true);
     if (auto focus = node.find("focus_distance")) camera.focus_distance = focus->number_at_least(0.0f, false);
+    if (auto near = node.find("near_clip")) camera.near_clip = near->number_at_least(0.0f, true);
     return camera;
 }
 
 Film read_film(const Node& node) {
-    node.require_object({"width", "height", "spp", "max_depth", "sampler"});
+    node.require_object({"width", "height", "spp", "max_depth", "sampler", "guiding"});
     Film film;
     film.width = static_cast<int>(node.at("width").integer(1, kMaxImageSide));
     film.height = static_cast<int>(node.at("height").integer(1, kMaxImageSide));
@@ -62,6 +63,7 @@ Film read_film(const Node& node) {
         else if (name == "independent") film.sampler = SamplerKind::Independent;
         else sampler->fail("unknown sampler \"" + name + "\" (known: sobol, independent)");
     }
+    if (auto guiding = node.find("guiding")) film.guiding = guiding->boolean();
     return film;
 }
 

@@ -19,6 +19,9 @@ struct Camera {
     float vfov_degrees = 40.0f;
     float aperture = 0.0f;        // lens diameter; 0 = pinhole
     float focus_distance = 0.0f;  // 0 = distance from position to look_at
+    // Primary rays start on the plane this far ahead along the view axis (smallpt's camera sits
+    // outside the room and starts its rays 140 units ahead); 0 = at the eye.
+    float near_clip = 0.0f;
 };
 
 // Where a camera sample's numbers come from (render/sampler.hpp).
@@ -30,6 +33,7 @@ struct Film {
     int spp = 16;
     int max_depth = 8;  // path vertices after the camera; Russian roulette may stop earlier
     SamplerKind sampler = SamplerKind::Sobol;
+    bool guiding = false;  // path guiding by default (render --guiding overrides)
 };
 
 struct Background {

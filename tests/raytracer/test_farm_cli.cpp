@@ -144,6 +144,10 @@ TEST_CASE("farm cli: merge refuses other renders, overlaps and gaps, exit 2, not
     check_refused(dir, run(dir, "render scene.json --samples 4:10 -o new.exr"), "need 0 <= A < B <= spp (9");
     check_refused(dir, run(dir, "render scene.json --samples 4 -o new.exr"), "expected A:B");
     check_refused(dir, run(dir, "render scene.json --samples 0:4 -o final.png"), "an .exr file");
+    // A part is exactly its range of a whole render: no time budget, no guide trained on passes
+    // the part does not render.
+    check_refused(dir, run(dir, "render scene.json --samples 4:9 --time 5 -o new.exr"), "--samples and --time");
+    check_refused(dir, run(dir, "render scene.json --samples 4:9 --guiding on -o new.exr"), "--guiding off");
 }
 
 TEST_CASE("farm cli: --skip-existing keeps a verified part and redoes a damaged one", "[farm][cli]") {

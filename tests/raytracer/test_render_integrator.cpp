@@ -198,7 +198,8 @@ TEST_CASE("render: the image is identical bit for bit at 1, 2 and 3 threads, wit
     int calls = 0;
     double last = -1.0;
     bool monotone = true;
-    o.progress = [&](double f) {
+    o.progress = [&](const RenderProgress& p) {
+        const double f = p.fraction;
         monotone = monotone && f >= last && f <= 1.0;
         last = f;
         ++calls;

@@ -3,6 +3,7 @@
 
 #include <cmath>
 #include <set>
+#include <utility>
 
 #include <glm/geometric.hpp>
 
@@ -121,4 +122,22 @@ TEST_CASE("camera: thin lens rays through one film point meet on the focus plane
     const glm::vec3 pa = a.origin + a.dir * ((-3.0f - a.origin.z) / a.dir.z);
     const glm::vec3 pb = b.origin + b.dir * ((-3.0f - b.origin.z) / b.dir.z);
     CHECK(glm::length(pa - pb) < 1e-5f);
+}
+
+TEST_CASE("camera: near_clip starts every ray on the plane that far along the view axis", "[render][camera]") {
+    Camera c;
+    c.position = {50.0f, 52.0f, 295.6f};
+    c.look_at = {50.0f, 51.957388f, 294.6f};
+    c.near_clip = 140.0f;
+    const glm::vec3 forward = glm::normalize(c.look_at - c.position);
+    for (const float aperture : {0.0f, 0.5f}) {
+        c.aperture = aperture;
+        const CameraModel cam(c, 64, 48);
+        for (const auto& [x, y] : {std::pair{0.0f, 0.0f}, std::pair{32.0f, 24.0f}, std::pair{63.5f, 47.0f}}) {
+            const collision::Ray r = cam.generate(x, y, 0.3f, 0.7f);
+            CHECK(glm::dot(r.origin - c.position, forward) == Approx(140.0f).epsilon(1e-5));
+            const glm::vec3 eye_side = r.origin - 140.0f / glm::dot(r.dir, forward) * r.dir;  // back to the lens plane
+            CHECK(std::abs(glm::dot(eye_side - c.position, forward)) < 1e-3f);
+        }
+    }
 }

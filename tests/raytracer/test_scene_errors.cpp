@@ -144,6 +144,9 @@ TEST_CASE("scene errors: sizes, ranges and degenerate geometry", "[scene][errors
     CHECK_THAT(load_error(dir, scene_text(kSphere, kMaterials, R"({ "width": 8, "height": 6 })",
                                           R"({ "position": [0, 0, 0], "look_at": [0, 0, 0] })")),
                Catch::Contains("camera.look_at: must differ from camera.position"));
+    CHECK_THAT(load_error(dir, scene_text(kSphere, kMaterials, R"({ "width": 8, "height": 6 })",
+                                          R"({ "position": [0, 0, 5], "look_at": [0, 0, 0], "near_clip": -1 })")),
+               Catch::Contains("camera.near_clip: must be"));
     CHECK_THAT(load_error(dir, scene_text(kSphere, R"({ "m": { "type": "diffuse", "albedo": [0.5, 1.5, 0.5] } })")),
                Catch::Contains("materials.m.albedo[1]: must be in [0, 1], got 1.5"));
     CHECK_THAT(load_error(dir, scene_text(kSphere, R"({ "m": { "type": "metal", "roughness": -0.1 } })")),

@@ -66,6 +66,9 @@ TEST_CASE("scenes: smallpt is Beason's nine spheres", "[scene]") {
     CHECK(uses_material_type(scene, Material::Type::Metal));
     CHECK(uses_material_type(scene, Material::Type::Dielectric));
     for (const auto& o : scene.objects) CHECK(o.transform.identity);
+    CHECK(scene.camera.position == glm::vec3(50.0f, 52.0f, 295.6f));  // smallpt's own camera
+    CHECK(scene.camera.near_clip == 140.0f);
+    CHECK(std::tan(scene.camera.vfov_degrees * M_PI / 360.0) == Approx(0.5135 / 2).epsilon(1e-6));
 }
 
 TEST_CASE("scenes: the Cornell box has quad walls, a quad light and two rotated boxes", "[scene]") {

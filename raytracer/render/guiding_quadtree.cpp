@@ -1,0 +1,142 @@
+#include "raytracer/render/guiding_quadtree.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "raytracer/render/sampling.hpp"
+
+namespace sweeptrace {
+
+namespace {
+
+constexpr float kBelowOne = 0x1.fffffep-1f;  // the largest float below 1
+
+// Picks the half of [0, 1) holding `u` when the lower half has probability `p_low`, and
+// stretches u back over [0, 1) inside it (about one bit of u used per level, as a 2D warp does;
+// 24-bit uniforms leave ~17 bits inside a leaf at depth 7, far finer than any pixel resolves).
+bool pick_upper(float& u, float p_low) {
+    if (u < p_low) {
+        u = std::min(u / p_low, kBelowOne);
+        return false;
+    }
+    u = std::min((u - p_low) / (1.0f - p_low), kBelowOne);
+    return true;
+}
+
+}  // namespace
+
+glm::vec2 direction_to_square(const glm::vec3& dir) {
+    const float u = std::clamp(0.5f * (dir.z + 1.0f), 0.0f, 1.0f);
+    float v = std::atan2(dir.y, dir.x) * (0.5f * kInvPi);
+    if (v < 0.0f) v += 1.0f;
+    // Both ends at 1 are the same places as 0's neighbourhood, mapped into the last cell.
+    constexpr float kBelowOneF = 0x1.fffffep-1f;
+    return {std::min(u, kBelowOneF), std::min(v, kBelowOneF)};
+}
+
+glm::vec3 square_to_direction(const glm::vec2& p) {
+    const float z = 2.0f * p.x - 1.0f;
+    const float r = std::sqrt(std::max(0.0f, 1.0f - z * z));
+    const float phi = 2.0f * kPi * p.y;
+    return {r * std::cos(phi), r * std::sin(phi), z};
+}
+
+DirectionalQuadtree::DirectionalQuadtree() : nodes_(1), energy_(1) {}
+
+void DirectionalQuadtree::record(const glm::vec3& dir, float value) {
+    const glm::vec2 p = direction_to_square(dir);
+    double x = p.x, y = p.y;
+    std::uint32_t node = 0;
+    for (;;) {
+        const int xb = x >= 0.5 ? 1 : 0, yb = y >= 0.5 ? 1 : 0;
+        const int q = xb + 2 * yb;
+        energy_[node].e[q] += value;
+        const std::uint32_t next = nodes_[node].child[q];
+        if (next == 0) return;
+        x = 2.0 * x - xb;  // exact: scaling by 2 and subtracting 0 or 1
+        y = 2.0 * y - yb;
+        node = next;
+    }
+}
+
+double DirectionalQuadtree::total() const { return energy_[0].sum(); }
+
+void DirectionalQuadtree::freeze() {
+    for (std::size_t i = 0; i < nodes_.size(); ++i) {
+        const double sum = energy_[i].sum();
+        if (!(sum > 0.0)) continue;  // never reached: its parent's quadrant has no energy
+        for (int q = 0; q < 4; ++q) nodes_[i].factor[q] = static_cast<float>(4.0 * energy_[i].e[q] / sum);
+    }
+}
+
+glm::vec3 DirectionalQuadtree::sample(float u1, float u2) const {
+    float ux = u1, uy = u2;
+    float ox = 0.0f, oy = 0.0f, size = 1.0f;  // the cell: powers of two, exact in float
+    std::uint32_t node = 0;
+    for (;;) {
+        const Node& n = nodes_[node];
+        // The column by its share, then the quadrant within it; a column with no energy has
+        // share exactly 0, so it is never picked (and never divides by zero below).
+        const float left = n.factor[0] + n.factor[2], right = n.factor[1] + n.factor[3];
+        const int xb = pick_upper(ux, left / (left + right)) ? 1 : 0;
+        const int yb = pick_upper(uy, n.factor[xb] / (n.factor[xb] + n.factor[xb + 2])) ? 1 : 0;
+        size *= 0.5f;
+        ox += float(xb) * size;
+        oy += float(yb) * size;
+        const std::uint32_t next = n.child[xb + 2 * yb];
+        if (next == 0) break;
+        node = next;
+    }
+    return square_to_direction(glm::vec2(ox + ux * size, oy + uy * size));
+}
+
+float DirectionalQuadtree::pdf(const glm::vec3& dir) const {
+    const glm::vec2 p = direction_to_square(dir);
+    float x = p.x, y = p.y;
+    float density = 1.0f / (4.0f * kPi);  // on the sphere
+    std::uint32_t node = 0;
+    for (;;) {
+        const Node& n = nodes_[node];
+        const int xb = x >= 0.5f ? 1 : 0, yb = y >= 0.5f ? 1 : 0;
+        const int q = xb + 2 * yb;
+        density *= n.factor[q];
+        if (n.child[q] == 0 || density == 0.0f) return density;
+        x = 2.0f * x - float(xb);  // exact in float too
+        y = 2.0f * y - float(yb);
+        node = n.child[q];
+    }
+}
+
+DirectionalQuadtree DirectionalQuadtree::refined(double threshold, int max_depth) const {
+    DirectionalQuadtree out;
+    refine_into(out, 0, 0, energy_[0].e, total(), threshold, 1, max_depth);
+    return out;
+}
+
+void DirectionalQuadtree::refine_into(DirectionalQuadtree& out, std::uint32_t out_node, int old_node,
+                                      const double* energy, double total, double threshold, int depth,
+                                      int max_depth) const {
+    for (int q = 0; q < 4; ++q) {
+        if (!(total > 0.0) || energy[q] / total <= threshold || depth >= max_depth) continue;
+        const auto child = static_cast<std::uint32_t>(out.nodes_.size());
+        out.nodes_.emplace_back();
+        out.energy_.emplace_back();
+        out.nodes_[out_node].child[q] = child;
+        const int old_child = old_node >= 0 && nodes_[old_node].child[q] != 0 ? int(nodes_[old_node].child[q]) : -1;
+        double spread[4];
+        if (old_child >= 0) std::copy(energy_[old_child].e, energy_[old_child].e + 4, spread);
+        else std::fill(spread, spread + 4, 0.25 * energy[q]);
+        refine_into(out, child, old_child, spread, total, threshold, depth + 1, max_depth);
+    }
+}
+
+int DirectionalQuadtree::depth_below(std::uint32_t node) const {
+    int d = 0;
+    for (const std::uint32_t c : nodes_[node].child)
+        if (c != 0) d = std::max(d, depth_below(c));
+    return d + 1;
+}
+
+int DirectionalQuadtree::depth() const { return depth_below(0); }
+
+}  // namespace sweeptrace

@@ -1,0 +1,70 @@
+#pragma once
+// The directional half of path guiding (Müller, Gross, Novák 2017, "Practical Path Guiding",
+// §3.3): a distribution of incident radiance over the unit sphere, as a quadtree over the square
+// [0, 1)^2 that the cylindrical map takes to the sphere,
+//     (u, v) = ((cos theta + 1) / 2, phi / 2 pi),   theta, phi of the direction about world +z,
+// which preserves area (dA_sphere = 4 pi du dv), so a density on the square divided by 4 pi is
+// the density on the sphere. Each node holds the recorded energy of its four quadrants; a
+// quadrant is either a leaf or another node. Sampling descends choosing quadrants in proportion
+// to their energy and ends uniform inside a leaf; pdf() follows the same descent, so the density
+// it returns is the one sample() draws with (both read the same per-quadrant factors, which
+// freeze() computes once in float: equal up to float rounding).
+//
+// Quadrant order: index = x_bit + 2 y_bit, x_bit = (u >= mid), y_bit = (v >= mid).
+// A tree with zero energy has no distribution: callers check total() > 0 before sample/pdf.
+#include <cstdint>
+#include <vector>
+
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+
+namespace sweeptrace {
+
+// The equal-area cylindrical map and its inverse (unit direction <-> point of [0, 1)^2).
+glm::vec2 direction_to_square(const glm::vec3& dir);
+glm::vec3 square_to_direction(const glm::vec2& p);
+
+class DirectionalQuadtree {
+public:
+    DirectionalQuadtree();  // a root of four empty leaves
+
+    // Adds `value` (>= 0) to the leaf holding direction `dir` and to every quadrant above it.
+    void record(const glm::vec3& dir, float value);
+    double total() const;
+
+    // Computes the ratios sample() and pdf() read from the energies; call once recording is done.
+    void freeze();
+    // A direction drawn from the tree's distribution, from two uniforms in [0, 1).
+    // Requires total() > 0 and freeze().
+    glm::vec3 sample(float u1, float u2) const;
+    // Solid-angle density of sample() producing `dir`. Requires total() > 0 and freeze().
+    float pdf(const glm::vec3& dir) const;
+
+    // The structure for the next training iteration (PPG §3.4): a quadrant is a node when its
+    // share of this tree's energy exceeds `threshold` and it is shallower than `max_depth`
+    // (a leaf's energy counts as spread evenly over its would-be children); all energy zero.
+    DirectionalQuadtree refined(double threshold, int max_depth) const;
+
+    std::size_t node_count() const { return nodes_.size(); }
+    int depth() const;
+
+private:
+    // Hot and cold halves apart: a descent reads 32 bytes per level (half a cache line), and the
+    // energies are read only when recording and rebuilding.
+    struct Node {
+        std::uint32_t child[4] = {0, 0, 0, 0};  // 0: the quadrant is a leaf (node 0 is the root)
+        float factor[4] = {0.0f, 0.0f, 0.0f, 0.0f};  // from freeze(): 4 e_q / sum, the density factor
+    };
+    struct Energy {
+        double e[4] = {0.0, 0.0, 0.0, 0.0};
+        double sum() const { return e[0] + e[1] + e[2] + e[3]; }
+    };
+    void refine_into(DirectionalQuadtree& out, std::uint32_t out_node, int old_node, const double* energy,
+                     double total, double threshold, int depth, int max_depth) const;
+    int depth_below(std::uint32_t node) const;
+
+    std::vector<Node> nodes_;
+    std::vector<Energy> energy_;  // one per node
+};
+
+}  // namespace sweeptrace

@@ -1,0 +1,28 @@
+#include "raytracer/render/guiding_sampler.hpp"
+
+namespace sweeptrace {
+
+bool sample_guided(const Material& m, const ShadingContext& ctx, const DirectionalQuadtree& guide, float u_select,
+                   float u0, float u1, float u2, BsdfSample& out, float& bsdf_pdf) {
+    glm::vec3 wi;
+    if (u_select < kBsdfFraction) {
+        if (!sample_bsdf(m, ctx, u0, u1, u2, out)) return false;
+        if (out.delta) {  // not a guided lobe: the BSDF alone
+            bsdf_pdf = out.pdf;
+            return true;
+        }
+        wi = out.wi;
+    } else {
+        wi = guide.sample(u1, u2);
+    }
+    // One evaluation for both branches, so f and the BSDF density are the same expressions
+    // whichever strategy drew wi.
+    const BsdfEval e = eval_bsdf(m, ctx, wi);
+    if (!(e.pdf > 0.0f)) return false;
+    const float pdf = guided_pdf(guide, e.pdf, wi);
+    bsdf_pdf = e.pdf;
+    out = BsdfSample{wi, e.f_cos / pdf, pdf, false};
+    return true;
+}
+
+}  // namespace sweeptrace

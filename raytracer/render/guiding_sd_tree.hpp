@@ -1,0 +1,100 @@
+#pragma once
+// The spatial half of path guiding (Müller, Gross, Novák 2017, §3.2): a binary tree over a box
+// of space, split at the midpoint along x, y, z in turn, whose leaves each hold two directional
+// quadtrees: `sampling`, learned in the previous training iteration and read during a pass, and
+// `building`, filled with this iteration's records.
+//
+// Training (§3.4) runs in iterations of doubling length: iteration k spans 2^k passes of one
+// sample per pixel (passes 2^k - 1 .. 2^(k+1) - 2), for kTrainingIterations iterations; later
+// passes sample the last guide without recording. At its end, building becomes sampling; a
+// leaf that received more than kSplitRecords * sqrt(2^k) records splits (repeatedly, assuming its
+// records spread evenly) and its children start from copies of its quadtrees; each new building
+// quadtree takes the structure its sampling tree's energy asks for (quadrants holding more than
+// kQuadtreeThreshold of the energy subdivided, to depth kQuadtreeMaxDepth) with zero energy.
+// A leaf's guide is used only where most next-event samples of the iteration found no light
+// (kNeeMissShare): a choice of where to guide, so any rule keeps the estimator unbiased. Leaves
+// where NEE found the light only count records in the next iteration (no quadtree updates), so
+// they learn again, one iteration late, if that changes.
+//
+// Determinism: the tree changes only between passes, from records merged in a fixed order (the
+// renderer adds each tile's records in tile order, each tile's in pixel order), so the guide a
+// pass reads does not depend on the thread count. The box is the bounding box of the first
+// merged pass's records (min and max do not depend on order either), made a cube and enlarged a
+// little; points outside it fall into the nearest leaf.
+#include <cstdint>
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+#include "raytracer/render/guiding_quadtree.hpp"
+
+namespace sweeptrace {
+
+// One estimate of incident radiance at `point` from direction `dir`: radiance (mean of the
+// channels) divided by the density the direction was drawn with, so that records summed over a
+// quadrant estimate the radiance integrated over its solid angle.
+struct GuideRecord {
+    glm::vec3 point{0.0f};
+    glm::vec3 dir{0.0f};
+    float value = 0.0f;
+    std::uint32_t leaf = 0;  // leaf_of(point) in the tree of the pass that made the record
+    bool light_sample = false;  // from next event estimation (value 0: it found no light)
+};
+
+class GuidingSdTree {
+public:
+    static constexpr double kSplitRecords = 2000.0;   // c of PPG §3.4
+    static constexpr double kQuadtreeThreshold = 0.01;  // rho of PPG §3.4
+    static constexpr int kQuadtreeMaxDepth = 20;
+    // Training ends after this many iterations (2^k - 1 = 255 passes): recording and merging cost
+    // about as much as the guide saves on scenes next event estimation already handles, and the
+    // guide gains little from more records once its cells are fine.
+    static constexpr int kTrainingIterations = 8;
+    // A leaf guides only where next event estimation fails more often than this (its light
+    // samples blocked or on the wrong side): where NEE finds the light, BSDF sampling is
+    // already the right partner for it and the guide would only add its cost.
+    static constexpr double kNeeMissShare = 0.5;
+
+    // Adds one pass's records, batch by batch in order, to the building quadtrees (the first
+    // pass with records also fixes the box).
+    void add(const std::vector<std::vector<GuideRecord>>& batches);
+    // Call after each completed pass with the number of passes completed so far: at the end of
+    // an iteration, the building distribution becomes the sampling one and the tree is refined.
+    void end_pass(int completed_passes);
+
+    // The leaf holding `point` (valid until the next end_pass).
+    std::uint32_t leaf_of(const glm::vec3& point) const;
+    // The learned distribution of a leaf, or nullptr where nothing was learned yet.
+    const DirectionalQuadtree* guide_at(std::uint32_t leaf) const {
+        return leaves_[leaf].usable ? &leaves_[leaf].sampling : nullptr;
+    }
+    const DirectionalQuadtree* guide(const glm::vec3& point) const { return guide_at(leaf_of(point)); }
+
+    bool training() const { return iterations_done_ < kTrainingIterations; }
+    std::size_t leaf_count() const { return leaves_.size(); }
+    int iterations_done() const { return iterations_done_; }
+
+private:
+    struct Node {  // split along axis depth % 3 at the middle of its box
+        std::uint32_t child[2] = {0, 0};  // 0: a leaf (node 0 is the root)
+        std::uint32_t leaf = 0;           // index into leaves_ when a leaf
+    };
+    struct Leaf {
+        DirectionalQuadtree sampling, building;
+        std::uint64_t records = 0;  // in the building tree
+        std::uint64_t light_samples = 0, light_misses = 0;  // NEE records among them, and blank ones
+        bool usable = false;        // sampling has energy (and is frozen), and NEE misses here
+        bool learning = true;       // NEE missed here last iteration: fill `building`
+    };
+    void set_box(const std::vector<std::vector<GuideRecord>>& batches);
+    void end_iteration(int iteration);
+    void split(std::uint32_t node, double threshold);
+
+    glm::vec3 lo_{0.0f}, size_{0.0f};
+    bool has_box_ = false;
+    std::vector<Node> nodes_{Node{}};
+    std::vector<Leaf> leaves_{Leaf{}};
+    int iterations_done_ = 0;
+};
+
+}  // namespace sweeptrace

@@ -1,0 +1,220 @@
+// Path guiding: the directional quadtree's density integrates to 1 and is the one its sampling
+// draws with (exact sum and chi-square), the BSDF + guide mixture's weights are f cos / (the
+// density it sampled with), and guided renders are unbiased (they agree with unguided ones by the
+// block z-test) and the same bit for bit at any thread count.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <vector>
+
+#include <glm/geometric.hpp>
+
+#include "raytracer/image/diff.hpp"
+#include "raytracer/render/guiding_quadtree.hpp"
+#include "raytracer/render/guiding_sampler.hpp"
+#include "raytracer/render/guiding_sd_tree.hpp"
+#include "raytracer/render/random.hpp"
+#include "raytracer/render/renderer.hpp"
+#include "raytracer/render/sampling.hpp"
+#include "raytracer/scene/load_scene.hpp"
+#include "render_test_scenes.hpp"
+#include "render_test_stats.hpp"
+
+using namespace sweeptrace;
+using sweeptrace::test::DoublePrecisionAccel;
+using sweeptrace::test::z_bound;
+
+namespace {
+
+constexpr int kDepth = 7;  // the test tree's deepest leaves are 2^-7 wide on the square
+
+// A lobe around `axis` (cosine power) on top of a uniform floor: a distribution with detail.
+glm::vec3 lobe_direction(Rng& rng, const glm::vec3& axis) {
+    if (rng.uniform() < 0.2f) return uniform_sphere(rng.uniform(), rng.uniform());
+    const float cos_t = std::pow(rng.uniform(), 1.0f / 41.0f), phi = 2.0f * kPi * rng.uniform();
+    const float sin_t = std::sqrt(std::max(0.0f, 1.0f - cos_t * cos_t));
+    return Frame(axis).to_world({sin_t * std::cos(phi), sin_t * std::sin(phi), cos_t});
+}
+
+// A trained tree: records, refined structure, records again (four iterations, as in rendering).
+DirectionalQuadtree trained_tree() {
+    const glm::vec3 axis = glm::normalize(glm::vec3(0.3f, -0.5f, 0.8f));
+    Rng rng(5, 0, 0);
+    DirectionalQuadtree tree;
+    for (int iteration = 0; iteration < 4; ++iteration) {
+        if (iteration > 0) tree = tree.refined(0.01, kDepth);
+        for (int i = 0; i < 30000; ++i) tree.record(lobe_direction(rng, axis), 0.5f + rng.uniform());
+    }
+    tree.freeze();
+    return tree;
+}
+
+// The probability of each cell of an n x n grid of the square, from pdf() at the centres of the
+// finest cells (the density is constant on each of them, so the sum is exact up to rounding).
+std::vector<double> cell_probabilities(const DirectionalQuadtree& tree, int n) {
+    const int fine = 1 << kDepth, per = fine / n;
+    std::vector<double> p(static_cast<std::size_t>(n) * n, 0.0);
+    for (int j = 0; j < fine; ++j)
+        for (int i = 0; i < fine; ++i) {
+            const glm::vec2 centre((i + 0.5f) / fine, (j + 0.5f) / fine);
+            const double d = tree.pdf(square_to_direction(centre)) * 4.0 * M_PI / (double(fine) * fine);
+            p[static_cast<std::size_t>(j / per) * n + i / per] += d;
+        }
+    return p;
+}
+
+Scene smallpt(int width, int height) {
+    Scene s = load_scene(std::filesystem::path(SWEEPTRACE_SOURCE_DIR) / "scenes" / "smallpt.json");
+    s.film.width = width;
+    s.film.height = height;
+    return s;
+}
+
+bool same_bits(const Image& a, const Image& b) {
+    return a.width == b.width && a.height == b.height &&
+           std::memcmp(a.pixels.data(), b.pixels.data(), a.pixels.size() * sizeof(glm::vec3)) == 0;
+}
+
+}  // namespace
+
+TEST_CASE("guiding: the equal-area map round-trips and the quadtree's density integrates to 1", "[render][guiding]") {
+    Rng rng(1, 2, 3);
+    for (int i = 0; i < 1000; ++i) {
+        const glm::vec3 d = uniform_sphere(rng.uniform(), rng.uniform());
+        CHECK(glm::length(square_to_direction(direction_to_square(d)) - d) < 1e-5f);
+    }
+    const DirectionalQuadtree tree = trained_tree();
+    CHECK(tree.depth() >= 5);  // the lobe really refined the tree
+    CHECK(tree.node_count() > 20);
+    double sum = 0.0;
+    for (const double p : cell_probabilities(tree, 1 << kDepth)) sum += p;
+    CHECK(sum == Approx(1.0).epsilon(1e-5));
+}
+
+TEST_CASE("guiding: the quadtree samples the density pdf() states (chi-square on a 32x32 grid)", "[render][guiding]") {
+    const DirectionalQuadtree tree = trained_tree();
+    constexpr int kGrid = 32;
+    constexpr int kSamples = 400000;
+    const std::vector<double> p = cell_probabilities(tree, kGrid);
+    std::vector<int> count(p.size(), 0);
+    Rng rng(9, 9, 9);
+    double mc_integral = 0.0;  // E[1 / pdf] over samples = the measure of the support = 4 pi
+    for (int s = 0; s < kSamples; ++s) {
+        const glm::vec3 d = tree.sample(rng.uniform(), rng.uniform());
+        const glm::vec2 q = direction_to_square(d);
+        ++count[static_cast<std::size_t>(int(q.y * kGrid)) * kGrid + int(q.x * kGrid)];
+        mc_integral += 1.0 / tree.pdf(d);
+    }
+    double chi2 = 0.0;
+    int dof = -1, impossible = 0;
+    for (std::size_t c = 0; c < p.size(); ++c) {
+        const double expected = p[c] * kSamples;
+        if (expected <= 0.0) {
+            impossible += count[c];
+            continue;
+        }
+        chi2 += (count[c] - expected) * (count[c] - expected) / expected;
+        ++dof;
+    }
+    INFO("chi2 " << chi2 << " on " << dof << " degrees of freedom");
+    CHECK(impossible == 0);
+    CHECK(chi2 < dof + 6.0 * std::sqrt(2.0 * dof));  // about 6 sigma of the chi-square distribution
+    CHECK(mc_integral / kSamples == Approx(4.0 * M_PI).epsilon(0.02));
+}
+
+TEST_CASE("guiding: mixture samples weigh f cos / (the mixture's density): E[weight] = albedo", "[render][guiding]") {
+    const DirectionalQuadtree tree = trained_tree();
+    Material m = test::diffuse(glm::vec3(0.6f));
+    const glm::vec3 n = glm::normalize(glm::vec3(0.2f, 0.3f, 0.9f));
+    ShadingContext ctx{Frame(n), n, glm::vec3(0.0f), true};
+    ctx.wo_local = ctx.frame.to_local(glm::normalize(glm::vec3(0.5f, 0.1f, 0.7f)));
+    Rng rng(4, 4, 4);
+    test::Estimate weight, guided_share;
+    for (int s = 0; s < 200000; ++s) {
+        const float us = rng.uniform(), u0 = rng.uniform(), u1 = rng.uniform(), u2 = rng.uniform();
+        BsdfSample bs;
+        float bsdf_pdf = 0.0f;
+        const bool ok = sample_guided(m, ctx, tree, us, u0, u1, u2, bs, bsdf_pdf);
+        weight.add(ok ? bs.weight.g : 0.0);
+        guided_share.add(us >= kBsdfFraction && ok ? 1.0 : 0.0);
+        if (ok) {
+            const BsdfEval e = eval_bsdf(m, ctx, bs.wi);
+            CHECK(bs.pdf == Approx(guided_pdf(tree, e.pdf, bs.wi)));
+            CHECK(bsdf_pdf == Approx(e.pdf));
+        }
+    }
+    INFO("mean weight " << weight.mean << " +- " << weight.standard_error());
+    CHECK(std::abs(weight.mean - 0.6) < z_bound(1) * weight.standard_error());
+    CHECK(guided_share.mean > 0.1);  // the guide's samples took part (some fall below the surface)
+}
+
+TEST_CASE("guiding: the spatial tree learns only between passes and splits where records crowd", "[render][guiding]") {
+    GuidingSdTree sd;
+    CHECK(sd.guide(glm::vec3(0.0f)) == nullptr);
+    std::vector<GuideRecord> records;
+    Rng rng(2, 2, 2);
+    for (int i = 0; i < 60000; ++i)
+        records.push_back({glm::vec3(rng.uniform(), rng.uniform(), rng.uniform()), glm::vec3(0.0f, 0.0f, 1.0f), 1.0f});
+    sd.add({records});
+    CHECK(sd.guide(glm::vec3(0.5f)) == nullptr);  // nothing learned until the iteration ends
+    sd.end_pass(1);                                // iteration 0 (1 pass) ends
+    CHECK(sd.iterations_done() == 1);
+    CHECK(sd.leaf_count() >= 4);                   // 60000 records > 12000: split to <= 12000 each
+    const DirectionalQuadtree* g = sd.guide(glm::vec3(0.5f));
+    REQUIRE(g != nullptr);
+    // Learned: everything came from +z, so its quadrant (a quarter of the sphere) has it all.
+    CHECK(g->pdf(glm::vec3(0.0f, 0.0f, 1.0f)) == Approx(4.0 / (4.0 * M_PI)));
+    sd.end_pass(2);                                     // mid iteration 1: nothing changes
+    CHECK(sd.iterations_done() == 1);
+}
+
+TEST_CASE("guiding: a guided render is the same bit for bit on 1, 2 and 3 threads", "[render][guiding]") {
+    // smallpt: next event estimation misses there, so the leaves guide (not so in scenes whose
+    // light NEE finds, where guided and unguided renders are the same).
+    const Scene s = smallpt(24, 16);
+    const DoublePrecisionAccel accel(s);
+    RenderOptions o;
+    o.spp = 8;  // iterations of 1, 2 and 4 passes: the guide is rebuilt twice and used
+    o.seed = 11;
+    o.guiding = true;
+    o.threads = 1;
+    const RenderResult one = render(s, accel, o);
+    o.threads = 2;
+    const RenderResult two = render(s, accel, o);
+    o.threads = 3;
+    const RenderResult three = render(s, accel, o);
+    CHECK(same_bits(one.image, two.image));
+    CHECK(same_bits(one.image, three.image));
+    o.guiding = false;
+    CHECK_FALSE(same_bits(one.image, render(s, accel, o).image));  // guiding changed the paths
+    const Scene lit = test::two_light_scene(24, 16);  // NEE finds both lights: nothing is guided
+    const DoublePrecisionAccel lit_accel(lit);
+    const RenderResult plain = render(lit, lit_accel, o);
+    o.guiding = true;
+    CHECK(same_bits(plain.image, render(lit, lit_accel, o).image));
+}
+
+TEST_CASE("guiding: guided and unguided renders of smallpt agree within the variance bound", "[render][guiding]") {
+    const Scene scene = smallpt(32, 24);
+    const DoublePrecisionAccel accel(scene);
+    RenderOptions o;
+    o.spp = 128;
+    o.max_depth = 6;
+    o.seed = 31;
+    o.guiding = true;
+    const RenderResult guided = render(scene, accel, o);
+    o.guiding = false;
+    o.seed = 32;
+    const RenderResult plain = render(scene, accel, o);
+    Image variance(scene.film.width, scene.film.height);
+    for (std::size_t i = 0; i < variance.pixels.size(); ++i)
+        variance.pixels[i] = guided.variance.pixels[i] + plain.variance.pixels[i];
+    BlockTestOptions options;
+    options.block = 4;
+    options.golden_is_8bit = false;
+    const BlockTestResult t = block_test(plain.image, guided.image, variance, options);
+    INFO(t.summary());
+    CHECK(t.pass());
+}

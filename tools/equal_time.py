@@ -1,0 +1,202 @@
+#!/usr/bin/python3
+"""Equal-time image error, guided against unguided (issue #10).
+
+For each scene: a converged unguided reference (two independent halves of --ref-spp / 2 spp
+each, cached in BUILD/equal-time/), then `sweeptrace render --time T --time-clock cpu` for each T,
+with --guiding on and off, and the RMSE of each against the reference:
+  - linear: sqrt(mean over pixels and channels of (render - reference)^2), and the same with the
+    reference's own noise taken out (MSE - Var(reference), Var from the two halves: E[(a-b)^2]/4);
+  - display: both clamped to [0, 1] and raised to 1/2.2 (the way smallpt shows an image).
+T is CPU time of all the render's threads (the renderer's ProcessCpu budget clock), so the
+figures do not grow while other processes share the machine. The unbiasedness check: a block
+z-test of the longest guided render (two seeds) against the reference (two halves), each side's
+noise from its own halves (see z_test).
+
+Writes docs/equal-time.md (table) and docs/equal-time.png (log-log error against time).
+Usage: /usr/bin/python3 tools/equal_time.py [--build build] [--times 0.5,1,2,4,8] [--threads 2]
+"""
+import argparse
+import os
+import re
+import subprocess
+import sys
+
+import numpy as np
+
+# Reduced sizes (the machine is shared); reference spp per scene (two halves of half as many).
+SCENES = [("smallpt", 128, 96, 8192), ("cornell-box", 96, 96, 4096), ("default", 128, 72, 4096)]
+
+
+def read_pfm(path):
+    with open(path, "rb") as f:
+        if f.readline().strip() != b"PF":
+            raise SystemExit(f"equal_time: {path}: not a colour PFM")
+        w, h = (int(v) for v in f.readline().split())
+        scale = float(f.readline())
+        data = np.fromfile(f, dtype="<f4" if scale < 0 else ">f4")
+    return data.reshape(h, w, 3)[::-1].astype(np.float64)
+
+
+def render(binary, scene, w, h, out, extra):
+    cmd = [binary, "render", scene, "--width", str(w), "--height", str(h), "-o", out] + extra
+    res = subprocess.run(cmd, stderr=subprocess.PIPE, text=True)
+    if res.returncode != 0:
+        raise SystemExit(f"equal_time: {' '.join(cmd)} failed:\n{res.stderr}")
+    m = re.search(r"\d+x\d+, (\d+) spp", res.stderr)  # the summary line, not the progress lines
+    return int(m.group(1)) if m else None
+
+
+def reference(args, name, w, h, ref_spp):
+    cache = os.path.join(args.build, "equal-time")
+    os.makedirs(cache, exist_ok=True)
+    halves = []
+    for half, seed in (("a", 1001), ("b", 1002)):
+        path = os.path.join(cache, f"ref-{name}-{w}x{h}-{ref_spp // 2}spp-{half}.pfm")
+        if not os.path.exists(path):
+            print(f"equal_time: rendering reference {path}", file=sys.stderr)
+            tmp = path + ".tmp.pfm"
+            render(args.binary, f"scenes/{name}.json", w, h, tmp,
+                   ["--spp", str(ref_spp // 2), "--seed", str(seed), "--guiding", "off",
+                    "--threads", str(args.threads), "--quiet"])
+            os.replace(tmp, path)
+        halves.append(read_pfm(path))
+    a, b = halves
+    ref = 0.5 * (a + b)
+    ref_var = float(np.mean((a - b) ** 2) / 4.0)  # mean per-pixel variance of the reference
+    return ref, ref_var, halves
+
+
+def errors(img, ref, ref_var):
+    mse = float(np.mean((img - ref) ** 2))
+    disp = lambda x: np.clip(x, 0.0, 1.0) ** (1.0 / 2.2)
+    return {"rmse": mse ** 0.5, "rmse_net": max(mse - ref_var, 0.0) ** 0.5,
+            "rmse_display": float(np.mean((disp(img) - disp(ref)) ** 2)) ** 0.5}
+
+
+def z_test(g1, g2, r1, r2, block=8, false_alarm=1e-4):
+    """Block z-test of the guided mean (two seeds) against the reference mean (its two halves):
+    per 8x8 block and channel, z = (mean_g - mean_r) / sqrt(Var_g + Var_r), each side's variance
+    of its pixel means estimated from its two independent halves ((a - b)^2 / 4 per pixel, pooled
+    over the block: pixels are independent). Limit: two-sided normal quantile, Bonferroni over all
+    blocks and channels at family-wise false alarm 1e-4 (the image tests' rate)."""
+    from statistics import NormalDist
+    h, w, _ = g1.shape
+    hb, wb = h // block, w // block
+    def pooled(a, b):
+        m = 0.5 * (a + b)[: hb * block, : wb * block]
+        v = ((a - b) ** 2 / 4.0)[: hb * block, : wb * block]
+        shape = (hb, block, wb, block, 3)
+        return m.reshape(shape).mean(axis=(1, 3)), v.reshape(shape).sum(axis=(1, 3)) / block ** 4
+    mg, vg = pooled(g1, g2)
+    mr, vr = pooled(r1, r2)
+    sigma = np.sqrt(vg + vr)
+    z = np.where(sigma > 0, np.abs(mg - mr) / np.where(sigma > 0, sigma, 1), np.where(mg == mr, 0.0, np.inf))
+    limit = NormalDist().inv_cdf(1 - false_alarm / (2 * z.size))
+    k = np.unravel_index(np.argmax(z), z.shape)
+    verdict = "pass" if z.max() <= limit else "FAIL"
+    return (f"max z {z.max():.2f} (limit {limit:.2f}, {verdict}) at block ({k[1]}, {k[0]}) channel {'RGB'[k[2]]}; "
+            f"{int((z > limit).any(axis=2).sum())} of {hb * wb} blocks over")
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("--build", default="build")
+    ap.add_argument("--times", default="0.5,1,2,4,8")
+    ap.add_argument("--threads", type=int, default=2)
+    ap.add_argument("--scenes", default=",".join(s[0] for s in SCENES))
+    ap.add_argument("--docs", default="docs")
+    ap.add_argument("--reuse", action="store_true",
+                    help="reuse timed renders already in BUILD/equal-time (same binary only: the spp is re-read)")
+    args = ap.parse_args()
+    args.binary = os.path.join(args.build, "sweeptrace")
+    times = [float(t) for t in args.times.split(",")]
+    work = os.path.join(args.build, "equal-time")
+    rows, z_lines = [], []
+    for name, w, h, ref_spp in SCENES:
+        if name not in args.scenes.split(","):
+            continue
+        ref, ref_var, halves = reference(args, name, w, h, ref_spp)
+        for t in times:
+            for mode in ("off", "on"):
+                out = os.path.join(work, f"{name}-{mode}-{t:g}.pfm")
+                spp_file = out + ".spp"
+                if args.reuse and os.path.exists(out) and os.path.exists(spp_file):
+                    spp = int(open(spp_file).read())
+                else:
+                    spp = render(args.binary, f"scenes/{name}.json", w, h, out,
+                                 ["--time", str(t), "--time-clock", "cpu", "--guiding", mode, "--seed", "7",
+                                  "--threads", str(args.threads)])
+                    with open(spp_file, "w") as f:
+                        f.write(str(spp))
+                e = errors(read_pfm(out), ref, ref_var)
+                rows.append(dict(scene=name, size=f"{w}x{h}", ref_spp=ref_spp, t=t, guiding=mode, spp=spp, **e))
+                print(f"{name} T={t:g} guiding {mode}: {spp} spp, RMSE {e['rmse']:.5f} "
+                      f"(net {e['rmse_net']:.5f}), display {e['rmse_display']:.5f}", file=sys.stderr)
+        t = times[-1]
+        second = os.path.join(work, f"{name}-on-{t:g}-seed8.pfm")
+        if not (args.reuse and os.path.exists(second)):
+            render(args.binary, f"scenes/{name}.json", w, h, second,
+                   ["--time", str(t), "--time-clock", "cpu", "--guiding", "on", "--seed", "8",
+                    "--threads", str(args.threads), "--quiet"])
+        z_lines.append((name, z_test(read_pfm(os.path.join(work, f"{name}-on-{t:g}.pfm")), read_pfm(second), *halves)))
+    write_docs(args, rows, z_lines, times)
+
+
+def write_pfm(path, img):
+    h, w, _ = img.shape
+    with open(path, "wb") as f:
+        f.write(f"PF\n{w} {h}\n-1.0\n".encode())
+        img[::-1].astype("<f4").tofile(f)
+
+
+def write_docs(args, rows, z_lines, times):
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    order = [s[0] for s in SCENES]
+    scenes = sorted({r["scene"] for r in rows}, key=order.index)
+    md = ["# Equal-time error: path guiding on and off", "",
+          "Generated by `/usr/bin/python3 tools/equal_time.py " + " ".join(sys.argv[1:]) + "`.",
+          f"T is CPU seconds of all {args.threads} render threads (`--time T --time-clock cpu`); the reference "
+          "is unguided, at the spp of the table (two halves of half as many, seeds 1001/1002). "
+          "RMSE linear: against the reference; net: with the reference's own noise subtracted; "
+          "display: clamp to [0, 1], gamma 1/2.2. Ratio = guided / unguided at the same T.", "",
+          "| scene | size | T (CPU s) | spp off | spp on | RMSE off | RMSE on | ratio | net off | net on | net ratio "
+          "| display off | display on | display ratio |",
+          "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
+    for s in scenes:
+        for t in times:
+            off = next(r for r in rows if r["scene"] == s and r["t"] == t and r["guiding"] == "off")
+            on = next(r for r in rows if r["scene"] == s and r["t"] == t and r["guiding"] == "on")
+            ratio = lambda k: on[k] / off[k] if off[k] > 0 else float("nan")
+            md.append(f"| {s} | {off['size']} | {t:g} | {off['spp']} | {on['spp']} | {off['rmse']:.4g} | "
+                      f"{on['rmse']:.4g} | {ratio('rmse'):.3f} | {off['rmse_net']:.4g} | {on['rmse_net']:.4g} | "
+                      f"{ratio('rmse_net'):.3f} | {off['rmse_display']:.4g} | {on['rmse_display']:.4g} | "
+                      f"{ratio('rmse_display'):.3f} |")
+    md += ["", "References: " + ", ".join(f"{s[0]} {s[1]}x{s[2]} {s[3]} spp" for s in SCENES if s[0] in scenes) + ".",
+           "", f"Unbiasedness: block z-test (8x8 blocks, linear) of the mean of two guided T = {times[-1]:g} renders "
+           "(seeds 7 and 8) against the reference (its two halves), each side's noise estimated from its two "
+           "independent halves, limit by Bonferroni at family-wise false alarm 1e-4:", ""]
+    md += [f"- {s}: {line}" for s, line in z_lines]
+    with open(os.path.join(args.docs, "equal-time.md"), "w") as f:
+        f.write("\n".join(md) + "\n")
+
+    fig, axes = plt.subplots(2, len(scenes), figsize=(4.2 * len(scenes), 7), squeeze=False)
+    for i, s in enumerate(scenes):
+        for j, (key, label) in enumerate((("rmse", "linear RMSE"), ("rmse_display", "display RMSE (gamma 1/2.2)"))):
+            ax = axes[j][i]
+            for mode, style in (("off", "o-"), ("on", "s-")):
+                pts = [(r["t"], r[key]) for r in rows if r["scene"] == s and r["guiding"] == mode]
+                ax.loglog(*zip(*pts), style, label=f"guiding {mode}")
+            ax.set_title(f"{s} ({next(r['size'] for r in rows if r['scene'] == s)})")
+            ax.set_xlabel("CPU seconds")
+            ax.set_ylabel(label)
+            ax.grid(True, which="both", alpha=0.3)
+            ax.legend()
+    fig.tight_layout()
+    fig.savefig(os.path.join(args.docs, "equal-time.png"), dpi=100)
+
+
+if __name__ == "__main__":
+    main()
