@@ -26,7 +26,7 @@
 
 namespace sweeptrace {
 
-template <class... Homes>
+template <ShapeHome... Homes>
 struct ShapeTable {
     using Variant = std::variant<typename Homes::Geometry...>;
 

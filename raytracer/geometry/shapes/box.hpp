@@ -1,16 +1,10 @@
 #pragma once
 // The box's home in the renderer: scene keys, object-space bounds, light sampling.
 // Intersection: collision/intersect_aabb.cpp.
-#include <array>
 #include <string>
-#include <string_view>
-#include <vector>
 
-#include "collision/bounds3.hpp"
-#include "collision/shapes.hpp"
 #include "raytracer/geometry/shapes/mesh_instance.hpp"
-#include "raytracer/geometry/shapes/scene_keys.hpp"
-#include "raytracer/geometry/shapes/shape_light.hpp"
+#include "raytracer/geometry/shapes/shape_home.hpp"
 
 namespace sweeptrace {
 

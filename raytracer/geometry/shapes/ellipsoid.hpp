@@ -1,15 +1,8 @@
 #pragma once
 // The ellipsoid's home in the renderer: scene keys, object-space bounds, light sampling.
 // Intersection: collision/intersect_ellipsoid.cpp.
-#include <array>
-#include <string_view>
-#include <vector>
-
-#include "collision/bounds3.hpp"
-#include "collision/shapes.hpp"
 #include "raytracer/geometry/shapes/mesh_instance.hpp"
-#include "raytracer/geometry/shapes/scene_keys.hpp"
-#include "raytracer/geometry/shapes/shape_light.hpp"
+#include "raytracer/geometry/shapes/shape_home.hpp"
 
 namespace sweeptrace {
 

@@ -13,7 +13,7 @@
 
 #include "collision/bounds3.hpp"
 #include "collision/mesh.hpp"
-#include "raytracer/geometry/shapes/shape_light.hpp"
+#include "raytracer/geometry/shapes/shape_home.hpp"
 
 namespace sweeptrace {
 

@@ -1,17 +1,8 @@
 #pragma once
 // The quad's home in the renderer: scene keys, object-space bounds, light sampling.
 // Intersection: collision/intersect_quad.cpp.
-#include <array>
-#include <string_view>
-#include <vector>
-
-#include "collision/bounds3.hpp"
-#include "collision/float_error.hpp"
-#include "collision/shapes.hpp"
 #include "raytracer/geometry/shapes/mesh_instance.hpp"
-#include "raytracer/geometry/shapes/scene_keys.hpp"
-#include "raytracer/geometry/shapes/shape_light.hpp"
-#include "raytracer/geometry/warps.hpp"
+#include "raytracer/geometry/shapes/shape_home.hpp"
 
 namespace sweeptrace {
 
