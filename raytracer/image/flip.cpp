@@ -122,25 +122,28 @@ std::vector<glm::dvec3> linear_pixels(const Image& image, double scale, bool ton
     std::vector<glm::dvec3> out(image.pixels.size());
     for (std::size_t i = 0; i < out.size(); ++i) {
         glm::dvec3 p(image.pixels[i]);
-        for (int c = 0; c < 3; ++c) {
+        for (int c = 0; c < 3; ++c)
             if (!std::isfinite(p[c])) p[c] = 0.0;
-            if (tone_map) p[c] = flip_detail::tone_map(scale * p[c], tm);
-        }
+        if (tone_map) p = flip_detail::tone_map(scale * p, tm);
         out[i] = glm::clamp(p, 0.0, 1.0);
     }
     return out;
 }
 
-// The smallest error e with sum(errors <= e) >= share * sum(errors); `sorted` ascending.
+// The first error e of `sorted` (ascending) at which the running sum exceeds share * total. Strictly
+// exceeds, as FLIP's tool pools: with errors (0.25, 0.25, 0.5) the weighted median is 0.5, not 0.25.
 double weighted_percentile(const std::vector<float>& sorted, double total, double share) {
-    if (total <= 0.0) return 0.0;
     double running = 0.0;
     for (float e : sorted) {
         running += e;
-        if (running >= share * total) return e;
+        if (running > share * total) return e;
     }
-    return sorted.empty() ? 0.0 : sorted.back();
+    return 0.0;  // all errors 0 (FLIP's tool returns 0 then too)
 }
+
+}  // namespace
+
+namespace flip_detail {
 
 void pool(FlipResult& r) {
     double total = 0.0;
@@ -159,6 +162,10 @@ void pool(FlipResult& r) {
     r.weighted_median = weighted_percentile(sorted, total, 0.5);
     r.weighted_third_quartile = weighted_percentile(sorted, total, 0.75);
 }
+
+}  // namespace flip_detail
+
+namespace {
 
 // t(x) = (k0 x^2 + k1 x + k2) / (k3 x^2 + k4 x + k5)
 struct Rational {
@@ -185,6 +192,14 @@ double tone_map(double x, FlipToneMapper tm) {
     const Rational t = tone_curve(tm);
     return (t.k[0] * x * x + t.k[1] * x + t.k[2]) / (t.k[3] * x * x + t.k[4] * x + t.k[5]);
 }
+
+glm::dvec3 tone_map(const glm::dvec3& rgb, FlipToneMapper tm) {
+    // Reinhard scales the whole pixel by its luminance's curve, so hue is kept; on grey both agree.
+    if (tm == FlipToneMapper::Reinhard) return rgb / (1.0 + luminance(rgb));
+    return {tone_map(rgb.x, tm), tone_map(rgb.y, tm), tone_map(rgb.z, tm)};
+}
+
+double luminance(const glm::dvec3& rgb) { return 0.2126 * rgb.x + 0.7152 * rgb.y + 0.0722 * rgb.z; }
 
 double color_error(const glm::dvec3& reference_rgb, const glm::dvec3& test_rgb) {
     using namespace flip_color;
@@ -244,21 +259,21 @@ std::vector<double> feature_error(const std::vector<double>& reference_y, const 
 }
 
 void automatic_exposures(const Image& reference, FlipToneMapper tm, double& start, double& stop) {
-    std::vector<double> luminance;
-    luminance.reserve(reference.pixels.size());
+    std::vector<double> luminances;
+    luminances.reserve(reference.pixels.size());
     double largest = 0.0;
     for (const glm::vec3& p : reference.pixels) {
-        double y = flip_color::linear_rgb_to_xyz(glm::dvec3(p)).y;
+        double y = luminance(glm::dvec3(p));
         if (!std::isfinite(y)) y = 0.0;
-        luminance.push_back(y);
+        luminances.push_back(y);
         largest = std::max(largest, y);
     }
-    auto mid = luminance.begin() + static_cast<std::ptrdiff_t>(luminance.size() / 2);
-    std::nth_element(luminance.begin(), mid, luminance.end());
-    double median = luminance.empty() ? 0.0 : *mid;
+    auto mid = luminances.begin() + static_cast<std::ptrdiff_t>(luminances.size() / 2);
+    std::nth_element(luminances.begin(), mid, luminances.end());
+    double median = luminances.empty() ? 0.0 : *mid;
     if (!(median > 0.0)) {  // more than half black: the median of the lit pixels instead (docs/flip.md)
         std::vector<double> lit;
-        for (double y : luminance)
+        for (double y : luminances)
             if (y > 0.0) lit.push_back(y);
         auto m = lit.begin() + static_cast<std::ptrdiff_t>(lit.size() / 2);
         if (!lit.empty()) std::nth_element(lit.begin(), m, lit.end());
@@ -285,7 +300,7 @@ FlipResult flip(const Image& reference, const Image& test, const FlipOptions& op
     if (!options.hdr) {
         r.error = ldr_flip_map(linear_pixels(reference, 1.0, false, options.tone_mapper),
                                linear_pixels(test, 1.0, false, options.tone_mapper), r.width, r.height, ppd);
-        pool(r);
+        flip_detail::pool(r);
         return r;
     }
     double start = 0.0, stop = 0.0;
@@ -306,7 +321,7 @@ FlipResult flip(const Image& reference, const Image& test, const FlipOptions& op
                          linear_pixels(test, scale, true, options.tone_mapper), r.width, r.height, ppd);
         for (std::size_t p = 0; p < map.size(); ++p) r.error[p] = std::max(r.error[p], map[p]);
     }
-    pool(r);
+    flip_detail::pool(r);
     return r;
 }
 

@@ -12,10 +12,14 @@
 // tone mapped (ACES fit by default), clamped, compared by LDR-FLIP, and the per-pixel maximum kept.
 // Borders: every filter clamps coordinates to the image (edge pixels repeat).
 // Accuracy: evaluated in double; the pipeline has no iterative step, so the result is within
-// a few ulp of float of the formulas (FLIP's own implementation computes in float: expect
-// agreement to ~1e-6 per pixel away from the remap's knee).
+// a few ulp of float of the formulas. FLIP's own implementation computes in float: the same
+// formulas run in float32 differed from double by up to 7e-5 per pixel and 5e-7 on the mean on
+// the project's 128-px goldens (docs/flip.md, "Checked against the reference implementation").
 #include <limits>
+#include <numbers>
 #include <vector>
+
+#include <glm/vec3.hpp>
 
 #include "raytracer/image/image.hpp"
 
@@ -23,13 +27,14 @@ namespace sweeptrace {
 
 enum class FlipToneMapper {
     Aces,      // Narkowicz's fit of ACES with FLIP's 0.6 input scale (HDR-FLIP's default)
-    Reinhard,  // x / (1 + x)
+    Reinhard,  // c / (1 + L): every channel divided by 1 + the pixel's luminance L (hue kept)
 };
 
 struct FlipOptions {
-    // Pixels per degree of visual angle. 67 is the paper's default: a 0.7 m wide 3840-pixel
-    // monitor seen from 0.7 m.
-    double pixels_per_degree = 67.0;
+    // Pixels per degree of visual angle for the paper's viewing setup, a 0.7 m wide 3840-pixel
+    // monitor seen from 0.7 m: 0.7 (3840 / 0.7) pi / 180 = 67.0206. The paper rounds it to 67;
+    // FLIP's reference tool uses the unrounded value, and so does this default.
+    double pixels_per_degree = 0.7 * (3840.0 / 0.7) * std::numbers::pi / 180.0;
     bool hdr = false;
     FlipToneMapper tone_mapper = FlipToneMapper::Aces;
     // HDR: exposure range in stops; NaN = from the reference as HDR-FLIP computes it.
@@ -42,8 +47,8 @@ struct FlipResult {
     int width = 0, height = 0;
     std::vector<float> error;  // per pixel, row-major, in [0, 1]
     double mean = 0.0;
-    // Weighted by the error itself (FLIP's pooling): the smallest error value e such that the
-    // pixels with error <= e carry at least the given share of the total error.
+    // Weighted by the error itself (FLIP's pooling): over the errors sorted ascending, the first e
+    // at which the running sum exceeds (strictly) the given share of the total error.
     double weighted_median = 0.0, weighted_first_quartile = 0.0, weighted_third_quartile = 0.0;
     double max = 0.0;
     int max_x = 0, max_y = 0;
@@ -79,7 +84,15 @@ FeatureKernels feature_kernels(double pixels_per_degree);
 
 // HDR-FLIP's exposure range from the reference's luminance (see docs/flip.md).
 void automatic_exposures(const Image& reference, FlipToneMapper tone_mapper, double& start, double& stop);
+// The tone curve t(x) on a grey value x (both mappers), from which the exposure range is solved.
 double tone_map(double x, FlipToneMapper tone_mapper);
+// The tone mapper on a linear RGB pixel: ACES per channel, Reinhard through the pixel's luminance.
+glm::dvec3 tone_map(const glm::dvec3& rgb, FlipToneMapper tone_mapper);
+// HDR-FLIP's luminance, the Rec. 709 weights at four digits (0.2126, 0.7152, 0.0722).
+double luminance(const glm::dvec3& rgb);
+
+// Mean, weighted percentiles and maximum of r.error (r.width set), as FlipResult describes them.
+void pool(FlipResult& r);
 
 }  // namespace flip_detail
 }  // namespace sweeptrace

@@ -220,3 +220,142 @@ TEST_CASE("FLIP: mismatched sizes and a bad viewing distance are input errors", 
     bad.pixels_per_degree = 0.0;
     CHECK_THROWS_AS(flip(flat(4, 4, glm::vec3(0)), flat(4, 4, glm::vec3(0)), bad), InputError);
 }
+
+// The checks below came from reading NVIDIA's reference implementation (NVlabs/flip v1.6, FLIP.h and
+// tool/pooling.h) beside the papers; each expected value is derived by hand in its comment.
+
+TEST_CASE("FLIP: the default viewing distance is the paper's setup, unrounded", "[image][flip]") {
+    // 0.7 m from a 0.7 m wide 3840-pixel monitor: 0.7 * (3840 / 0.7) * pi / 180 = 3840 pi / 180
+    // = 67.0206 px per degree (the paper prints 67; the reference tool uses this value).
+    const FlipOptions defaults;
+    CHECK(defaults.pixels_per_degree == Approx(67.02064327658225).epsilon(1e-14));
+    // Its filters: CSF radius ceil(3 sqrt(0.04 / (2 pi^2)) 67.02) = ceil(9.05) = 10 is internal;
+    // the feature radius ceil(3 * 0.5 * 0.082 * 67.02) = ceil(8.24) = 9.
+    CHECK(flip_detail::feature_kernels(defaults.pixels_per_degree).radius == 9);
+}
+
+TEST_CASE("FLIP pooling: weighted percentiles take the first error whose running sum exceeds the share",
+          "[image][flip]") {
+    // Errors (0.25, 0.25, 0.5), total 1. Running sums 0.25, 0.5, 1. Median: 0.5 does not exceed
+    // 0.5, so the median is the third value, 0.5 (a ">=" rule would give 0.25). First quartile:
+    // 0.25 does not exceed 0.25, 0.5 does: 0.25. Third quartile: 1 > 0.75 first: 0.5.
+    FlipResult r;
+    r.width = 3;
+    r.height = 1;
+    r.error = {0.5f, 0.25f, 0.25f};
+    flip_detail::pool(r);
+    CHECK(r.mean == Approx(1.0 / 3.0).epsilon(1e-12));
+    CHECK(r.weighted_median == 0.5);
+    CHECK(r.weighted_first_quartile == 0.25);
+    CHECK(r.weighted_third_quartile == 0.5);
+    CHECK(r.max == 0.5);
+    CHECK(r.max_x == 0);
+    FlipResult zero;
+    zero.width = 2;
+    zero.height = 1;
+    zero.error = {0.0f, 0.0f};
+    flip_detail::pool(zero);
+    CHECK(zero.weighted_median == 0.0);
+}
+
+TEST_CASE("FLIP: a one-pixel pair is its colour term, by hand through the whole colour pipeline",
+          "[image][flip]") {
+    // One pixel: every filter tap repeats it (borders clamp), the CSF kernels sum to 1 and the
+    // feature kernels see no change, so FLIP = the remapped colour error of the two colours.
+    // Reference (0.8, 0.3, 0.1): XYZ (0.455232, 0.391882, 0.146261), Lab (68.8874, 25.3140, 43.9316),
+    // Hunt (x 0.688874) a*b* = (17.4382, 30.2634). Test (0.1, 0.5, 0.7): XYZ (0.346350, 0.429381,
+    // 0.726792), Lab (71.5130, -20.0738, -23.9006), Hunt (-14.3554, -17.0920).
+    // HyAB = 2.62556 + hypot(31.7935, 47.3554) = 59.66377; ^0.7 = 17.49837.
+    // c_max = 41.27610, p_c c_max = 16.51044: above the knee, so
+    // 0.95 + (17.49837 - 16.51044) / (41.27610 - 16.51044) * 0.05 = 0.951995.
+    Image a(1, 1), b(1, 1);
+    a.pixels[0] = {0.8f, 0.3f, 0.1f};
+    b.pixels[0] = {0.1f, 0.5f, 0.7f};
+    const FlipResult r = flip(a, b);
+    CHECK(r.mean == Approx(0.9519945).margin(2e-6));
+    CHECK(r.weighted_median == Approx(r.mean).margin(1e-7));
+}
+
+TEST_CASE("HDR-FLIP: a one-pixel pair, by hand through the exposure range and the ACES curve",
+          "[image][flip]") {
+    // Reference (4, 2, 1): luminance 0.2126*4 + 0.7152*2 + 0.0722 = 2.353, both its maximum and its
+    // median, so start = stop = log2(x85 / 2.353) with ACES(x85) = 0.85: x85 = 2.118872, start =
+    // -0.151205, scale 2^start = 0.900498. N = max(2, ceil(0)) = 2 identical exposures.
+    // ACES per channel of 0.900498 (4, 2, 1) = (0.923494, 0.819720, 0.641130); of 0.900498 (3, 2.5,
+    // 0.5) = (0.888043, 0.860264, 0.401245). Their LDR-FLIP (one pixel: the colour term) is 0.489661.
+    Image a(1, 1), b(1, 1);
+    a.pixels[0] = {4.0f, 2.0f, 1.0f};
+    b.pixels[0] = {3.0f, 2.5f, 0.5f};
+    FlipOptions hdr;
+    hdr.hdr = true;
+    const FlipResult r = flip(a, b, hdr);
+    CHECK(r.start_exposure == Approx(-0.1512047).margin(1e-6));
+    CHECK(r.stop_exposure == Approx(r.start_exposure).margin(1e-12));
+    CHECK(r.exposures == 2);
+    CHECK(r.mean == Approx(0.4896610).margin(2e-6));
+    Image ta(1, 1), tb(1, 1);
+    ta.pixels[0] = {0.923493698f, 0.8197201698f, 0.6411300891f};
+    tb.pixels[0] = {0.8880426285f, 0.8602636319f, 0.4012451034f};
+    CHECK(flip(ta, tb).mean == Approx(r.mean).margin(1e-6));
+}
+
+TEST_CASE("HDR-FLIP: the exposure range uses the luminance 0.2126 R + 0.7152 G + 0.0722 B", "[image][flip]") {
+    // A pure red reference of 1: Y = 0.2126 everywhere, so start = stop = log2(x85 / 0.2126), x85
+    // the positive root of (k0 - 0.85 k3) x^2 + (k1 - 0.85 k4) x + (k2 - 0.85 k5) for ACES's k.
+    Image ref(4, 4);
+    for (auto& p : ref.pixels) p = {1.0f, 0.0f, 0.0f};
+    const double a = 0.36 * 2.51 - 0.85 * 0.36 * 2.43, b = 0.6 * 0.03 - 0.85 * 0.6 * 0.59, c = -0.85 * 0.14;
+    const double x85 = (-b + std::sqrt(b * b - 4.0 * a * c)) / (2.0 * a);
+    double start = 0.0, stop = 0.0;
+    flip_detail::automatic_exposures(ref, FlipToneMapper::Aces, start, stop);
+    CHECK(start == Approx(std::log2(x85 / 0.2126)).margin(1e-12));
+    CHECK(stop == Approx(start).margin(1e-12));
+    CHECK(flip_detail::luminance({1.0, 1.0, 1.0}) == Approx(1.0).margin(1e-15));
+}
+
+TEST_CASE("HDR-FLIP: Reinhard divides the whole pixel by 1 + its luminance", "[image][flip]") {
+    // (2, 1, 0.5): L = 0.4252 + 0.7152 + 0.0361 = 1.1765, so (2, 1, 0.5) / 2.1765 = (0.918907,
+    // 0.459453, 0.229727): the channel ratios stay 4 : 2 : 1 (per-channel x / (1 + x) would give
+    // (0.667, 0.5, 0.333)). ACES stays per channel.
+    const glm::dvec3 r = flip_detail::tone_map(glm::dvec3(2.0, 1.0, 0.5), FlipToneMapper::Reinhard);
+    CHECK(r.x == Approx(2.0 / 2.1765).epsilon(1e-12));
+    CHECK(r.y == Approx(1.0 / 2.1765).epsilon(1e-12));
+    CHECK(r.z == Approx(0.5 / 2.1765).epsilon(1e-12));
+    const glm::dvec3 aces = flip_detail::tone_map(glm::dvec3(2.0, 1.0, 0.5), FlipToneMapper::Aces);
+    CHECK(aces.y == Approx(flip_detail::tone_map(1.0, FlipToneMapper::Aces)).epsilon(1e-15));
+    // On grey the two forms agree: 3 / (1 + 3) = 0.75.
+    CHECK(flip_detail::tone_map(glm::dvec3(3.0), FlipToneMapper::Reinhard).x == Approx(0.75).epsilon(1e-15));
+}
+
+TEST_CASE("FLIP: a 7x5 pair matches an independent float64 re-statement of the published algorithm",
+          "[image][flip]") {
+    // Expected values from a separate NumPy restatement of docs/flip.md (written from the papers and
+    // the reference's description, not from this code), at the default 67.0206 ppd. At 7x5 every
+    // filter reaches past the border, so this also checks the edge clamping and kernel orientation.
+    Image a(7, 5), b(7, 5);
+    for (int y = 0; y < 5; ++y)
+        for (int x = 0; x < 7; ++x) {
+            a.at(x, y) = {0.5 + 0.45 * std::sin(1.3 * x + 0.7 * y), 0.5 + 0.45 * std::sin(0.9 * x - 1.1 * y + 1.0),
+                          0.5 + 0.45 * std::cos(0.5 * x + 1.7 * y)};
+            b.at(x, y) = {0.5 + 0.45 * std::sin(1.2 * x + 0.8 * y), 0.5 + 0.45 * std::sin(0.9 * x - 1.0 * y + 1.2),
+                          0.5 + 0.45 * std::cos(0.6 * x + 1.7 * y)};
+        }
+    const FlipResult r = flip(a, b);
+    CHECK(r.mean == Approx(0.277158318).margin(1e-6));
+    CHECK(r.weighted_median == Approx(0.309843973).margin(1e-6));
+    CHECK(r.weighted_first_quartile == Approx(0.222691703).margin(1e-6));
+    CHECK(r.weighted_third_quartile == Approx(0.391668321).margin(1e-6));
+    CHECK(r.max == Approx(0.514894421).margin(1e-6));
+    CHECK(r.max_x == 0);
+    CHECK(r.max_y == 4);
+    Image ha = a, hb = b;  // HDR: 4 v^2 per channel
+    for (auto& p : ha.pixels) p = 4.0f * p * p;
+    for (auto& p : hb.pixels) p = 4.0f * p * p;
+    FlipOptions hdr;
+    hdr.hdr = true;
+    const FlipResult h = flip(ha, hb, hdr);
+    CHECK(h.start_exposure == Approx(-0.692681819).margin(1e-6));
+    CHECK(h.stop_exposure == Approx(0.464210690).margin(1e-6));
+    CHECK(h.exposures == 2);
+    CHECK(h.mean == Approx(0.306290598).margin(1e-6));
+}
