@@ -26,6 +26,7 @@ collision::Ray PathIntegrator::continue_ray(const SurfaceHit& hit, const glm::ve
 }
 
 collision::Ray PathIntegrator::shadow_ray(const SurfaceHit& hit, const LightSample& ls) const {
+    if (ls.at_infinity) return spawn_ray(hit, ls.wi);  // a directional light: no end to stop short of
     const glm::vec3& target = ls.point;
     collision::Ray r = spawn_ray_to(hit, target, ls.point_error, ls.normal);
     if (defect_ == PlantedDefect::NoRayOffset) {  // planted: the shadow ray starts on the surface
@@ -49,6 +50,7 @@ glm::vec3 PathIntegrator::radiance(collision::Ray ray, Rng& rng, std::uint64_t& 
         ++rays;
         if (!accel_.intersect(ray, hit)) {
             result += beta * background_radiance(scene_.background, ray.dir);
+            if (lights_.has_distant()) result += beta * lights_.escaped_radiance(ray.dir, nee && !full_weight ? prev_pdf : 0.0f);
             break;
         }
         if (defect_ == PlantedDefect::FlippedNormals) {  // planted: inward normals
@@ -77,7 +79,7 @@ glm::vec3 PathIntegrator::radiance(collision::Ray ray, Rng& rng, std::uint64_t& 
                 if (e.pdf > 0.0f) {
                     ++rays;
                     if (!accel_.occluded(shadow_ray(hit, ls))) {
-                        const float w = power_heuristic(ls.pdf, e.pdf);
+                        const float w = ls.delta ? 1.0f : power_heuristic(ls.pdf, e.pdf);
                         result += beta * e.f_cos * ls.radiance * (w / ls.pdf);
                     }
                 }

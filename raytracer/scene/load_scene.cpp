@@ -10,6 +10,7 @@
 #include "raytracer/geometry/shape.hpp"
 #include "raytracer/input_error.hpp"
 #include "raytracer/scene/json_reader.hpp"
+#include "raytracer/scene/load_lights.hpp"
 #include "raytracer/scene/obj_loader.hpp"
 #include "raytracer/scene/scene_transform.hpp"
 #include "raytracer/scene/text_file.hpp"
@@ -244,7 +245,7 @@ Scene load_scene(const std::filesystem::path& file) {
     const std::string text = read_text_file(file, "scene");
     const nlohmann::json doc = scene_json::parse(text, file);
     const Node root(doc, file);
-    root.require_object({"description", "camera", "film", "background", "seed", "materials", "objects"});
+    root.require_object({"description", "camera", "film", "background", "seed", "materials", "objects", "lights"});
 
     Scene scene;
     scene.source = file;
@@ -255,6 +256,7 @@ Scene load_scene(const std::filesystem::path& file) {
     if (auto s = root.find("seed")) scene.seed = s->unsigned_integer();
     ObjectReader objects(scene, read_materials(root.at("materials"), scene.materials));
     objects.read_all(root.at("objects"));
+    if (auto l = root.find("lights")) scene.lights = read_lights(*l);
     return scene;
 }
 

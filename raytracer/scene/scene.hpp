@@ -9,6 +9,7 @@
 #include <glm/vec3.hpp>
 
 #include "raytracer/geometry/object.hpp"
+#include "raytracer/scene/scene_light.hpp"
 
 namespace sweeptrace {
 
@@ -57,6 +58,7 @@ struct Scene {
     std::vector<Material> materials;
     std::vector<Mesh> meshes;
     std::vector<Object> objects;
+    std::vector<SceneLight> lights;  // the "lights" key: point, spot, directional
     std::uint64_t seed = 0;
     std::filesystem::path source;  // the scene file, for messages
 };

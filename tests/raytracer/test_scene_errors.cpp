@@ -218,3 +218,30 @@ TEST_CASE("scene errors: OBJ meshes", "[scene][errors]") {
     dir.write("meshes/m.obj", "v 0 0 0\nv 1 0 0\nf 1 2\n");
     CHECK_THAT(load_error(dir, scene_text(mesh_object)), Catch::Contains("m.obj: line 3: a face needs 3 to 255 vertices, this one has 2"));
 }
+
+TEST_CASE("scene errors: lights", "[scene][errors][lights]") {
+    TempDir dir;
+    auto with_lights = [](const std::string& lights) {
+        return scene_text(kSphere, kMaterials, R"({ "width": 8, "height": 6 })",
+                          R"({ "position": [0, 0, 5], "look_at": [0, 0, 0] })", "  \"lights\": " + lights + ",\n");
+    };
+    CHECK(load_scene(dir.write("ok.json", with_lights(R"([{ "type": "point", "position": [0, 2, 0], "intensity": [1, 1, 1] }])")))
+              .lights.size() == 1);
+    CHECK_THAT(load_error(dir, with_lights(R"([{ "type": "area" }])")),
+               Catch::Contains("lights[0].type: unknown light type \"area\" (known: point, spot, directional)"));
+    CHECK_THAT(load_error(dir, with_lights(R"([{ "type": "point", "intensity": [1, 1, 1] }])")),
+               Catch::Contains("lights[0].position: missing (required)"));
+    CHECK_THAT(load_error(dir, with_lights(R"([{ "type": "point", "position": [0, 2, 0], "intensity": [0, 0, 0] }])")),
+               Catch::Contains("lights[0].intensity: a light must emit"));
+    CHECK_THAT(load_error(dir, with_lights(R"([{ "type": "point", "position": [0, 2, 0], "intensity": [1, 1, 1], "radius": 1 }])")),
+               Catch::Contains("lights[0].radius"));
+    const char* const spot = R"([{ "type": "spot", "position": [0, 2, 0], "intensity": [1, 1, 1], "direction": [0, -1, 0], )";
+    CHECK_THAT(load_error(dir, with_lights(std::string(spot) + R"("cone_angle": 0 }])")),
+               Catch::Contains("lights[0].cone_angle: must be a half-angle in degrees in (0, 90], got 0"));
+    CHECK_THAT(load_error(dir, with_lights(std::string(spot) + R"("cone_angle": 30, "falloff_start": 40 }])")),
+               Catch::Contains("lights[0].falloff_start: must be in [0, 30], got 40"));
+    CHECK_THAT(load_error(dir, with_lights(R"([{ "type": "directional", "direction": [0, 0, 0], "irradiance": [1, 1, 1] }])")),
+               Catch::Contains("lights[0].direction: must not be the zero vector"));
+    CHECK_THAT(load_error(dir, with_lights(R"([{ "type": "directional", "direction": [0, -1, 0], "irradiance": [1, 1, 1], "angular_diameter": 120 }])")),
+               Catch::Contains("lights[0].angular_diameter: must be in [0, 90], got 120"));
+}
