@@ -5,7 +5,7 @@
 
 #include <glm/geometric.hpp>
 
-#include "raytracer/geometry/object_space.hpp"
+#include "raytracer/geometry/object_world_bounds.hpp"
 #include "raytracer/render/lights.hpp"
 #include "raytracer/render/sampling.hpp"
 
@@ -18,10 +18,8 @@ namespace {
 float scene_radius(const Scene& scene) {
     collision::Bounds3 world;
     for (const Object& obj : scene.objects) {
-        collision::Bounds3 box = object_space_bounds(obj.shape);
-        if (const auto* m = std::get_if<MeshInstance>(&obj.shape))
-            for (const glm::vec3& v : scene.meshes[m->mesh].triangles.vertices) box.extend(v);
-        if (!box.empty()) world.extend(world_bounds(obj.transform, box));
+        const collision::Bounds3 box = object_world_bounds(obj, scene.meshes);
+        if (!box.empty()) world.extend(box);
     }
     if (world.empty()) return 1.0f;
     const float r = 0.5f * glm::length(world.hi - world.lo);

@@ -22,11 +22,16 @@ struct Camera {
     float focus_distance = 0.0f;  // 0 = distance from position to look_at
 };
 
+// The curve that takes exposed linear radiance to [0, 1] for 8-bit output (render/tone_map.hpp).
+enum class ToneCurve { Clamp, Aces };
+
 struct Film {
     int width = 320;
     int height = 240;
     int spp = 16;
     int max_depth = 8;  // path vertices after the camera; Russian roulette may stop earlier
+    float exposure = 0.0f;  // stops: 8-bit output shows radiance x 2^exposure (linear outputs untouched)
+    ToneCurve tone_curve = ToneCurve::Clamp;
 };
 
 struct Background {

@@ -5,9 +5,12 @@
 #include <string_view>
 #include <vector>
 
+#include <glm/geometric.hpp>
+
 #include "collision/bvh.hpp"
 #include "collision/float_error.hpp"
 #include "collision/shapes.hpp"
+#include "raytracer/geometry/shapes/flat_front.hpp"
 #include "raytracer/geometry/shapes/mesh_instance.hpp"
 #include "raytracer/geometry/shapes/scene_keys.hpp"
 #include "raytracer/geometry/shapes/shape_light.hpp"
@@ -26,6 +29,8 @@ struct TriangleShape {
     // WorldArea: uniform on the world triangle.
     static ShapeLight light(const Geometry& g, const Transform& xf, const std::vector<Mesh>& meshes);
     static void sample(const Geometry& g, const ShapeLight& l, float u_part, float u1, float u2, SurfacePoint& out);
+    // Flat: a point of its plane and its front (emitting) normal, in object space, unnormalised.
+    static FlatFront front(const Geometry& g) { return {g.a, glm::cross(g.b - g.a, g.c - g.a)}; }
 };
 
 template <class Node, class Loader>
