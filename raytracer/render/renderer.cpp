@@ -43,7 +43,7 @@ public:
           tiles_x_((width_ + kTileSize - 1) / kTileSize),
           tiles_y_((height_ + kTileSize - 1) / kTileSize),
           lights_(scene, defect),
-          camera_(scene.camera, width_, height_),
+          camera_(scene.camera, width_, height_, scene.film.filter),
           integrator_(scene, accel, lights_, opt.max_depth, opt.sampling, defect),
           sum_(static_cast<std::size_t>(width_) * height_, glm::dvec3(0.0)),
           sum_sq_(sum_.size(), glm::dvec3(0.0)),
@@ -125,10 +125,12 @@ private:
             for (int x = x0; x < x1; ++x) {
                 const std::size_t pixel = static_cast<std::size_t>(y) * width_ + x;
                 Rng rng(opt_.seed, pixel, static_cast<std::uint64_t>(sample));
-                const float fx = static_cast<float>(x) + rng.uniform();
-                const float fy = static_cast<float>(y) + rng.uniform();
+                const float f1 = rng.uniform(), f2 = rng.uniform();
+                const FilmOffset film = camera_.film_offset(f1, f2);  // from the pixel filter
+                const float fx = static_cast<float>(x) + film.dx;
+                const float fy = static_cast<float>(y) + film.dy;
                 const float l1 = rng.uniform(), l2 = rng.uniform();
-                glm::vec3 l = integrator_.radiance(camera_.generate(fx, fy, l1, l2), rng, rays);
+                glm::vec3 l = film.weight * integrator_.radiance(camera_.generate(fx, fy, l1, l2), rng, rays);
                 if (!std::isfinite(l.x) || !std::isfinite(l.y) || !std::isfinite(l.z)) {
                     l = glm::vec3(0.0f);
                     ++nonfinite;

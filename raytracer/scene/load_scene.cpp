@@ -11,6 +11,7 @@
 #include "raytracer/input_error.hpp"
 #include "raytracer/scene/json_reader.hpp"
 #include "raytracer/scene/load_film_display.hpp"
+#include "raytracer/scene/load_filter.hpp"
 #include "raytracer/scene/load_lights.hpp"
 #include "raytracer/scene/obj_loader.hpp"
 #include "raytracer/scene/scene_transform.hpp"
@@ -52,13 +53,14 @@ Camera read_camera(const Node& node) {
 }
 
 Film read_film(const Node& node) {
-    node.require_object({"width", "height", "spp", "max_depth", "exposure", "tone_curve"});
+    node.require_object({"width", "height", "spp", "max_depth", "exposure", "tone_curve", "filter"});
     Film film;
     film.width = static_cast<int>(node.at("width").integer(1, kMaxImageSide));
     film.height = static_cast<int>(node.at("height").integer(1, kMaxImageSide));
     if (auto spp = node.find("spp")) film.spp = static_cast<int>(spp->integer(1, kMaxSpp));
     if (auto depth = node.find("max_depth")) film.max_depth = static_cast<int>(depth->integer(1, kMaxDepth));
     read_film_display(node, film);
+    if (auto f = node.find("filter")) film.filter = read_filter(*f);
     return film;
 }
 

@@ -25,6 +25,16 @@ struct Camera {
 // The curve that takes exposed linear radiance to [0, 1] for 8-bit output (render/tone_map.hpp).
 enum class ToneCurve { Clamp, Aces };
 
+// The pixel reconstruction filter, as the scene gives it (render/pixel_filter.hpp samples it).
+// Separable: the 2D filter is f(x) f(y) for offsets (x, y) in pixels from the pixel's centre.
+struct FilterSpec {
+    enum class Type { Box, Tent, Gaussian, Mitchell };
+    Type type = Type::Box;
+    float radius = 0.5f;              // support [-radius, radius] per axis, in pixels
+    float sigma = 0.5f;               // Gaussian: standard deviation in pixels
+    float b = 1.0f / 3.0f, c = 1.0f / 3.0f;  // Mitchell-Netravali's B and C
+};
+
 struct Film {
     int width = 320;
     int height = 240;
@@ -32,6 +42,7 @@ struct Film {
     int max_depth = 8;  // path vertices after the camera; Russian roulette may stop earlier
     float exposure = 0.0f;  // stops: 8-bit output shows radiance x 2^exposure (linear outputs untouched)
     ToneCurve tone_curve = ToneCurve::Clamp;
+    FilterSpec filter;  // box of radius 0.5: each sample uniform in its pixel
 };
 
 struct Background {

@@ -245,3 +245,27 @@ TEST_CASE("scene errors: lights", "[scene][errors][lights]") {
     CHECK_THAT(load_error(dir, with_lights(R"([{ "type": "directional", "direction": [0, -1, 0], "irradiance": [1, 1, 1], "angular_diameter": 120 }])")),
                Catch::Contains("lights[0].angular_diameter: must be in [0, 90], got 120"));
 }
+
+TEST_CASE("scene errors: film display and filter keys", "[scene][errors][filter]") {
+    TempDir dir;
+    auto with_film = [](const std::string& extra) {
+        return scene_text(kSphere, kMaterials, R"({ "width": 8, "height": 6, )" + extra + " }");
+    };
+    const auto ok = load_scene(dir.write("ok.json", with_film(R"("exposure": -1.5, "tone_curve": "aces", "filter": { "type": "gaussian", "sigma": 0.4 })")));
+    CHECK(ok.film.exposure == -1.5f);
+    CHECK(ok.film.tone_curve == sweeptrace::ToneCurve::Aces);
+    CHECK(ok.film.filter.type == sweeptrace::FilterSpec::Type::Gaussian);
+    CHECK(ok.film.filter.radius == 1.5f);
+    CHECK_THAT(load_error(dir, with_film(R"("tone_curve": "filmic")")),
+               Catch::Contains("film.tone_curve: unknown tone curve \"filmic\" (known: clamp, aces)"));
+    CHECK_THAT(load_error(dir, with_film(R"("exposure": 100)")), Catch::Contains("film.exposure: must be in [-64, 64]"));
+    CHECK_THAT(load_error(dir, with_film(R"("filter": "tent")")), Catch::Contains("film.filter: must be an object"));
+    CHECK_THAT(load_error(dir, with_film(R"("filter": { "type": "lanczos" })")),
+               Catch::Contains("film.filter.type: unknown filter type \"lanczos\""));
+    CHECK_THAT(load_error(dir, with_film(R"("filter": { "type": "tent", "radius": 0 })")),
+               Catch::Contains("film.filter.radius: must be in [0.05, 16] pixels, got 0"));
+    CHECK_THAT(load_error(dir, with_film(R"("filter": { "type": "box", "sigma": 1 })")),
+               Catch::Contains("film.filter.sigma"));
+    CHECK_THAT(load_error(dir, with_film(R"("filter": { "type": "mitchell", "b": 2 })")),
+               Catch::Contains("film.filter.b: must be in [0, 1], got 2"));
+}

@@ -53,6 +53,9 @@ TEST_CASE("scenes README: every JSON example loads", "[scene][docs]") {
             scene = head + b + R"(, "objects": [] })";
         else if (starts_with(b, "\"objects\""))
             scene = head + materials + ", " + b + "}";
+        else if (starts_with(b, "\"film\""))
+            scene = R"({ "camera": { "position": [0, 1, 5], "look_at": [0, 1, 0] }, )" + b + ", " + materials +
+                    R"(, "objects": [] })";
         else if (starts_with(b, "\"lights\""))
             scene = head + materials + R"(, "objects": [], )" + b + "}";
         else if (starts_with(b, "\"transform\""))
