@@ -6,12 +6,14 @@
 #include <glm/geometric.hpp>
 
 #include "raytracer/render/bsdf.hpp"
+#include "raytracer/render/environment_light.hpp"
 #include "raytracer/render/sampling.hpp"
 
 namespace sweeptrace {
 
 glm::vec3 background_radiance(const Background& bg, const glm::vec3& dir) {
     if (bg.kind == Background::Kind::Constant) return bg.color;
+    if (bg.kind == Background::Kind::Environment) return environment_radiance(bg, dir);
     const float t = std::clamp(dir.y, 0.0f, 1.0f);
     return (1.0f - t) * bg.horizon + t * bg.zenith;
 }
@@ -49,7 +51,7 @@ glm::vec3 PathIntegrator::radiance(collision::Ray ray, Rng& rng, std::uint64_t& 
         SurfaceHit hit;
         ++rays;
         if (!accel_.intersect(ray, hit)) {
-            result += beta * background_radiance(scene_.background, ray.dir);
+            if (!lights_.background_is_light()) result += beta * background_radiance(scene_.background, ray.dir);
             if (lights_.has_distant()) result += beta * lights_.escaped_radiance(ray.dir, nee && !full_weight ? prev_pdf : 0.0f);
             break;
         }

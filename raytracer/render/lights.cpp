@@ -88,6 +88,8 @@ LightSet::LightSet(const Scene& scene, PlantedDefect defect)
         const float probability = static_cast<float>(weights[k] / total);
         if (k < lights_.size()) {
             lights_[k].probability = probability;
+        } else if (k == lights_.size() + scene_lights_.size()) {
+            env_probability_ = probability;
         } else {
             NonSurfaceLight& l = scene_lights_[k - lights_.size()];
             l.probability = probability;
@@ -162,6 +164,7 @@ bool LightSet::sample(const glm::vec3& p, std::uint32_t p_object, float u_select
     if (cdf_.empty()) return false;
     const auto it = std::upper_bound(cdf_.begin(), cdf_.end(), u_select);
     const auto index = static_cast<std::size_t>(std::min<std::ptrdiff_t>(it - cdf_.begin(), cdf_.size() - 1));
+    if (index >= lights_.size() + scene_lights_.size()) return sample_environment(p, u1, u2, out);
     if (index >= lights_.size()) return sample_scene_light(scene_lights_[index - lights_.size()], p, u1, u2, out);
     const Light& l = lights_[index];
     if (l.shape.strategy == Strategy::SphereCone) {

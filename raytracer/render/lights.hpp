@@ -37,13 +37,18 @@
 //   radiance L = E / (pi sin^2 alpha), so the irradiance on a surface facing it is E whatever
 //   the diameter; BSDF-sampled rays that escape into the cone find it too (escaped_radiance),
 //   weighted by MIS against the same cone density.
+// - An environment background (render/environment_light.hpp) is one more light, last, weighted
+//   R^2 int lum(L) d omega (its power / pi, as for a directional light); sampled by its texel
+//   distribution, found by escaped rays, MIS between the two.
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include <glm/vec3.hpp>
 
 #include "raytracer/geometry/shapes/shape_light.hpp"
 #include "raytracer/geometry/surface_hit.hpp"
+#include "raytracer/render/environment_light.hpp"
 #include "raytracer/render/planted_defect.hpp"
 #include "raytracer/scene/scene.hpp"
 
@@ -95,8 +100,11 @@ public:
 
     // True when some light sits at infinity with a disc of directions (a sun): rays that escape
     // the scene must then ask escaped_radiance.
-    bool has_distant() const { return !suns_.empty(); }
-    // Radiance of the suns along unit direction `dir` of a ray that escaped the scene, each
+    bool has_distant() const { return !suns_.empty() || env_ != nullptr; }
+    // True when the background is an environment map sampled as a light: escaped_radiance then
+    // returns its radiance (MIS weighted) and the integrator must not add it again.
+    bool background_is_light() const { return env_ != nullptr; }
+    // Radiance of the suns and of an environment light along unit direction `dir` of a ray that escaped the scene, each
     // weighted by MIS against its cone density when `bsdf_pdf` > 0 (the solid-angle density the
     // BSDF sampled `dir` with); `bsdf_pdf` <= 0 gives full weight (camera rays, delta bounces,
     // BSDF-only sampling).
@@ -130,6 +138,7 @@ private:
     };
     void add_scene_lights(const Scene& scene, std::vector<float>& weights);
     bool sample_scene_light(const NonSurfaceLight& l, const glm::vec3& p, float u1, float u2, LightSample& out) const;
+    bool sample_environment(const glm::vec3& p, float u1, float u2, LightSample& out) const;
 
     const Scene* scene_ = nullptr;
     float normal_sign_ = 1.0f;                  // -1 under PlantedDefect::FlippedNormals
@@ -138,6 +147,8 @@ private:
     std::vector<std::int32_t> light_of_object_; // object index -> light index or -1
     std::vector<NonSurfaceLight> scene_lights_; // after lights_ in cdf_
     std::vector<Sun> suns_;
+    std::shared_ptr<const EnvironmentLight> env_;  // the background, when it is a map that emits
+    float env_probability_ = 0.0f;                 // it is the last entry of cdf_
 };
 
 }  // namespace sweeptrace

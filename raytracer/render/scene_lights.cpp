@@ -71,6 +71,26 @@ void LightSet::add_scene_lights(const Scene& scene, std::vector<float>& weights)
         scene_lights_.push_back(l);
         weights.push_back(weight);
     }
+    if (scene.background.kind == Background::Kind::Environment && scene.background.environment) {
+        auto env = std::make_shared<const EnvironmentLight>(scene.background);
+        if (radius < 0.0f) radius = scene_radius(scene);
+        const float weight = static_cast<float>(env->luminance_integral()) * radius * radius;
+        if (env->emits() && weight > 0.0f && std::isfinite(weight)) {
+            env_ = std::move(env);
+            weights.push_back(weight);
+        }
+    }
+}
+
+bool LightSet::sample_environment(const glm::vec3& p, float u1, float u2, LightSample& out) const {
+    float pdf = 0.0f;
+    if (!env_->sample(u1, u2, out.wi, pdf, out.radiance)) return false;
+    out.pdf = env_probability_ * pdf;
+    out.at_infinity = true;
+    out.distance = std::numeric_limits<float>::infinity();
+    out.normal = -out.wi;
+    out.point = p + out.wi;  // unused: the shadow ray is unbounded
+    return out.pdf > 0.0f && std::isfinite(out.pdf) && luminance(out.radiance) > 0.0f;
 }
 
 bool LightSet::sample_scene_light(const NonSurfaceLight& l, const glm::vec3& p, float u1, float u2,
@@ -114,6 +134,11 @@ glm::vec3 LightSet::escaped_radiance(const glm::vec3& dir, float bsdf_pdf) const
         if (!(glm::dot(dir, sun.to_light) >= sun.cos_max)) continue;
         const float w = bsdf_pdf > 0.0f ? power_heuristic(bsdf_pdf, sun.probability * uniform_cone_pdf(sun.omc)) : 1.0f;
         sum += sun.radiance * w;
+    }
+    if (env_) {
+        const glm::vec3 le = env_->radiance(dir);
+        const float w = bsdf_pdf > 0.0f ? power_heuristic(bsdf_pdf, env_probability_ * env_->pdf(dir)) : 1.0f;
+        sum += le * w;
     }
     return sum;
 }

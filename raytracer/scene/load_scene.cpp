@@ -11,6 +11,7 @@
 #include "raytracer/input_error.hpp"
 #include "raytracer/scene/json_reader.hpp"
 #include "raytracer/scene/load_film_display.hpp"
+#include "raytracer/scene/load_environment.hpp"
 #include "raytracer/scene/load_filter.hpp"
 #include "raytracer/scene/load_lights.hpp"
 #include "raytracer/scene/obj_loader.hpp"
@@ -65,11 +66,13 @@ Film read_film(const Node& node) {
 }
 
 Background read_background(const Node& node) {
-    node.require_object({"color", "sky"});
+    node.require_object({"color", "sky", "environment"});
     Background background;
-    const bool color = node.has("color"), sky = node.has("sky");
-    if (color == sky) node.fail("give exactly one of \"color\" or \"sky\"");
-    if (color) {
+    const bool color = node.has("color"), sky = node.has("sky"), env = node.has("environment");
+    if (int(color) + int(sky) + int(env) != 1) node.fail("give exactly one of \"color\", \"sky\" or \"environment\"");
+    if (env) {
+        read_environment(node.at("environment"), background);
+    } else if (color) {
         background.kind = Background::Kind::Constant;
         background.color = node.at("color").vec3_at_least(0.0f);
     } else {

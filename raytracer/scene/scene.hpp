@@ -3,12 +3,14 @@
 // checks: finite numbers, positive sizes, valid indices.
 #include <cstdint>
 #include <filesystem>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include <glm/vec3.hpp>
 
 #include "raytracer/geometry/object.hpp"
+#include "raytracer/image/image.hpp"
 #include "raytracer/scene/scene_light.hpp"
 
 namespace sweeptrace {
@@ -46,11 +48,17 @@ struct Film {
 };
 
 struct Background {
-    enum class Kind { Constant, Sky };
+    enum class Kind { Constant, Sky, Environment };
     Kind kind = Kind::Constant;
     glm::vec3 color{0.0f};               // Constant
     glm::vec3 horizon{1.0f};             // Sky: radiance toward the horizon and below
     glm::vec3 zenith{0.5f, 0.7f, 1.0f};  // Sky: radiance straight up (+Y), blended by dir.y
+    // Environment: an equirectangular radiance map (render/environment_light.hpp states the
+    // mapping), shared, not copied, by copies of the scene; turned about +Y by rotate_degrees and
+    // multiplied by scale.
+    std::shared_ptr<const Image> environment;
+    float rotate_degrees = 0.0f;
+    float scale = 1.0f;
 };
 
 struct Material {

@@ -269,3 +269,28 @@ TEST_CASE("scene errors: film display and filter keys", "[scene][errors][filter]
     CHECK_THAT(load_error(dir, with_film(R"("filter": { "type": "mitchell", "b": 2 })")),
                Catch::Contains("film.filter.b: must be in [0, 1], got 2"));
 }
+
+TEST_CASE("scene errors: environment backgrounds", "[scene][errors][environment]") {
+    TempDir dir;
+    auto with_bg = [](const std::string& bg) {
+        return scene_text(kSphere, kMaterials, R"({ "width": 8, "height": 6 })",
+                          R"({ "position": [0, 0, 5], "look_at": [0, 0, 0] })", "  \"background\": " + bg + ",\n");
+    };
+    CHECK_THAT(load_error(dir, with_bg(R"({ "environment": { "file": "nope.hdr" } })")),
+               Catch::Contains("background.environment.file: environment image \"nope.hdr\" not found"));
+    CHECK_THAT(load_error(dir, with_bg(R"({ "environment": { "file": "x.hdr" }, "color": [0, 0, 0] })")),
+               Catch::Contains("background: give exactly one of \"color\", \"sky\" or \"environment\""));
+    dir.write("bad.hdr", "not an image");
+    CHECK_THAT(load_error(dir, with_bg(R"({ "environment": { "file": "bad.hdr" } })")),
+               Catch::Contains("background.environment.file: cannot read") && Catch::Contains("not a Radiance HDR file"));
+    dir.write("photo.png", "x");
+    CHECK_THAT(load_error(dir, with_bg(R"({ "environment": { "file": "photo.png" } })")),
+               Catch::Contains("background.environment.file: an environment must be linear radiance"));
+    std::string hdr = "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 1 +X 2\n";
+    for (int i = 0; i < 2; ++i) hdr += std::string{char(128), char(128), char(128), char(129)};
+    dir.write("ok.hdr", hdr);
+    CHECK_THAT(load_error(dir, with_bg(R"({ "environment": { "file": "ok.hdr", "scale": -1 } })")),
+               Catch::Contains("background.environment.scale: must be >= 0, got -1"));
+    CHECK_THAT(load_error(dir, with_bg(R"({ "environment": { "file": "ok.hdr", "turn": 3 } })")),
+               Catch::Contains("background.environment.turn"));
+}

@@ -36,6 +36,10 @@ TEST_CASE("scenes README: every JSON example loads", "[scene][docs]") {
 
     sweeptrace::test::TempDir dir;
     dir.write("meshes/torus_knot.obj", sweeptrace::read_text_file(scenes / "meshes" / "torus_knot.obj", "mesh"));
+    // The environment example's map: 4 x 2 uncompressed RGBE texels of 1.0.
+    std::string hdr = "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 2 +X 4\n";
+    for (int i = 0; i < 8; ++i) hdr += std::string{char(128), char(128), char(128), char(129)};
+    dir.write("sky.hdr", hdr);
     std::string materials;
     for (const std::string& b : blocks)
         if (starts_with(b, "\"materials\"")) materials = b;
@@ -56,6 +60,8 @@ TEST_CASE("scenes README: every JSON example loads", "[scene][docs]") {
         else if (starts_with(b, "\"film\""))
             scene = R"({ "camera": { "position": [0, 1, 5], "look_at": [0, 1, 0] }, )" + b + ", " + materials +
                     R"(, "objects": [] })";
+        else if (starts_with(b, "\"background\""))
+            scene = head + materials + R"(, "objects": [], )" + b + "}";
         else if (starts_with(b, "\"lights\""))
             scene = head + materials + R"(, "objects": [], )" + b + "}";
         else if (starts_with(b, "\"transform\""))
