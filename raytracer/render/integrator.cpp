@@ -8,6 +8,7 @@
 #include "raytracer/render/bsdf.hpp"
 #include "raytracer/render/environment_light.hpp"
 #include "raytracer/render/sampling.hpp"
+#include "raytracer/render/texture.hpp"
 
 namespace sweeptrace {
 
@@ -59,7 +60,9 @@ glm::vec3 PathIntegrator::radiance(collision::Ray ray, Rng& rng, std::uint64_t& 
             hit.normal = -hit.normal;
             hit.shading_normal = -hit.shading_normal;
         }
-        const Material& mat = scene_.materials[scene_.objects[hit.object].material];
+        const Material& base = scene_.materials[scene_.objects[hit.object].material];
+        Material textured;  // filled only for materials that read a texture (render/texture.hpp)
+        const Material& mat = base.albedo_texture < 0 ? base : (textured = textured_material(scene_, base, hit));
         const glm::vec3 wo = -ray.dir;
 
         const glm::vec3 le = emitted_radiance(mat, hit.normal, wo);

@@ -14,6 +14,7 @@
 #include "raytracer/scene/load_environment.hpp"
 #include "raytracer/scene/load_filter.hpp"
 #include "raytracer/scene/load_lights.hpp"
+#include "raytracer/scene/load_texture.hpp"
 #include "raytracer/scene/obj_loader.hpp"
 #include "raytracer/scene/scene_transform.hpp"
 #include "raytracer/scene/text_file.hpp"
@@ -92,7 +93,7 @@ glm::vec3 read_albedo(const Node& node) {
     return v;
 }
 
-Material read_material(const Node& node, const std::string& name) {
+Material read_material(const Node& node, const std::string& name, std::vector<Texture>& textures) {
     if (!node.value().is_object()) node.fail("must be an object with a \"type\"");
     const Node type_node = node.at("type");
     const std::string type = type_node.string();
@@ -117,7 +118,14 @@ Material read_material(const Node& node, const std::string& name) {
     } else {
         type_node.fail("unknown material type \"" + type + "\" (known: diffuse, metal, dielectric, emissive)");
     }
-    if (auto albedo = node.find("albedo")) m.albedo = read_albedo(*albedo);
+    if (auto albedo = node.find("albedo")) {
+        if (albedo->value().is_object()) {
+            m.albedo_texture = static_cast<int>(textures.size());
+            textures.push_back(read_texture(*albedo));
+        } else {
+            m.albedo = read_albedo(*albedo);
+        }
+    }
     if (auto emission = node.find("emission")) {
         m.emission = emission->vec3_at_least(0.0f);
         if (m.type == Material::Type::Emissive && m.emission == glm::vec3(0.0f))
@@ -129,7 +137,8 @@ Material read_material(const Node& node, const std::string& name) {
     return m;
 }
 
-std::map<std::string, std::uint32_t> read_materials(const Node& node, std::vector<Material>& out) {
+std::map<std::string, std::uint32_t> read_materials(const Node& node, std::vector<Material>& out,
+                                                    std::vector<Texture>& textures) {
     if (!node.value().is_object())
         node.fail("must be an object mapping names to materials, got " + scene_json::describe_type(node.value()));
     std::map<std::string, std::uint32_t> index;
@@ -137,7 +146,7 @@ std::map<std::string, std::uint32_t> read_materials(const Node& node, std::vecto
         const Node m = node.at(item.key());
         if (item.key().empty()) m.fail("a material name must not be empty");
         index[item.key()] = static_cast<std::uint32_t>(out.size());
-        out.push_back(read_material(m, item.key()));
+        out.push_back(read_material(m, item.key(), textures));
     }
     return index;
 }
@@ -261,8 +270,9 @@ Scene load_scene(const std::filesystem::path& file) {
     scene.film = read_film(root.at("film"));
     if (auto b = root.find("background")) scene.background = read_background(*b);
     if (auto s = root.find("seed")) scene.seed = s->unsigned_integer();
-    ObjectReader objects(scene, read_materials(root.at("materials"), scene.materials));
+    ObjectReader objects(scene, read_materials(root.at("materials"), scene.materials, scene.textures));
     objects.read_all(root.at("objects"));
+    check_texture_uv(scene, root.at("objects"));
     if (auto l = root.find("lights")) scene.lights = read_lights(*l);
     return scene;
 }

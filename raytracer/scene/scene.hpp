@@ -61,10 +61,24 @@ struct Background {
     float scale = 1.0f;
 };
 
+// A colour that varies over a surface with its uv coordinates (render/texture.hpp evaluates it;
+// each shape's home states its uv parameterisation). A constant colour is not a Texture: it is
+// the material's plain value.
+struct Texture {
+    enum class Kind { Checker, Image };
+    enum class Wrap { Repeat, Clamp };
+    Kind kind = Kind::Checker;
+    glm::vec3 a{0.2f}, b{0.8f};  // Checker: the two colours; a at uv = (0, 0)
+    float scale = 8.0f;          // Checker: squares per unit of u and of v
+    std::shared_ptr<const Image> image;  // Image: linear RGB (an sRGB .png is decoded on load)
+    Wrap wrap = Wrap::Repeat;
+};
+
 struct Material {
     enum class Type { Diffuse, Metal, Dielectric, Emissive };
     Type type = Type::Diffuse;
     glm::vec3 albedo{0.8f};    // Diffuse reflectance / Metal tint / Dielectric transmission tint
+    int albedo_texture = -1;   // index into Scene::textures replacing `albedo` at each hit, or -1
     float roughness = 0.0f;    // Metal: 0 = perfect mirror
     float ior = 1.5f;          // Dielectric
     glm::vec3 emission{0.0f};  // radiance leaving the front side; any material may emit
@@ -80,6 +94,7 @@ struct Scene {
     Film film;
     Background background;
     std::vector<Material> materials;
+    std::vector<Texture> textures;
     std::vector<Mesh> meshes;
     std::vector<Object> objects;
     std::vector<SceneLight> lights;  // the "lights" key: point, spot, directional

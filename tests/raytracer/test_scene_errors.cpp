@@ -294,3 +294,28 @@ TEST_CASE("scene errors: environment backgrounds", "[scene][errors][environment]
     CHECK_THAT(load_error(dir, with_bg(R"({ "environment": { "file": "ok.hdr", "turn": 3 } })")),
                Catch::Contains("background.environment.turn"));
 }
+
+TEST_CASE("scene errors: textures", "[scene][errors][texture]") {
+    TempDir dir;
+    auto with_albedo = [](const std::string& albedo) {
+        return scene_text(kSphere, R"({ "m": { "type": "diffuse", "albedo": )" + albedo + " } }");
+    };
+    CHECK_THAT(load_error(dir, with_albedo(R"({ "checker": { "scale": 0 } })")),
+               Catch::Contains("materials.m.albedo.checker.scale: must be > 0, got 0"));
+    CHECK_THAT(load_error(dir, with_albedo(R"({ "checker": { "a": [2, 0, 0] } })")),
+               Catch::Contains("materials.m.albedo.checker.a[0]: must be in [0, 1], got 2"));
+    CHECK_THAT(load_error(dir, with_albedo(R"({ "image": { "file": "none.png" } })")),
+               Catch::Contains("materials.m.albedo.image.file: texture image \"none.png\" not found"));
+    CHECK_THAT(load_error(dir, with_albedo(R"({ "marble": {} })")), Catch::Contains("materials.m.albedo.marble"));
+    CHECK_THAT(load_error(dir, with_albedo(R"({ "checker": {}, "image": { "file": "x.png" } })")),
+               Catch::Contains("materials.m.albedo: give exactly one of \"checker\" or \"image\""));
+    std::string hdr = "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 1 +X 2\n";
+    for (int i = 0; i < 2; ++i) hdr += std::string{char(128), char(128), char(128), char(130)};  // 2.0
+    dir.write("bright.hdr", hdr);
+    CHECK_THAT(load_error(dir, with_albedo(R"({ "image": { "file": "bright.hdr" } })")),
+               Catch::Contains("materials.m.albedo.image.file: an albedo texture's values must lie in [0, 1]"));
+    dir.write("ok.hdr", hdr.substr(0, hdr.size() - 8) + std::string{char(128), char(128), char(128), char(128)} +
+                            std::string{char(128), char(128), char(128), char(128)});
+    CHECK_THAT(load_error(dir, with_albedo(R"({ "image": { "file": "ok.hdr", "wrap": "mirror" } })")),
+               Catch::Contains("materials.m.albedo.image.wrap: unknown wrap mode \"mirror\" (known: repeat, clamp)"));
+}

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "raytracer/image/image.hpp"
 #include "raytracer/scene/load_scene.hpp"
 #include "raytracer/scene/text_file.hpp"
 #include "scene_test_files.hpp"
@@ -40,6 +41,7 @@ TEST_CASE("scenes README: every JSON example loads", "[scene][docs]") {
     std::string hdr = "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 2 +X 4\n";
     for (int i = 0; i < 8; ++i) hdr += std::string{char(128), char(128), char(128), char(129)};
     dir.write("sky.hdr", hdr);
+    sweeptrace::write_image(sweeptrace::Image(2, 2), dir.path() / "wood.png");  // the image texture example's file
     std::string materials;
     for (const std::string& b : blocks)
         if (starts_with(b, "\"materials\"")) materials = b;
@@ -60,6 +62,9 @@ TEST_CASE("scenes README: every JSON example loads", "[scene][docs]") {
         else if (starts_with(b, "\"film\""))
             scene = R"({ "camera": { "position": [0, 1, 5], "look_at": [0, 1, 0] }, )" + b + ", " + materials +
                     R"(, "objects": [] })";
+        else if (starts_with(b, "\"albedo\""))
+            scene = head + R"("materials": { "t": { "type": "diffuse", )" + b +
+                    R"( } }, "objects": [{ "type": "quad", "corner": [0, 0, 0], "edge_u": [1, 0, 0], "edge_v": [0, 1, 0], "material": "t" }] })";
         else if (starts_with(b, "\"background\""))
             scene = head + materials + R"(, "objects": [], )" + b + "}";
         else if (starts_with(b, "\"lights\""))

@@ -29,6 +29,13 @@ struct QuadShape {
     // WorldArea: uniform on the world parallelogram.
     static ShapeLight light(const Geometry& g, const Transform& xf, const std::vector<Mesh>& meshes);
     static void sample(const Geometry& g, const ShapeLight& l, float u_part, float u1, float u2, SurfacePoint& out);
+    // uv of an object-space point p on the plane: (s, t) in [0, 1]^2, the coordinates of p - g.corner in the edges
+    // g.edge_u, g.edge_v (dual basis through the normal n = g.edge_u x g.edge_v: s = ((d x g.edge_v) . n) / |n|^2, ...).
+    static glm::vec2 uv(const Geometry& g, const glm::vec3& p) {
+        const glm::vec3 d = p - g.corner, n = glm::cross(g.edge_u, g.edge_v);
+        const float nn = glm::dot(n, n);
+        return {glm::dot(glm::cross(d, g.edge_v), n) / nn, glm::dot(glm::cross(g.edge_u, d), n) / nn};
+    }
     // Flat: a point of its plane and its front (emitting) normal, in object space, unnormalised.
     static FlatFront front(const Geometry& g) { return {g.corner, glm::cross(g.edge_u, g.edge_v)}; }
 };

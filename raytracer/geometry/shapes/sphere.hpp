@@ -1,9 +1,13 @@
 #pragma once
 // The sphere's home in the renderer: scene keys, object-space bounds, light sampling.
 // Intersection: collision/intersect_sphere.cpp.
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <string_view>
 #include <vector>
+
+#include <glm/geometric.hpp>
 
 #include "collision/bvh.hpp"
 #include "collision/float_error.hpp"
@@ -29,6 +33,14 @@ struct SphereShape {
     static ShapeLight light(const Geometry& s, const Transform& xf, const std::vector<Mesh>& meshes);
     // SphereCone: uniform by area on the world sphere; ObjectArea: on the object sphere.
     static void sample(const Geometry& s, const ShapeLight& l, float u_part, float u1, float u2, SurfacePoint& out);
+    // uv of an object-space point p on the sphere, from its direction d from the centre:
+    // (phi / 2 pi, theta / pi) with phi = atan2(d.z, d.x) in [0, 2 pi) and theta = acos(d.y) from
+    // +Y (the convention of collision's sphere hit uv).
+    static glm::vec2 uv(const Geometry& g, const glm::vec3& p) {
+        const glm::vec3 d = glm::normalize(p - g.center);
+        const float a = std::atan2(d.z, d.x) / (2.0f * kPi);
+        return {a < 0.0f ? a + 1.0f : a, std::acos(std::clamp(d.y, -1.0f, 1.0f)) / kPi};
+    }
 };
 
 // Inline: called once per light sample, through visit_shape.

@@ -29,6 +29,13 @@ struct TriangleShape {
     // WorldArea: uniform on the world triangle.
     static ShapeLight light(const Geometry& g, const Transform& xf, const std::vector<Mesh>& meshes);
     static void sample(const Geometry& g, const ShapeLight& l, float u_part, float u1, float u2, SurfacePoint& out);
+    // uv of an object-space point p on the triangle: its barycentrics (b1, b2) of b and c, the coordinates of p - g.a in the edges
+    // (g.b - g.a), (g.c - g.a) (dual basis through the normal n = (g.b - g.a) x (g.c - g.a): s = ((d x (g.c - g.a)) . n) / |n|^2, ...).
+    static glm::vec2 uv(const Geometry& g, const glm::vec3& p) {
+        const glm::vec3 d = p - g.a, n = glm::cross((g.b - g.a), (g.c - g.a));
+        const float nn = glm::dot(n, n);
+        return {glm::dot(glm::cross(d, (g.c - g.a)), n) / nn, glm::dot(glm::cross((g.b - g.a), d), n) / nn};
+    }
     // Flat: a point of its plane and its front (emitting) normal, in object space, unnormalised.
     static FlatFront front(const Geometry& g) { return {g.a, glm::cross(g.b - g.a, g.c - g.a)}; }
 };

@@ -1,0 +1,88 @@
+#include "raytracer/scene/load_texture.hpp"
+
+#include <string>
+#include <system_error>
+
+#include "raytracer/geometry/shape.hpp"
+#include "raytracer/input_error.hpp"
+
+namespace sweeptrace {
+
+namespace {
+
+glm::vec3 read_colour01(const scene_json::Node& node) {
+    const glm::vec3 v = node.vec3_at_least(0.0f);
+    for (int i = 0; i < 3; ++i)
+        if (v[i] > 1.0f) node.element(static_cast<std::size_t>(i)).number_in(0.0f, 1.0f);
+    return v;
+}
+
+std::shared_ptr<const Image> read_texture_image(const scene_json::Node& file) {
+    const std::string relative = file.string();
+    if (relative.empty()) file.fail("must name an image (.png, .hdr, .exr or .pfm)");
+    const std::filesystem::path path = file.file().parent_path() / relative;
+    std::error_code ec;
+    if (!std::filesystem::is_regular_file(path, ec))
+        file.fail("texture image \"" + relative + "\" not found (looked for " + path.string() + ")");
+    Image image;
+    try {
+        image = read_image(path);
+    } catch (const InputError& e) {
+        file.fail(e.what());
+    }
+    if (image.width < 1 || image.height < 1) file.fail("texture image is empty");
+    return std::make_shared<const Image>(std::move(image));
+}
+
+}  // namespace
+
+Texture read_texture(const scene_json::Node& node) {
+    node.require_object({"checker", "image"});
+    if (node.value().size() != 1) node.fail("give exactly one of \"checker\" or \"image\" (or a colour [r, g, b])");
+    Texture t;
+    if (auto c = node.find("checker")) {
+        c->require_object({"a", "b", "scale"});
+        t.kind = Texture::Kind::Checker;
+        if (auto a = c->find("a")) t.a = read_colour01(*a);
+        if (auto b = c->find("b")) t.b = read_colour01(*b);
+        if (auto s = c->find("scale")) t.scale = s->number_at_least(0.0f, false);
+        return t;
+    }
+    const scene_json::Node im = node.at("image");
+    im.require_object({"file", "wrap"});
+    t.kind = Texture::Kind::Image;
+    t.image = read_texture_image(im.at("file"));
+    for (const glm::vec3& p : t.image->pixels)
+        for (int k = 0; k < 3; ++k)
+            if (!(p[k] >= 0.0f && p[k] <= 1.0f)) im.at("file").fail("an albedo texture's values must lie in [0, 1]");
+    if (auto w = im.find("wrap")) {
+        const std::string wrap = w->string();
+        if (wrap == "repeat") t.wrap = Texture::Wrap::Repeat;
+        else if (wrap == "clamp") t.wrap = Texture::Wrap::Clamp;
+        else w->fail("unknown wrap mode \"" + wrap + "\" (known: repeat, clamp)");
+    }
+    return t;
+}
+
+void check_texture_uv(const Scene& scene, const scene_json::Node& objects) {
+    for (std::size_t i = 0; i < scene.objects.size(); ++i) {
+        const Object& obj = scene.objects[i];
+        if (scene.materials[obj.material].albedo_texture < 0) continue;
+        const bool has_uv = visit_shape(obj.shape, [](auto home, const auto& g) {
+            return requires { decltype(home)::uv(g, glm::vec3(0.0f)); };
+        });
+        if (!has_uv) {
+            std::string with;
+            Shapes::for_each_home([&](auto home) {
+                using Home = decltype(home);
+                if constexpr (requires(const typename Home::Geometry& g) { Home::uv(g, glm::vec3(0.0f)); })
+                    with += (with.empty() ? "" : ", ") + std::string(Home::kType);
+            });
+            objects.element(i).at("material").fail("material \"" + scene.materials[obj.material].name +
+                                                   "\" reads a texture, but a " + std::string(shape_type_name(obj.shape)) +
+                                                   " has no uv coordinates yet (shapes with uv: " + with + ")");
+        }
+    }
+}
+
+}  // namespace sweeptrace
