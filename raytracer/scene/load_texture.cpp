@@ -1,10 +1,9 @@
 #include "raytracer/scene/load_texture.hpp"
 
 #include <string>
-#include <system_error>
 
 #include "raytracer/geometry/shape.hpp"
-#include "raytracer/input_error.hpp"
+#include "raytracer/scene/load_image_file.hpp"
 
 namespace sweeptrace {
 
@@ -15,23 +14,6 @@ glm::vec3 read_colour01(const scene_json::Node& node) {
     for (int i = 0; i < 3; ++i)
         if (v[i] > 1.0f) node.element(static_cast<std::size_t>(i)).number_in(0.0f, 1.0f);
     return v;
-}
-
-std::shared_ptr<const Image> read_texture_image(const scene_json::Node& file) {
-    const std::string relative = file.string();
-    if (relative.empty()) file.fail("must name an image (.png, .hdr, .exr or .pfm)");
-    const std::filesystem::path path = file.file().parent_path() / relative;
-    std::error_code ec;
-    if (!std::filesystem::is_regular_file(path, ec))
-        file.fail("texture image \"" + relative + "\" not found (looked for " + path.string() + ")");
-    Image image;
-    try {
-        image = read_image(path);
-    } catch (const InputError& e) {
-        file.fail(e.what());
-    }
-    if (image.width < 1 || image.height < 1) file.fail("texture image is empty");
-    return std::make_shared<const Image>(std::move(image));
 }
 
 }  // namespace
@@ -51,7 +33,7 @@ Texture read_texture(const scene_json::Node& node) {
     const scene_json::Node im = node.at("image");
     im.require_object({"file", "wrap"});
     t.kind = Texture::Kind::Image;
-    t.image = read_texture_image(im.at("file"));
+    t.image = read_image_file(im.at("file"), "texture image");
     for (const glm::vec3& p : t.image->pixels)
         for (int k = 0; k < 3; ++k)
             if (!(p[k] >= 0.0f && p[k] <= 1.0f)) im.at("file").fail("an albedo texture's values must lie in [0, 1]");

@@ -38,6 +38,19 @@ TEST_CASE("texture: each home's uv at known points", "[render][texture]") {
     CHECK(near(SphereShape::uv(s, s.center + glm::vec3(2.0f, 0.0f, 0.0f)), {0.0f, 0.5f}));
     CHECK(near(SphereShape::uv(s, s.center + glm::vec3(0.0f, 0.0f, 2.0f)), {0.25f, 0.5f}));
     CHECK(SphereShape::uv(s, s.center + glm::vec3(0.0f, -2.0f, 0.0f)).y == Approx(1.0f));  // the pole; u is arbitrary
+    const collision::Ellipsoid e{{0.0f, 1.0f, 0.0f}, {2.0f, 1.0f, 3.0f}};
+    CHECK(near(EllipsoidShape::uv(e, e.center + glm::vec3(0.0f, 0.0f, 3.0f)), {0.25f, 0.5f}));
+    CHECK(near(EllipsoidShape::uv(e, e.center + glm::vec3(-2.0f, 0.0f, 0.0f)), {0.5f, 0.5f}));
+    const collision::Cylinder cy{{0.0f, 1.0f, 0.0f}, 0.5f, 2.0f};
+    CHECK(near(CylinderShape::uv(cy, cy.center + glm::vec3(0.0f, 0.5f, 0.5f)), {0.25f, 0.75f}));
+    CHECK(near(CylinderShape::uv(cy, cy.center + glm::vec3(0.2f, -1.0f, 0.0f)), {0.0f, 0.0f}));  // bottom cap
+    const collision::Capsule ca{{0.0f, 0.0f, 0.0f}, 0.5f, 1.0f};  // y from -1 to 1
+    CHECK(near(CapsuleShape::uv(ca, {0.0f, 1.0f, 0.0f}), {0.0f, 1.0f}));
+    CHECK(near(CapsuleShape::uv(ca, {-0.5f, 0.5f, 0.0f}), {0.5f, 0.75f}));
+    const collision::Aabb b{{1.0f, 0.0f, 0.0f}, {2.0f, 4.0f, 6.0f}};
+    CHECK(near(BoxShape::uv(b, b.center + glm::vec3(1.0f, 1.0f, -1.5f)), {0.75f, 0.25f}));   // +x face: (y, z)
+    CHECK(near(BoxShape::uv(b, b.center + glm::vec3(0.5f, -2.0f, 3.0f * 0.5f)), {0.75f, 0.75f}));  // -y face: (x, z)
+    CHECK(near(BoxShape::uv(b, b.center + glm::vec3(-0.5f, 0.0f, 3.0f)), {0.25f, 0.5f}));  // +z face: (x, y)
 }
 
 TEST_CASE("texture: checker parity and bilinear image lookups with repeat and clamp", "[render][texture]") {
@@ -126,12 +139,13 @@ TEST_CASE("texture: scene keys, and a texture on a shape without uv is refused n
     REQUIRE(ok.textures.size() == 1);
     CHECK(ok.materials[0].albedo_texture == 0);
     CHECK(ok.textures[0].scale == 2.0f);
+    dir.write("tri.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
     try {
-        load_scene(dir.write("box.json", head + R"({ "type": "sphere", "radius": 1, "material": "c" },
-                                                   { "type": "box", "size": [1, 1, 1], "material": "c" }] })"));
-        FAIL("a textured box loaded");
+        load_scene(dir.write("mesh.json", head + R"({ "type": "box", "size": [1, 1, 1], "material": "c" },
+                                                    { "type": "mesh", "file": "tri.obj", "material": "c" }] })"));
+        FAIL("a textured mesh loaded");
     } catch (const InputError& e) {
-        CHECK_THAT(e.what(), Catch::Contains("objects[1].material: material \"c\" reads a texture, but a box has no uv") &&
-                                 Catch::Contains("shapes with uv: sphere, disk, quad, triangle"));
+        CHECK_THAT(e.what(), Catch::Contains("objects[1].material: material \"c\" reads a texture, but a mesh has no uv") &&
+                                 Catch::Contains("shapes with uv: sphere, box, cylinder, capsule, ellipsoid, disk, quad, triangle"));
     }
 }

@@ -15,6 +15,7 @@
 #include "raytracer/geometry/shapes/mesh_instance.hpp"
 #include "raytracer/geometry/shapes/scene_keys.hpp"
 #include "raytracer/geometry/shapes/shape_light.hpp"
+#include "raytracer/geometry/shapes/uv_maps.hpp"
 #include "raytracer/geometry/warps.hpp"
 
 namespace sweeptrace {
@@ -38,8 +39,7 @@ struct SphereShape {
     // +Y (the convention of collision's sphere hit uv).
     static glm::vec2 uv(const Geometry& g, const glm::vec3& p) {
         const glm::vec3 d = glm::normalize(p - g.center);
-        const float a = std::atan2(d.z, d.x) / (2.0f * kPi);
-        return {a < 0.0f ? a + 1.0f : a, std::acos(std::clamp(d.y, -1.0f, 1.0f)) / kPi};
+        return {uv_maps::longitude(d.x, d.z), uv_maps::polar(d.y)};
     }
 };
 
