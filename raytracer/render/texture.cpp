@@ -39,7 +39,10 @@ glm::vec2 hit_uv(const Scene& scene, const SurfaceHit& hit) {
     const Object& obj = scene.objects[hit.object];
     const glm::vec3 p(obj.transform.to_object * glm::vec4(hit.point, 1.0f));
     return visit_shape(obj.shape, [&](auto home, const auto& g) -> glm::vec2 {
-        if constexpr (requires { decltype(home)::uv(g, p); }) return decltype(home)::uv(g, p);
+        using Home = decltype(home);
+        if constexpr (requires { Home::uv(g, p); }) return Home::uv(g, p);
+        else if constexpr (requires { Home::mesh_uv(g, scene.meshes, hit.primitive, p); })
+            return Home::mesh_uv(g, scene.meshes, hit.primitive, p);
         else return glm::vec2(0.0f);
     });
 }

@@ -1,6 +1,7 @@
 #include "raytracer/scene/load_texture.hpp"
 
 #include <string>
+#include <type_traits>
 
 #include "raytracer/geometry/shape.hpp"
 #include "raytracer/scene/load_image_file.hpp"
@@ -50,8 +51,11 @@ void check_texture_uv(const Scene& scene, const scene_json::Node& objects) {
     for (std::size_t i = 0; i < scene.objects.size(); ++i) {
         const Object& obj = scene.objects[i];
         if (scene.materials[obj.material].albedo_texture < 0) continue;
-        const bool has_uv = visit_shape(obj.shape, [](auto home, const auto& g) {
-            return requires { decltype(home)::uv(g, glm::vec3(0.0f)); };
+        const bool has_uv = visit_shape(obj.shape, [&](auto home, const auto& g) {
+            if constexpr (std::is_same_v<std::decay_t<decltype(g)>, MeshInstance>)
+                return !scene.meshes[g.mesh].vertex_uvs.empty();
+            else
+                return requires { decltype(home)::uv(g, glm::vec3(0.0f)); };
         });
         if (!has_uv) {
             std::string with;
@@ -61,8 +65,9 @@ void check_texture_uv(const Scene& scene, const scene_json::Node& objects) {
                     with += (with.empty() ? "" : ", ") + std::string(Home::kType);
             });
             objects.element(i).at("material").fail("material \"" + scene.materials[obj.material].name +
-                                                   "\" reads a texture, but a " + std::string(shape_type_name(obj.shape)) +
-                                                   " has no uv coordinates yet (shapes with uv: " + with + ")");
+                                                   "\" reads a texture, but this mesh has no uv coordinates (its OBJ "
+                                                   "gives no vt on some face corner; shapes with uv: " + with +
+                                                   ", and meshes whose faces all carry vt)");
         }
     }
 }

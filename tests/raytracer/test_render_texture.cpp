@@ -5,11 +5,13 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <functional>
 
 #include "convergence_harness.hpp"
 #include "raytracer/input_error.hpp"
 #include "raytracer/render/texture.hpp"
 #include "raytracer/scene/load_scene.hpp"
+#include "raytracer/scene/obj_loader.hpp"
 #include "scene_test_files.hpp"
 
 using namespace sweeptrace;
@@ -80,7 +82,12 @@ TEST_CASE("texture: checker parity and bilinear image lookups with repeat and cl
     CHECK(eval_texture(im, {0.0f, 0.75f}).x == Approx(0.0f));
 }
 
-TEST_CASE("texture: a checker quad under a uniform sky renders albedo(uv) x L at every pixel", "[render][texture]") {
+namespace {
+
+// A checker-textured unit square (object space [0, 1]^2 at z = 0, uv = (x, y)), scaled by 2 and
+// moved to [-1, 1]^2, under a uniform sky: every pixel must read albedo(uv) x L. `add_square`
+// adds the square (a quad, or an OBJ mesh with vt) with the given material.
+void check_checker_square(const std::function<void(Scene&, std::uint32_t, const glm::mat4&)>& add_square) {
     constexpr int size = 32, sub = 8;
     Scene scene = empty_scene(size, size);
     scene.camera.position = {0.0f, 0.0f, 3.0f};
@@ -96,7 +103,7 @@ TEST_CASE("texture: a checker quad under a uniform sky renders albedo(uv) x L at
     m.albedo_texture = 0;
     // The unit quad in object space, scaled by 2 and moved: uv follows the object, not the world.
     const glm::mat4 xf = glm::translate(glm::mat4(1.0f), {-1.0f, -1.0f, 0.0f}) * glm::scale(glm::mat4(1.0f), glm::vec3(2.0f));
-    add_object(scene, collision::Quad{glm::vec3(0.0f), {1.0f, 0.0f, 0.0f}, {0.0f, 1.0f, 0.0f}}, add_material(scene, m), xf, "q");
+    add_square(scene, add_material(scene, m), xf);
     // Truth: a pixel sees the plane z = 0 at world (x, y); uv = ((x + 1) / 2, (y + 1) / 2) on
     // the quad, the sky elsewhere. A diffuse surface facing only the sky reflects albedo x L.
     const double half = std::tan(glm::radians(25.0));
@@ -130,6 +137,28 @@ TEST_CASE("texture: a checker quad under a uniform sky renders albedo(uv) x L at
     }
 }
 
+}  // namespace
+
+TEST_CASE("texture: a checker quad under a uniform sky renders albedo(uv) x L at every pixel", "[render][texture]") {
+    check_checker_square([](Scene& scene, std::uint32_t material, const glm::mat4& xf) {
+        add_object(scene, collision::Quad{glm::vec3(0.0f), {1.0f, 0.0f, 0.0f}, {0.0f, 1.0f, 0.0f}}, material, xf, "q");
+    });
+}
+
+TEST_CASE("texture: an OBJ square with vt renders the same checker through its interpolated uv", "[render][texture]") {
+    test::TempDir dir;
+    // Two triangles; vt listed in a different order from v, so a mix-up of indices would show.
+    const auto file = dir.write("square.obj", "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\n"
+                                              "vt 1 1\nvt 0 0\nvt 1 0\nvt 0 1\n"
+                                              "f 1/2 2/3 3/1\nf 1/2 3/1 4/4\n");
+    const Mesh mesh = load_obj(file);
+    REQUIRE(mesh.vertex_uvs.size() == mesh.triangles.vertices.size());
+    check_checker_square([&](Scene& scene, std::uint32_t material, const glm::mat4& xf) {
+        scene.meshes.push_back(mesh);
+        add_object(scene, MeshInstance{0}, material, xf, "square");
+    });
+}
+
 TEST_CASE("texture: scene keys, and a texture on a shape without uv is refused naming the object", "[scene][texture]") {
     test::TempDir dir;
     const std::string head = R"({ "camera": { "position": [0, 0, 5], "look_at": [0, 0, 0] }, "film": { "width": 4, "height": 4 },
@@ -139,13 +168,13 @@ TEST_CASE("texture: scene keys, and a texture on a shape without uv is refused n
     REQUIRE(ok.textures.size() == 1);
     CHECK(ok.materials[0].albedo_texture == 0);
     CHECK(ok.textures[0].scale == 2.0f);
-    dir.write("tri.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+    dir.write("tri.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nf 1/1 2/1 3\n");  // one corner without vt
     try {
         load_scene(dir.write("mesh.json", head + R"({ "type": "box", "size": [1, 1, 1], "material": "c" },
                                                     { "type": "mesh", "file": "tri.obj", "material": "c" }] })"));
         FAIL("a textured mesh loaded");
     } catch (const InputError& e) {
-        CHECK_THAT(e.what(), Catch::Contains("objects[1].material: material \"c\" reads a texture, but a mesh has no uv") &&
+        CHECK_THAT(e.what(), Catch::Contains("objects[1].material: material \"c\" reads a texture, but this mesh has no uv") &&
                                  Catch::Contains("shapes with uv: sphere, box, cylinder, capsule, ellipsoid, disk, quad, triangle"));
     }
 }
