@@ -218,8 +218,17 @@ TEST_CASE("sun with an angular diameter: the penumbra of a half-plane matches th
         }
 }
 
-TEST_CASE("scene lights: the image is identical bit for bit at 1 and 3 threads", "[render][determinism][lights]") {
+TEST_CASE("scene lights, environment, Mitchell filter, texture: the image is identical bit for bit at 1 and 3 threads",
+          "[render][determinism][lights]") {
     Scene scene = plane_seen_from_above(37, 0.7f);
+    scene.film.filter.type = FilterSpec::Type::Mitchell;  // negative weights and film offsets
+    scene.film.filter.radius = 2.0f;
+    auto map = std::make_shared<Image>(8, 4);
+    for (std::size_t i = 0; i < map->pixels.size(); ++i) map->pixels[i] = glm::vec3(0.1f * static_cast<float>(i % 5));
+    scene.background.kind = Background::Kind::Environment;
+    scene.background.environment = map;
+    scene.textures.push_back(Texture{});  // the default checker
+    scene.materials[0].albedo_texture = 0;
     for (SceneLight::Type type : {SceneLight::Type::Point, SceneLight::Type::Spot, SceneLight::Type::Directional}) {
         SceneLight l;
         l.type = type;
