@@ -111,12 +111,17 @@ Material read_material(const Node& node, const std::string& name, std::vector<Te
         m.type = Material::Type::Dielectric;
         m.albedo = glm::vec3(1.0f);  // clear glass unless tinted
         if (auto ior = node.find("ior")) m.ior = ior->number_at_least(0.0f, false);
+    } else if (type == "thin_dielectric") {
+        node.require_object({"type", "ior", "albedo", "emission", "two_sided"});
+        m.type = Material::Type::ThinDielectric;
+        m.albedo = glm::vec3(1.0f);  // clear unless tinted
+        if (auto ior = node.find("ior")) m.ior = ior->number_at_least(0.0f, false);
     } else if (type == "emissive") {
         node.require_object({"type", "emission", "two_sided"});
         m.type = Material::Type::Emissive;
         m.albedo = glm::vec3(0.0f);  // a light absorbs what reaches it
     } else {
-        type_node.fail("unknown material type \"" + type + "\" (known: diffuse, metal, dielectric, emissive)");
+        type_node.fail("unknown material type \"" + type + "\" (known: diffuse, metal, dielectric, thin_dielectric, emissive)");
     }
     if (auto albedo = node.find("albedo")) {
         if (albedo->value().is_object()) {

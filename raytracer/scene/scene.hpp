@@ -75,12 +75,12 @@ struct Texture {
 };
 
 struct Material {
-    enum class Type { Diffuse, Metal, Dielectric, Emissive };
+    enum class Type { Diffuse, Metal, Dielectric, Emissive, ThinDielectric };
     Type type = Type::Diffuse;
-    glm::vec3 albedo{0.8f};    // Diffuse reflectance / Metal tint / Dielectric transmission tint
+    glm::vec3 albedo{0.8f};    // Diffuse reflectance / Metal tint / (Thin)Dielectric transmission tint
     int albedo_texture = -1;   // index into Scene::textures replacing `albedo` at each hit, or -1
     float roughness = 0.0f;    // Metal: 0 = perfect mirror
-    float ior = 1.5f;          // Dielectric
+    float ior = 1.5f;          // Dielectric, ThinDielectric
     glm::vec3 emission{0.0f};  // radiance leaving the front side; any material may emit
     // Emit from the back side too (e.g. the inside of a closed emissive sphere). The front is the
     // side the outward geometric normal points to: outside of closed shapes, edge_u x edge_v for
