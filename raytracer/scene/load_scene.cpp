@@ -126,7 +126,7 @@ Material read_material(const Node& node, const std::string& name, std::vector<Te
     if (auto albedo = node.find("albedo")) {
         if (albedo->value().is_object()) {
             m.albedo_texture = static_cast<int>(textures.size());
-            textures.push_back(read_texture(*albedo));
+            textures.push_back(read_texture(*albedo, textures));
         } else {
             m.albedo = read_albedo(*albedo);
         }

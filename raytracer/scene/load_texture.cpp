@@ -1,6 +1,7 @@
 #include "raytracer/scene/load_texture.hpp"
 
 #include <string>
+#include <system_error>
 #include <type_traits>
 
 #include "raytracer/geometry/shape.hpp"
@@ -19,7 +20,7 @@ glm::vec3 read_colour01(const scene_json::Node& node) {
 
 }  // namespace
 
-Texture read_texture(const scene_json::Node& node) {
+Texture read_texture(const scene_json::Node& node, const std::vector<Texture>& loaded) {
     node.require_object({"checker", "image"});
     if (node.value().size() != 1) node.fail("give exactly one of \"checker\" or \"image\" (or a colour [r, g, b])");
     Texture t;
@@ -34,7 +35,12 @@ Texture read_texture(const scene_json::Node& node) {
     const scene_json::Node im = node.at("image");
     im.require_object({"file", "wrap"});
     t.kind = Texture::Kind::Image;
-    t.image = read_image_file(im.at("file"), "texture image");
+    const scene_json::Node file = im.at("file");
+    std::error_code ec;
+    t.image_file = std::filesystem::weakly_canonical(file.file().parent_path() / file.string(), ec);
+    for (const Texture& other : loaded)
+        if (other.image && other.image_file == t.image_file) t.image = other.image;
+    if (!t.image) t.image = read_image_file(file, "texture image");
     for (const glm::vec3& p : t.image->pixels)
         for (int k = 0; k < 3; ++k)
             if (!(p[k] >= 0.0f && p[k] <= 1.0f)) im.at("file").fail("an albedo texture's values must lie in [0, 1]");

@@ -71,6 +71,7 @@ struct Texture {
     glm::vec3 a{0.2f}, b{0.8f};  // Checker: the two colours; a at uv = (0, 0)
     float scale = 8.0f;          // Checker: squares per unit of u and of v
     std::shared_ptr<const Image> image;  // Image: linear RGB (an sRGB .png is decoded on load)
+    std::filesystem::path image_file;    // Image: the file, canonical: one load however many textures use it
     Wrap wrap = Wrap::Repeat;
 };
 

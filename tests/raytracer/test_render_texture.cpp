@@ -168,6 +168,14 @@ TEST_CASE("texture: scene keys, and a texture on a shape without uv is refused n
     REQUIRE(ok.textures.size() == 1);
     CHECK(ok.materials[0].albedo_texture == 0);
     CHECK(ok.textures[0].scale == 2.0f);
+    write_image(Image(2, 1), dir.path() / "grey.png");
+    const Scene shared = load_scene(dir.write("shared.json", R"({ "camera": { "position": [0, 0, 5], "look_at": [0, 0, 0] },
+        "film": { "width": 4, "height": 4 }, "objects": [],
+        "materials": { "a": { "type": "diffuse", "albedo": { "image": { "file": "grey.png" } } },
+                       "b": { "type": "metal", "albedo": { "image": { "file": "./grey.png", "wrap": "clamp" } } } } })"));
+    REQUIRE(shared.textures.size() == 2);
+    CHECK(shared.textures[0].image == shared.textures[1].image);  // one image, loaded once
+    CHECK(shared.textures[1].wrap == Texture::Wrap::Clamp);
     dir.write("tri.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nf 1/1 2/1 3\n");  // one corner without vt
     try {
         load_scene(dir.write("mesh.json", head + R"({ "type": "box", "size": [1, 1, 1], "material": "c" },
