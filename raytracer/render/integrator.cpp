@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 #include <glm/geometric.hpp>
 
@@ -61,8 +62,8 @@ glm::vec3 PathIntegrator::radiance(collision::Ray ray, Rng& rng, std::uint64_t& 
             hit.shading_normal = -hit.shading_normal;
         }
         const Material& base = scene_.materials[scene_.objects[hit.object].material];
-        Material textured;  // filled only for materials that read a texture (render/texture.hpp)
-        const Material& mat = base.albedo_texture < 0 ? base : (textured = textured_material(scene_, base, hit));
+        std::optional<Material> textured;  // only for materials that read a texture (render/texture.hpp)
+        const Material& mat = base.albedo_texture < 0 ? base : textured.emplace(textured_material(scene_, base, hit));
         const glm::vec3 wo = -ray.dir;
 
         const glm::vec3 le = emitted_radiance(mat, hit.normal, wo);

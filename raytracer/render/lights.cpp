@@ -164,8 +164,11 @@ bool LightSet::sample(const glm::vec3& p, std::uint32_t p_object, float u_select
     if (cdf_.empty()) return false;
     const auto it = std::upper_bound(cdf_.begin(), cdf_.end(), u_select);
     const auto index = static_cast<std::size_t>(std::min<std::ptrdiff_t>(it - cdf_.begin(), cdf_.size() - 1));
-    if (index >= lights_.size() + scene_lights_.size()) return sample_environment(p, u1, u2, out);
-    if (index >= lights_.size()) return sample_scene_light(scene_lights_[index - lights_.size()], p, u1, u2, out);
+    if (index >= lights_.size()) {  // one test on the emissive objects' path
+        const std::size_t k = index - lights_.size();
+        return k < scene_lights_.size() ? sample_scene_light(scene_lights_[k], p, u1, u2, out)
+                                        : sample_environment(p, u1, u2, out);
+    }
     const Light& l = lights_[index];
     if (l.shape.strategy == Strategy::SphereCone) {
         bool cone = false;
