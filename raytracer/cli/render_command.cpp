@@ -24,6 +24,7 @@
 #include "raytracer/input_error.hpp"
 #include "raytracer/render/renderer.hpp"
 #include "raytracer/render/tone_map.hpp"
+#include "raytracer/scene/emitter_check.hpp"
 #include "raytracer/scene/load_scene.hpp"
 
 namespace sweeptrace {
@@ -174,6 +175,7 @@ int run_render(const RenderArgs& a) {
     }
 
     Scene scene = load_scene(scene_path);
+    for (const std::string& w : emitters_facing_nothing(scene)) std::fprintf(stderr, "sweeptrace: warning: %s\n", w.c_str());
     // --width or --height alone keeps the film's aspect ratio; both set it.
     const int film_w = scene.film.width, film_h = scene.film.height;
     if (a.width_opt->count()) scene.film.width = a.width;
@@ -238,7 +240,7 @@ int run_render(const RenderArgs& a) {
         return 130;
     }
     if (!a.samples.empty()) write_part(result, identity, range.begin, out);
-    else write_image(is_display_format(out) ? to_display(result.image) : result.image, out);
+    else write_image(is_display_format(out) ? to_display(result.image, scene.film.exposure, scene.film.tone_curve) : result.image, out);
     if (!a.variance.empty()) write_image(result.variance, a.variance);
     if (st.cancelled)
         std::fprintf(stderr, "sweeptrace: interrupted: wrote %s with %d of %d samples per pixel\n", out.string().c_str(),
@@ -266,7 +268,7 @@ void add_render_command(CLI::App& app, int& exit_code) {
     auto* cmd = app.add_subcommand("render", "Render a JSON scene to an image");
     cmd->add_option("scene", args->scene, "Scene file (JSON, see scenes/README.md)")->required();
     cmd->add_option("-o,--output", args->output,
-                    "Output image: .png (8-bit sRGB, radiance clamped to [0, 1]), .pfm or .exr (linear float). "
+                    "Output image: .png (8-bit sRGB: radiance x 2^film.exposure through film.tone_curve, by default clamped to [0, 1]), .pfm or .exr (linear float). "
                     "Default: the scene's name with .png, in the current directory");
     cmd->add_option("--variance", args->variance,
                     "Also write the per-pixel variance of each pixel's mean (.exr/.pfm): the samples' unbiased "

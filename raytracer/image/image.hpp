@@ -23,7 +23,7 @@ struct Image {
 // file or destroys an existing one. Throws InputError (unknown extension, unwritable path).
 void write_image(const Image& image, const std::filesystem::path& path);
 
-// Reads .png (sRGB decoded to linear), .pfm, .exr. Throws InputError naming the file.
+// Reads .png (sRGB decoded to linear), .pfm, .exr, .hdr (Radiance RGBE). Throws InputError naming the file.
 Image read_image(const std::filesystem::path& path);
 
 }  // namespace sweeptrace

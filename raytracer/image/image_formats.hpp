@@ -19,6 +19,9 @@ Image read_pfm(const std::filesystem::path& path);
 void write_exr(const Image& image, const std::filesystem::path& path);
 Image read_exr(const std::filesystem::path& path);
 
+// Radiance .hdr (RGBE), read only: linear float.
+Image read_hdr(const std::filesystem::path& path);
+
 }  // namespace sweeptrace::formats
 
 namespace sweeptrace::formats {

@@ -15,7 +15,7 @@
 namespace sweeptrace {
 namespace {
 
-enum class Format { Png, Pfm, Exr };
+enum class Format { Png, Pfm, Exr, Hdr };
 
 Format format_of(const std::filesystem::path& path, const char* verb) {
     std::string ext = path.extension().string();
@@ -23,6 +23,7 @@ Format format_of(const std::filesystem::path& path, const char* verb) {
     if (ext == ".png") return Format::Png;
     if (ext == ".pfm") return Format::Pfm;
     if (ext == ".exr") return Format::Exr;
+    if (ext == ".hdr" && std::string(verb) == "read") return Format::Hdr;
     throw InputError(std::string("cannot ") + verb + " '" + path.string() + "': unknown image extension '" + ext +
                      "' (use .png, .pfm or .exr)");
 }
@@ -40,6 +41,7 @@ void write_image(const Image& image, const std::filesystem::path& path) {
             case Format::Png: formats::write_png(image, temp); break;
             case Format::Pfm: formats::write_pfm(image, temp); break;
             case Format::Exr: formats::write_exr(image, temp); break;
+            case Format::Hdr: break;  // format_of refuses to write .hdr
         }
     });
 }
@@ -49,6 +51,7 @@ Image read_image(const std::filesystem::path& path) {
         case Format::Png: return formats::read_png(path);
         case Format::Pfm: return formats::read_pfm(path);
         case Format::Exr: return formats::read_exr(path);
+        case Format::Hdr: return formats::read_hdr(path);
     }
     throw InputError("cannot read '" + path.string() + "'");
 }

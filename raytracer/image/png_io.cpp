@@ -1,8 +1,9 @@
 // PNG through stb: 8-bit sRGB on write, 8- or 16-bit (any channel count) on read.
-// The only file that compiles stb's implementations.
+// The only file that compiles stb's implementations (PNG and, for hdr_io.cpp, Radiance HDR).
 #define STB_IMAGE_WRITE_IMPLEMENTATION
 #define STB_IMAGE_IMPLEMENTATION
 #define STBI_ONLY_PNG
+#define STBI_ONLY_HDR  // for hdr_io.cpp
 #include <stb/stb_image.h>
 #include <stb/stb_image_write.h>
 

@@ -14,7 +14,8 @@ ShadingContext make_shading_context(const SurfaceHit& hit, const glm::vec3& wo) 
 }
 
 bool is_delta(const Material& m) {
-    return m.type == Material::Type::Dielectric || (m.type == Material::Type::Metal && m.roughness == 0.0f);
+    return m.type == Material::Type::Dielectric || m.type == Material::Type::ThinDielectric ||
+           (m.type == Material::Type::Metal && m.roughness == 0.0f);
 }
 
 float fresnel_dielectric(float cos_i, float eta, float& cos_t) {
@@ -104,6 +105,7 @@ BsdfEval eval_bsdf(const Material& m, const ShadingContext& ctx, const glm::vec3
             return e;
         }
         case Material::Type::Dielectric:
+        case Material::Type::ThinDielectric:
         case Material::Type::Emissive:
             return e;
     }
@@ -160,6 +162,8 @@ bool sample_bsdf(const Material& m, const ShadingContext& ctx, float u0, float u
             out = BsdfSample{wi, m.albedo / (eta * eta), 1.0f - f, true};
             return true;
         }
+        case Material::Type::ThinDielectric:
+            return sample_thin_dielectric(m, ctx, u0, out);
         case Material::Type::Emissive:
             return false;
     }

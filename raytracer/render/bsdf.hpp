@@ -76,4 +76,14 @@ inline glm::vec3 emitted_radiance(const Material& m, const glm::vec3& n, const g
 // internal reflection and writes cos_t (the refracted cosine, >= 0) otherwise.
 float fresnel_dielectric(float cos_i, float eta, float& cos_t);
 
+// A thin dielectric sheet (pbrt-v4's ThinDielectricBxDF): two parallel smooth interfaces of
+// index ior, the light bouncing between them summed in closed form. With R the single
+// interface's Fresnel reflectance at cos_i and T = 1 - R, the sheet reflects
+//   R' = R + T^2 R (1 + R^2 + R^4 + ...) = R + T^2 R / (1 - R^2)
+// and transmits T' = 1 - R' straight through (the two refractions cancel), tinted by albedo;
+// nothing is absorbed, so with albedo 1 the weights sum to exactly 1 at every angle. Two-sided,
+// delta in both lobes.
+float thin_dielectric_reflectance(float cos_i, float ior);
+bool sample_thin_dielectric(const Material& m, const ShadingContext& ctx, float u0, BsdfSample& out);
+
 }  // namespace sweeptrace

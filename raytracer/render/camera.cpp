@@ -8,7 +8,8 @@
 
 namespace sweeptrace {
 
-CameraModel::CameraModel(const Camera& c, int width, int height) : origin_(c.position) {
+CameraModel::CameraModel(const Camera& c, int width, int height, const FilterSpec& filter)
+    : origin_(c.position), filter_(filter) {
     forward_ = glm::normalize(c.look_at - c.position);
     right_ = glm::normalize(glm::cross(forward_, c.up));
     up_ = glm::cross(right_, forward_);

@@ -2,17 +2,24 @@
 // Primary rays: a pinhole, or a thin lens (aperture diameter > 0) focused at focus_distance
 // (by default the distance to look_at). The vertical field of view spans the film's height; the
 // horizontal extent follows the film's aspect ratio (width / height). Rays start on the plane
-// near_clip ahead of the eye along the view axis (nothing between the eye and it is seen).
+// near_clip ahead of the eye along the view axis (nothing between the eye and it is seen). Film
+// positions within a pixel come from the pixel filter (film_offset).
 #include <glm/vec3.hpp>
 
 #include "collision/ray.hpp"
+#include "raytracer/render/pixel_filter.hpp"
 #include "raytracer/scene/scene.hpp"
 
 namespace sweeptrace {
 
 class CameraModel {
 public:
-    CameraModel(const Camera& camera, int width, int height);
+    CameraModel(const Camera& camera, int width, int height, const FilterSpec& filter = {});
+
+    // Where in its pixel a camera sample lands, from two uniforms, and the weight it carries:
+    // drawn from the film's reconstruction filter (render/pixel_filter.hpp). The default box
+    // gives (u1, u2) themselves with weight 1.
+    FilmOffset film_offset(float u1, float u2) const { return filter_.sample(u1, u2); }
 
     // The ray through film position (x, y) in pixels (x right, y down, (0, 0) the top-left corner
     // of the top-left pixel) and lens sample (u1, u2) in [0, 1)^2. Direction is unit length.
@@ -26,6 +33,7 @@ private:
     float lens_radius_ = 0.0f;
     float focus_distance_ = 1.0f;
     float near_clip_ = 0.0f;
+    PixelFilter filter_;
 };
 
 }  // namespace sweeptrace

@@ -2,18 +2,22 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 #include <glm/geometric.hpp>
 
 #include "raytracer/render/bsdf.hpp"
 #include "raytracer/render/guiding_path_recorder.hpp"
 #include "raytracer/render/guiding_sampler.hpp"
+#include "raytracer/render/environment_light.hpp"
 #include "raytracer/render/sampling.hpp"
+#include "raytracer/render/texture.hpp"
 
 namespace sweeptrace {
 
 glm::vec3 background_radiance(const Background& bg, const glm::vec3& dir) {
     if (bg.kind == Background::Kind::Constant) return bg.color;
+    if (bg.kind == Background::Kind::Environment) return environment_radiance(bg, dir);
     const float t = std::clamp(dir.y, 0.0f, 1.0f);
     return (1.0f - t) * bg.horizon + t * bg.zenith;
 }
@@ -34,6 +38,7 @@ collision::Ray PathIntegrator::continue_ray(const SurfaceHit& hit, const glm::ve
 }
 
 collision::Ray PathIntegrator::shadow_ray(const SurfaceHit& hit, const LightSample& ls) const {
+    if (ls.at_infinity) return spawn_ray(hit, ls.wi);  // a directional light: no end to stop short of
     const glm::vec3& target = ls.point;
     collision::Ray r = spawn_ray_to(hit, target, ls.point_error, ls.normal);
     if (defect_ == PlantedDefect::NoRayOffset) {  // planted: the shadow ray starts on the surface
@@ -64,14 +69,17 @@ glm::vec3 PathIntegrator::radiance(collision::Ray ray, PixelSampler& sampler, st
         SurfaceHit hit;
         ++rays;
         if (!accel_.intersect(ray, hit)) {
-            result += beta * background_radiance(scene_.background, ray.dir);
+            if (!lights_.background_is_light()) result += beta * background_radiance(scene_.background, ray.dir);
+            if (lights_.has_distant()) result += beta * lights_.escaped_radiance(ray.dir, nee && !full_weight ? prev_pdf : 0.0f);
             break;
         }
         if (defect_ == PlantedDefect::FlippedNormals) {  // planted: inward normals
             hit.normal = -hit.normal;
             hit.shading_normal = -hit.shading_normal;
         }
-        const Material& mat = scene_.materials[scene_.objects[hit.object].material];
+        const Material& base = scene_.materials[scene_.objects[hit.object].material];
+        std::optional<Material> textured;  // only for materials that read a texture (render/texture.hpp)
+        const Material& mat = base.albedo_texture < 0 ? base : textured.emplace(textured_material(scene_, base, hit));
         const glm::vec3 wo = -ray.dir;
 
         const glm::vec3 le = emitted_radiance(mat, hit.normal, wo);
@@ -101,7 +109,8 @@ glm::vec3 PathIntegrator::radiance(collision::Ray ray, PixelSampler& sampler, st
                 if (e.pdf > 0.0f) {
                     ++rays;
                     if (!accel_.occluded(shadow_ray(hit, ls))) {
-                        const float w = power_heuristic(ls.pdf, guide ? guided_pdf(*guide, e.pdf, ls.wi) : e.pdf);
+                        const float w =
+                            ls.delta ? 1.0f : power_heuristic(ls.pdf, guide ? guided_pdf(*guide, e.pdf, ls.wi) : e.pdf);
                         result += beta * e.f_cos * ls.radiance * (w / ls.pdf);
                         if (learn) recorder.add_light_sample(hit.point, ctx.frame.n, ls.wi, ls.radiance * (w / ls.pdf));
                     } else if (learn) {

@@ -8,7 +8,9 @@
 //   - BSDF sampling: the next vertex, if emissive, contributes weighted against the density with
 //     which NEE from the previous vertex would have sampled it.
 // Delta lobes (mirror, glass) take no NEE and give the BSDF-sampled ray full weight; the camera
-// ray and escaped rays (the background is not a sampled light) too. Sampling::BsdfOnly turns NEE
+// ray and escaped rays (the background is not a sampled light) too. Delta lights (point, spot,
+// a directional light without a diameter) come only from NEE, at full weight; a sun with an
+// angular diameter is found by escaped rays too (LightSet::escaped_radiance, MIS weighted). Sampling::BsdfOnly turns NEE
 // off and gives every emitter hit full weight: an independent estimator of the same integral.
 //
 // Depth: max_depth counts path vertices after the camera, the emitting vertex included, so

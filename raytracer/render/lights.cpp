@@ -80,11 +80,21 @@ LightSet::LightSet(const Scene& scene, PlantedDefect defect)
         lights_.push_back(std::move(l));
         weights.push_back(weight);
     }
+    add_scene_lights(scene, weights);
     double total = 0.0;
     for (float w : weights) total += w;
     double running = 0.0;
-    for (std::size_t k = 0; k < lights_.size(); ++k) {
-        lights_[k].probability = static_cast<float>(weights[k] / total);
+    for (std::size_t k = 0; k < weights.size(); ++k) {
+        const float probability = static_cast<float>(weights[k] / total);
+        if (k < lights_.size()) {
+            lights_[k].probability = probability;
+        } else if (k == lights_.size() + scene_lights_.size()) {
+            env_probability_ = probability;
+        } else {
+            NonSurfaceLight& l = scene_lights_[k - lights_.size()];
+            l.probability = probability;
+            if (l.sun >= 0) suns_[static_cast<std::size_t>(l.sun)].probability = probability;
+        }
         running += weights[k];
         cdf_.push_back(static_cast<float>(running / total));
     }
@@ -151,9 +161,15 @@ float LightSet::sample_area(const Light& l, float u_part, float u1, float u2, Su
 
 bool LightSet::sample(const glm::vec3& p, std::uint32_t p_object, float u_select, float u_part, float u1, float u2,
                       LightSample& out) const {
-    if (lights_.empty()) return false;
+    if (cdf_.empty()) return false;
     const auto it = std::upper_bound(cdf_.begin(), cdf_.end(), u_select);
-    const Light& l = lights_[static_cast<std::size_t>(std::min<std::ptrdiff_t>(it - cdf_.begin(), cdf_.size() - 1))];
+    const auto index = static_cast<std::size_t>(std::min<std::ptrdiff_t>(it - cdf_.begin(), cdf_.size() - 1));
+    if (index >= lights_.size()) {  // one test on the emissive objects' path
+        const std::size_t k = index - lights_.size();
+        return k < scene_lights_.size() ? sample_scene_light(scene_lights_[k], p, u1, u2, out)
+                                        : sample_environment(p, u1, u2, out);
+    }
+    const Light& l = lights_[index];
     if (l.shape.strategy == Strategy::SphereCone) {
         bool cone = false;
         const bool ok = sample_cone(l, p, p_object, u1, u2, out, cone);

@@ -24,13 +24,31 @@
 // emission times area (times 2 when two-sided), the area as the shape's home states it (a
 // stand-in for curved shapes under non-uniform scales): any positive weight is unbiased, and
 // pdf() uses exactly the probabilities sample() used.
+//
+// The scene's "lights" (scene/scene_light.hpp; render/scene_lights.cpp) join the same selection,
+// after the emissive objects, weighted by power / pi like them (an emitter's weight, luminance x
+// area, is its power / pi): a point light 4 I, a spot 2 I (1 - (cos_start + cos_cone) / 2), a
+// directional light E R^2 with R the radius of the sphere around the scene's bounds (the power it
+// puts into the scene, pbrt-v4's estimate). Strategies:
+// - Point and spot: the one direction toward the position, pdf = selection probability, marked
+//   delta (no MIS: a BSDF-sampled ray never finds a point);
+// - Directional with angular_diameter 0: the one direction, delta likewise, shadow ray to infinity;
+// - Directional with a disc of directions (a sun): uniform in its cone of half-angle alpha, of
+//   radiance L = E / (pi sin^2 alpha), so the irradiance on a surface facing it is E whatever
+//   the diameter; BSDF-sampled rays that escape into the cone find it too (escaped_radiance),
+//   weighted by MIS against the same cone density.
+// - An environment background (render/environment_light.hpp) is one more light, last, weighted
+//   R^2 int lum(L) d omega (its power / pi, as for a directional light); sampled by its texel
+//   distribution, found by escaped rays, MIS between the two.
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include <glm/vec3.hpp>
 
 #include "raytracer/geometry/shapes/shape_light.hpp"
 #include "raytracer/geometry/surface_hit.hpp"
+#include "raytracer/render/environment_light.hpp"
 #include "raytracer/render/planted_defect.hpp"
 #include "raytracer/scene/scene.hpp"
 
@@ -44,6 +62,12 @@ struct LightSample {
     float distance = 0.0f;
     float pdf = 0.0f;             // solid angle at the shading point, light selection included
     glm::vec3 radiance{0.0f};     // emitted toward the shading point (non-zero when returned)
+    // A point or a single direction: `pdf` is the selection probability alone and no BSDF
+    // sample can find the light, so the sample takes MIS weight 1 and `radiance` is what the
+    // light delivers (intensity / d^2 for points, irradiance for directions).
+    bool delta = false;
+    // At infinity (directional): the shadow ray goes along `wi` without end; `point` is unused.
+    bool at_infinity = false;
 };
 
 class LightSet {
@@ -52,7 +76,7 @@ public:
     // bug acts on light sampling as it does on the intersector's hits.
     explicit LightSet(const Scene& scene, PlantedDefect defect = PlantedDefect::None);
 
-    bool empty() const { return lights_.empty(); }
+    bool empty() const { return cdf_.empty(); }
     std::size_t size() const { return lights_.size(); }
     bool is_light(std::uint32_t object) const {
         return object < light_of_object_.size() && light_of_object_[object] >= 0;
@@ -74,6 +98,18 @@ public:
     // light point `hit`, reached from `p` by a ray. Zero when hit.object is not a light.
     float pdf(const glm::vec3& p, std::uint32_t p_object, const SurfaceHit& hit) const;
 
+    // True when some light sits at infinity with a disc of directions (a sun): rays that escape
+    // the scene must then ask escaped_radiance.
+    bool has_distant() const { return !suns_.empty() || env_ != nullptr; }
+    // True when the background is an environment map sampled as a light: escaped_radiance then
+    // returns its radiance (MIS weighted) and the integrator must not add it again.
+    bool background_is_light() const { return env_ != nullptr; }
+    // Radiance of the suns and of an environment light along unit direction `dir` of a ray that escaped the scene, each
+    // weighted by MIS against its cone density when `bsdf_pdf` > 0 (the solid-angle density the
+    // BSDF sampled `dir` with); `bsdf_pdf` <= 0 gives full weight (camera rays, delta bounces,
+    // BSDF-only sampling).
+    glm::vec3 escaped_radiance(const glm::vec3& dir, float bsdf_pdf) const;
+
 private:
     struct Light {
         std::uint32_t object = 0;
@@ -88,11 +124,31 @@ private:
                      bool& sampled) const;
     float sample_area(const Light& l, float u_part, float u1, float u2, SurfacePoint& world) const;
 
+    // The scene's "lights" (render/scene_lights.cpp).
+    struct Sun {
+        glm::vec3 to_light{0.0f};  // unit, toward the light
+        float cos_max = 1.0f, omc = 0.0f;  // cos(alpha), 1 - cos(alpha)
+        glm::vec3 radiance{0.0f};
+        float probability = 0.0f;
+    };
+    struct NonSurfaceLight {
+        const SceneLight* light = nullptr;
+        float probability = 0.0f;
+        int sun = -1;  // index into suns_ for a directional light with a disc of directions
+    };
+    void add_scene_lights(const Scene& scene, std::vector<float>& weights);
+    bool sample_scene_light(const NonSurfaceLight& l, const glm::vec3& p, float u1, float u2, LightSample& out) const;
+    bool sample_environment(const glm::vec3& p, float u1, float u2, LightSample& out) const;
+
     const Scene* scene_ = nullptr;
     float normal_sign_ = 1.0f;                  // -1 under PlantedDefect::FlippedNormals
     std::vector<Light> lights_;
     std::vector<float> cdf_;                    // cumulative selection weights, normalised
     std::vector<std::int32_t> light_of_object_; // object index -> light index or -1
+    std::vector<NonSurfaceLight> scene_lights_; // after lights_ in cdf_
+    std::vector<Sun> suns_;
+    std::shared_ptr<const EnvironmentLight> env_;  // the background, when it is a map that emits
+    float env_probability_ = 0.0f;                 // it is the last entry of cdf_
 };
 
 }  // namespace sweeptrace

@@ -47,7 +47,7 @@ public:
           tiles_x_((width_ + kTileSize - 1) / kTileSize),
           tiles_y_((height_ + kTileSize - 1) / kTileSize),
           lights_(scene, defect),
-          camera_(scene.camera, width_, height_),
+          camera_(scene.camera, width_, height_, scene.film.filter),
           integrator_(scene, accel, lights_, opt.max_depth, opt.sampling, defect, opt.roulette),
           sum_(static_cast<std::size_t>(width_) * height_),
           sum_sq_(sum_.size(), glm::dvec3(0.0)),
@@ -168,10 +168,13 @@ private:
             for (int x = x0; x < x1; ++x) {
                 const std::size_t pixel = static_cast<std::size_t>(y) * width_ + x;
                 PixelSampler sampler(opt_.sampler, opt_.seed, pixel, static_cast<std::uint64_t>(sample));
-                const glm::vec2 film = sampler.get2d(sample_dim::kFilm);
+                const glm::vec2 u_film = sampler.get2d(sample_dim::kFilm);
+                const FilmOffset film = camera_.film_offset(u_film.x, u_film.y);  // from the pixel filter
                 const glm::vec2 lens = sampler.get2d(sample_dim::kLens);
-                const glm::vec2 p = glm::vec2(static_cast<float>(x), static_cast<float>(y)) + film;
-                glm::vec3 l = integrator_.radiance(camera_.generate(p.x, p.y, lens.x, lens.y), sampler, rays, records);
+                const float fx = static_cast<float>(x) + film.dx;
+                const float fy = static_cast<float>(y) + film.dy;
+                glm::vec3 l =
+                    film.weight * integrator_.radiance(camera_.generate(fx, fy, lens.x, lens.y), sampler, rays, records);
                 if (!std::isfinite(l.x) || !std::isfinite(l.y) || !std::isfinite(l.z)) {
                     l = glm::vec3(0.0f);
                     ++nonfinite;

@@ -10,6 +10,11 @@
 #include "raytracer/geometry/shape.hpp"
 #include "raytracer/input_error.hpp"
 #include "raytracer/scene/json_reader.hpp"
+#include "raytracer/scene/load_film_display.hpp"
+#include "raytracer/scene/load_environment.hpp"
+#include "raytracer/scene/load_filter.hpp"
+#include "raytracer/scene/load_lights.hpp"
+#include "raytracer/scene/load_texture.hpp"
 #include "raytracer/scene/obj_loader.hpp"
 #include "raytracer/scene/scene_transform.hpp"
 #include "raytracer/scene/text_file.hpp"
@@ -51,7 +56,7 @@ Camera read_camera(const Node& node) {
 }
 
 Film read_film(const Node& node) {
-    node.require_object({"width", "height", "spp", "max_depth", "sampler", "guiding"});
+    node.require_object({"width", "height", "spp", "max_depth", "sampler", "guiding", "exposure", "tone_curve", "filter"});
     Film film;
     film.width = static_cast<int>(node.at("width").integer(1, kMaxImageSide));
     film.height = static_cast<int>(node.at("height").integer(1, kMaxImageSide));
@@ -64,15 +69,19 @@ Film read_film(const Node& node) {
         else sampler->fail("unknown sampler \"" + name + "\" (known: sobol, independent)");
     }
     if (auto guiding = node.find("guiding")) film.guiding = guiding->boolean();
+    read_film_display(node, film);
+    if (auto f = node.find("filter")) film.filter = read_filter(*f);
     return film;
 }
 
 Background read_background(const Node& node) {
-    node.require_object({"color", "sky"});
+    node.require_object({"color", "sky", "environment"});
     Background background;
-    const bool color = node.has("color"), sky = node.has("sky");
-    if (color == sky) node.fail("give exactly one of \"color\" or \"sky\"");
-    if (color) {
+    const bool color = node.has("color"), sky = node.has("sky"), env = node.has("environment");
+    if (int(color) + int(sky) + int(env) != 1) node.fail("give exactly one of \"color\", \"sky\" or \"environment\"");
+    if (env) {
+        read_environment(node.at("environment"), background);
+    } else if (color) {
         background.kind = Background::Kind::Constant;
         background.color = node.at("color").vec3_at_least(0.0f);
     } else {
@@ -92,7 +101,7 @@ glm::vec3 read_albedo(const Node& node) {
     return v;
 }
 
-Material read_material(const Node& node, const std::string& name) {
+Material read_material(const Node& node, const std::string& name, std::vector<Texture>& textures) {
     if (!node.value().is_object()) node.fail("must be an object with a \"type\"");
     const Node type_node = node.at("type");
     const std::string type = type_node.string();
@@ -110,14 +119,26 @@ Material read_material(const Node& node, const std::string& name) {
         m.type = Material::Type::Dielectric;
         m.albedo = glm::vec3(1.0f);  // clear glass unless tinted
         if (auto ior = node.find("ior")) m.ior = ior->number_at_least(0.0f, false);
+    } else if (type == "thin_dielectric") {
+        node.require_object({"type", "ior", "albedo", "emission", "two_sided"});
+        m.type = Material::Type::ThinDielectric;
+        m.albedo = glm::vec3(1.0f);  // clear unless tinted
+        if (auto ior = node.find("ior")) m.ior = ior->number_at_least(0.0f, false);
     } else if (type == "emissive") {
         node.require_object({"type", "emission", "two_sided"});
         m.type = Material::Type::Emissive;
         m.albedo = glm::vec3(0.0f);  // a light absorbs what reaches it
     } else {
-        type_node.fail("unknown material type \"" + type + "\" (known: diffuse, metal, dielectric, emissive)");
+        type_node.fail("unknown material type \"" + type + "\" (known: diffuse, metal, dielectric, thin_dielectric, emissive)");
     }
-    if (auto albedo = node.find("albedo")) m.albedo = read_albedo(*albedo);
+    if (auto albedo = node.find("albedo")) {
+        if (albedo->value().is_object()) {
+            m.albedo_texture = static_cast<int>(textures.size());
+            textures.push_back(read_texture(*albedo, textures));
+        } else {
+            m.albedo = read_albedo(*albedo);
+        }
+    }
     if (auto emission = node.find("emission")) {
         m.emission = emission->vec3_at_least(0.0f);
         if (m.type == Material::Type::Emissive && m.emission == glm::vec3(0.0f))
@@ -129,7 +150,8 @@ Material read_material(const Node& node, const std::string& name) {
     return m;
 }
 
-std::map<std::string, std::uint32_t> read_materials(const Node& node, std::vector<Material>& out) {
+std::map<std::string, std::uint32_t> read_materials(const Node& node, std::vector<Material>& out,
+                                                    std::vector<Texture>& textures) {
     if (!node.value().is_object())
         node.fail("must be an object mapping names to materials, got " + scene_json::describe_type(node.value()));
     std::map<std::string, std::uint32_t> index;
@@ -137,7 +159,7 @@ std::map<std::string, std::uint32_t> read_materials(const Node& node, std::vecto
         const Node m = node.at(item.key());
         if (item.key().empty()) m.fail("a material name must not be empty");
         index[item.key()] = static_cast<std::uint32_t>(out.size());
-        out.push_back(read_material(m, item.key()));
+        out.push_back(read_material(m, item.key(), textures));
     }
     return index;
 }
@@ -252,7 +274,7 @@ Scene load_scene(const std::filesystem::path& file) {
     const std::string text = read_text_file(file, "scene");
     const nlohmann::json doc = scene_json::parse(text, file);
     const Node root(doc, file);
-    root.require_object({"description", "camera", "film", "background", "seed", "materials", "objects"});
+    root.require_object({"description", "camera", "film", "background", "seed", "materials", "objects", "lights"});
 
     Scene scene;
     scene.source = file;
@@ -261,8 +283,10 @@ Scene load_scene(const std::filesystem::path& file) {
     scene.film = read_film(root.at("film"));
     if (auto b = root.find("background")) scene.background = read_background(*b);
     if (auto s = root.find("seed")) scene.seed = s->unsigned_integer();
-    ObjectReader objects(scene, read_materials(root.at("materials"), scene.materials));
+    ObjectReader objects(scene, read_materials(root.at("materials"), scene.materials, scene.textures));
     objects.read_all(root.at("objects"));
+    check_texture_uv(scene, root.at("objects"));
+    if (auto l = root.find("lights")) scene.lights = read_lights(*l);
     return scene;
 }
 

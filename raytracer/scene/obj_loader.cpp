@@ -45,6 +45,31 @@ std::vector<std::size_t> face_lines(const std::string& text, const std::string& 
     return lines;
 }
 
+// A face corner's texture coordinate index: -1 is "none" (then the mesh has no uv), anything else
+// must be in range.
+template <class Where>
+void check_texcoord(int index, std::size_t count, bool& all_uvs, Where where) {
+    if (index < 0) {
+        if (index != -1) throw InputError(where() + ": texture coordinate index out of range");
+        all_uvs = false;
+    } else if (static_cast<std::size_t>(index) >= count) {
+        throw InputError(where() + ": texture coordinate index out of range (refers to vt " + std::to_string(index + 1) +
+                         ", the file has " + std::to_string(count) + ")");
+    }
+}
+
+struct VertexKey {
+    int v, n, t;
+    bool operator==(const VertexKey&) const = default;
+};
+struct VertexKeyHash {
+    std::size_t operator()(const VertexKey& k) const {
+        return std::hash<std::uint64_t>()((static_cast<std::uint64_t>(static_cast<std::uint32_t>(k.v)) << 32) ^
+                                          (static_cast<std::uint64_t>(static_cast<std::uint32_t>(k.n)) << 16) ^
+                                          static_cast<std::uint32_t>(k.t));
+    }
+};
+
 std::string first_line(const std::string& s) {
     std::string out = s.substr(0, s.find('\n'));
     while (!out.empty() && (out.back() == '\r' || out.back() == ' ')) out.pop_back();
@@ -71,6 +96,7 @@ Mesh load_obj(const std::filesystem::path& file) {
     const tinyobj::attrib_t& attrib = reader.GetAttrib();
     const std::size_t vertex_count = attrib.vertices.size() / 3;
     const std::size_t normal_count = attrib.normals.size() / 3;
+    const std::size_t texcoord_count = attrib.texcoords.size() / 2;
     const std::vector<std::size_t> lines = face_lines(text, name);
 
     std::size_t face_total = 0;
@@ -83,6 +109,7 @@ Mesh load_obj(const std::filesystem::path& file) {
 
     // First pass: every index in range, and do all corners carry a usable normal?
     bool all_normals = normal_count > 0;
+    bool all_uvs = texcoord_count > 0;
     std::size_t face = 0;
     for (const tinyobj::shape_t& shape : reader.GetShapes()) {
         std::size_t offset = 0;
@@ -105,6 +132,7 @@ Mesh load_obj(const std::filesystem::path& file) {
                                      std::to_string(idx.normal_index + 1) + ", the file has " +
                                      std::to_string(normal_count) + ")");
                 }
+                check_texcoord(idx.texcoord_index, texcoord_count, all_uvs, [&] { return name + ": " + face_where(face); });
             }
             offset += corners;
             ++face;
@@ -126,19 +154,25 @@ Mesh load_obj(const std::filesystem::path& file) {
         }
     }
 
-    // Second pass: one output vertex per distinct (position, normal) pair actually used.
+    for (std::size_t t = 0; t < texcoord_count && all_uvs; ++t)
+        if (!std::isfinite(attrib.texcoords[2 * t]) || !std::isfinite(attrib.texcoords[2 * t + 1]))
+            throw InputError(name + ": texture coordinate " + std::to_string(t + 1) + " is not finite");
+    // Second pass: one output vertex per distinct (position, normal, uv) triple actually used.
     Mesh mesh;
     mesh.source = name;
-    std::unordered_map<std::uint64_t, std::uint32_t> remap;
+    std::unordered_map<VertexKey, std::uint32_t, VertexKeyHash> remap;
     auto vertex_for = [&](const tinyobj::index_t& idx) {
-        const std::uint64_t n = all_normals ? static_cast<std::uint64_t>(idx.normal_index) : 0;
-        const std::uint64_t key = (static_cast<std::uint64_t>(idx.vertex_index) << 32) | n;
+        const VertexKey key{idx.vertex_index, all_normals ? idx.normal_index : 0, all_uvs ? idx.texcoord_index : 0};
         const auto [it, inserted] = remap.try_emplace(key, static_cast<std::uint32_t>(mesh.triangles.vertices.size()));
         if (inserted) {
             const std::size_t v = static_cast<std::size_t>(idx.vertex_index);
             mesh.triangles.vertices.emplace_back(attrib.vertices[3 * v], attrib.vertices[3 * v + 1],
                                                  attrib.vertices[3 * v + 2]);
             if (all_normals) mesh.vertex_normals.push_back(unit_normals[static_cast<std::size_t>(idx.normal_index)]);
+            if (all_uvs) {
+                const std::size_t t = static_cast<std::size_t>(idx.texcoord_index);
+                mesh.vertex_uvs.emplace_back(attrib.texcoords[2 * t], attrib.texcoords[2 * t + 1]);
+            }
         }
         return it->second;
     };

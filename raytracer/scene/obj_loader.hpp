@@ -10,10 +10,12 @@ namespace sweeptrace {
 // the convex polygons OBJ exporters write). Vertex normals are kept when every face corner has
 // one (and each is finite and non-zero); a vertex used with several normals is duplicated, at
 // bit-identical position, so the mesh stays watertight. Otherwise `vertex_normals` is empty and
-// the renderer shades with face normals. Only vertices used by a face are kept.
+// the renderer shades with face normals. Texture coordinates (vt) likewise: kept in `vertex_uvs`
+// when every face corner has one (finite), a vertex used with several duplicated; otherwise
+// empty. Only vertices used by a face are kept.
 //
 // Throws InputError "<file>: ..." when the file cannot be read, tinyobjloader reports an error, a
-// face refers to a vertex or normal that does not exist (with the face's line), a face has fewer
+// face refers to a vertex, normal or texture coordinate that does not exist (with the face's line), a face has fewer
 // than 3 corners, a coordinate is not finite, or there are no faces at all.
 Mesh load_obj(const std::filesystem::path& file);
 

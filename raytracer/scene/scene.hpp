@@ -3,12 +3,15 @@
 // checks: finite numbers, positive sizes, valid indices.
 #include <cstdint>
 #include <filesystem>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include <glm/vec3.hpp>
 
 #include "raytracer/geometry/object.hpp"
+#include "raytracer/image/image.hpp"
+#include "raytracer/scene/scene_light.hpp"
 
 namespace sweeptrace {
 
@@ -27,6 +30,19 @@ struct Camera {
 // Where a camera sample's numbers come from (render/sampler.hpp).
 enum class SamplerKind { Independent, Sobol };
 
+// The curve that takes exposed linear radiance to [0, 1] for 8-bit output (render/tone_map.hpp).
+enum class ToneCurve { Clamp, Aces };
+
+// The pixel reconstruction filter, as the scene gives it (render/pixel_filter.hpp samples it).
+// Separable: the 2D filter is f(x) f(y) for offsets (x, y) in pixels from the pixel's centre.
+struct FilterSpec {
+    enum class Type { Box, Tent, Gaussian, Mitchell };
+    Type type = Type::Box;
+    float radius = 0.5f;              // support [-radius, radius] per axis, in pixels
+    float sigma = 0.5f;               // Gaussian: standard deviation in pixels
+    float b = 1.0f / 3.0f, c = 1.0f / 3.0f;  // Mitchell-Netravali's B and C
+};
+
 struct Film {
     int width = 320;
     int height = 240;
@@ -34,22 +50,46 @@ struct Film {
     int max_depth = 8;  // path vertices after the camera; Russian roulette may stop earlier
     SamplerKind sampler = SamplerKind::Sobol;
     bool guiding = false;  // path guiding by default (render --guiding overrides)
+    float exposure = 0.0f;  // stops: 8-bit output shows radiance x 2^exposure (linear outputs untouched)
+    ToneCurve tone_curve = ToneCurve::Clamp;
+    FilterSpec filter;  // box of radius 0.5: each sample uniform in its pixel
 };
 
 struct Background {
-    enum class Kind { Constant, Sky };
+    enum class Kind { Constant, Sky, Environment };
     Kind kind = Kind::Constant;
     glm::vec3 color{0.0f};               // Constant
     glm::vec3 horizon{1.0f};             // Sky: radiance toward the horizon and below
     glm::vec3 zenith{0.5f, 0.7f, 1.0f};  // Sky: radiance straight up (+Y), blended by dir.y
+    // Environment: an equirectangular radiance map (render/environment_light.hpp states the
+    // mapping), shared, not copied, by copies of the scene; turned about +Y by rotate_degrees and
+    // multiplied by scale.
+    std::shared_ptr<const Image> environment;
+    float rotate_degrees = 0.0f;
+    float scale = 1.0f;
+};
+
+// A colour that varies over a surface with its uv coordinates (render/texture.hpp evaluates it;
+// each shape's home states its uv parameterisation). A constant colour is not a Texture: it is
+// the material's plain value.
+struct Texture {
+    enum class Kind { Checker, Image };
+    enum class Wrap { Repeat, Clamp };
+    Kind kind = Kind::Checker;
+    glm::vec3 a{0.2f}, b{0.8f};  // Checker: the two colours; a at uv = (0, 0)
+    float scale = 8.0f;          // Checker: squares per unit of u and of v
+    std::shared_ptr<const Image> image;  // Image: linear RGB (an sRGB .png is decoded on load)
+    std::filesystem::path image_file;    // Image: the file, canonical: one load however many textures use it
+    Wrap wrap = Wrap::Repeat;
 };
 
 struct Material {
-    enum class Type { Diffuse, Metal, Dielectric, Emissive };
+    enum class Type { Diffuse, Metal, Dielectric, Emissive, ThinDielectric };
     Type type = Type::Diffuse;
-    glm::vec3 albedo{0.8f};    // Diffuse reflectance / Metal tint / Dielectric transmission tint
+    glm::vec3 albedo{0.8f};    // Diffuse reflectance / Metal tint / (Thin)Dielectric transmission tint
+    int albedo_texture = -1;   // index into Scene::textures replacing `albedo` at each hit, or -1
     float roughness = 0.0f;    // Metal: 0 = perfect mirror
-    float ior = 1.5f;          // Dielectric
+    float ior = 1.5f;          // Dielectric, ThinDielectric
     glm::vec3 emission{0.0f};  // radiance leaving the front side; any material may emit
     // Emit from the back side too (e.g. the inside of a closed emissive sphere). The front is the
     // side the outward geometric normal points to: outside of closed shapes, edge_u x edge_v for
@@ -63,8 +103,10 @@ struct Scene {
     Film film;
     Background background;
     std::vector<Material> materials;
+    std::vector<Texture> textures;
     std::vector<Mesh> meshes;
     std::vector<Object> objects;
+    std::vector<SceneLight> lights;  // the "lights" key: point, spot, directional
     std::uint64_t seed = 0;
     std::filesystem::path source;  // the scene file, for messages
 };

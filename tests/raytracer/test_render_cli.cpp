@@ -173,3 +173,34 @@ TEST_CASE("render cli: Ctrl-C writes the finished samples, says so, and exits 13
     for (const auto& e : fs::directory_iterator(dir)) files += e.is_regular_file();
     CHECK(files == 2);
 }
+
+TEST_CASE("render cli: film.exposure and tone_curve change only 8-bit output; a flipped light is warned about", "[render][cli][display]") {
+    const fs::path dir = fresh_dir("display");
+    auto write = [&](const std::string& name, const std::string& film_extra, const std::string& light_edges) {
+        std::ofstream(dir / name) << R"({
+  "camera": { "position": [0, 1, 4], "look_at": [0, 0.5, 0] },
+  "film": { "width": 12, "height": 8, "spp": 2 )" << film_extra << R"( },
+  "materials": { "m": { "type": "diffuse", "albedo": [0.6, 0.5, 0.4] },
+                 "lamp": { "type": "emissive", "emission": [4, 4, 4] } },
+  "objects": [ { "type": "quad", "corner": [-2, 0, -2], "edge_u": [0, 0, 4], "edge_v": [4, 0, 0], "material": "m" },
+               { "type": "quad", "corner": [-0.5, 2, -0.5], )" << light_edges << R"(, "material": "lamp" } ]
+})";
+    };
+    const std::string down = R"("edge_u": [1, 0, 0], "edge_v": [0, 0, 1])", up = R"("edge_u": [0, 0, 1], "edge_v": [1, 0, 0])";
+    write("plain.json", "", down);
+    write("bright.json", R"(, "exposure": 2, "tone_curve": "aces")", down);
+    write("flipped.json", "", up);
+    for (const char* n : {"plain", "bright"}) {
+        const Run r = run_in(dir, {"render", std::string(n) + ".json", "--quiet", "-o", std::string(n) + ".pfm"});
+        INFO(r.err);
+        REQUIRE(r.exit_code == 0);
+        CHECK(r.err.empty());
+        REQUIRE(run_in(dir, {"render", std::string(n) + ".json", "--quiet", "-o", std::string(n) + ".png"}).exit_code == 0);
+    }
+    CHECK(slurp(dir / "plain.pfm") == slurp(dir / "bright.pfm"));  // linear output untouched
+    CHECK(slurp(dir / "plain.png") != slurp(dir / "bright.png"));
+    const Run f = run_in(dir, {"render", "flipped.json", "--quiet", "-o", "flipped.png"});
+    CHECK(f.exit_code == 0);
+    CHECK(f.err.find("sweeptrace: warning: flipped.json: objects[1] (quad): one-sided emitter") != std::string::npos);
+    CHECK(fs::exists(dir / "flipped.png"));
+}

@@ -221,3 +221,104 @@ TEST_CASE("scene errors: OBJ meshes", "[scene][errors]") {
     dir.write("meshes/m.obj", "v 0 0 0\nv 1 0 0\nf 1 2\n");
     CHECK_THAT(load_error(dir, scene_text(mesh_object)), Catch::Contains("m.obj: line 3: a face needs 3 to 255 vertices, this one has 2"));
 }
+
+TEST_CASE("scene errors: lights", "[scene][errors][lights]") {
+    TempDir dir;
+    auto with_lights = [](const std::string& lights) {
+        return scene_text(kSphere, kMaterials, R"({ "width": 8, "height": 6 })",
+                          R"({ "position": [0, 0, 5], "look_at": [0, 0, 0] })", "  \"lights\": " + lights + ",\n");
+    };
+    CHECK(load_scene(dir.write("ok.json", with_lights(R"([{ "type": "point", "position": [0, 2, 0], "intensity": [1, 1, 1] }])")))
+              .lights.size() == 1);
+    CHECK_THAT(load_error(dir, with_lights(R"([{ "type": "area" }])")),
+               Catch::Contains("lights[0].type: unknown light type \"area\" (known: point, spot, directional)"));
+    CHECK_THAT(load_error(dir, with_lights(R"([{ "type": "point", "intensity": [1, 1, 1] }])")),
+               Catch::Contains("lights[0].position: missing (required)"));
+    CHECK_THAT(load_error(dir, with_lights(R"([{ "type": "point", "position": [0, 2, 0], "intensity": [0, 0, 0] }])")),
+               Catch::Contains("lights[0].intensity: a light must emit"));
+    CHECK_THAT(load_error(dir, with_lights(R"([{ "type": "point", "position": [0, 2, 0], "intensity": [1, 1, 1], "radius": 1 }])")),
+               Catch::Contains("lights[0].radius"));
+    const char* const spot = R"([{ "type": "spot", "position": [0, 2, 0], "intensity": [1, 1, 1], "direction": [0, -1, 0], )";
+    CHECK_THAT(load_error(dir, with_lights(std::string(spot) + R"("cone_angle": 0 }])")),
+               Catch::Contains("lights[0].cone_angle: must be a half-angle in degrees in (0, 90], got 0"));
+    CHECK_THAT(load_error(dir, with_lights(std::string(spot) + R"("cone_angle": 30, "falloff_start": 40 }])")),
+               Catch::Contains("lights[0].falloff_start: must be in [0, 30], got 40"));
+    CHECK_THAT(load_error(dir, with_lights(R"([{ "type": "directional", "direction": [0, 0, 0], "irradiance": [1, 1, 1] }])")),
+               Catch::Contains("lights[0].direction: must not be the zero vector"));
+    CHECK_THAT(load_error(dir, with_lights(R"([{ "type": "directional", "direction": [0, -1, 0], "irradiance": [1, 1, 1], "angular_diameter": 120 }])")),
+               Catch::Contains("lights[0].angular_diameter: must be in [0, 90], got 120"));
+}
+
+TEST_CASE("scene errors: film display and filter keys", "[scene][errors][filter]") {
+    TempDir dir;
+    auto with_film = [](const std::string& extra) {
+        return scene_text(kSphere, kMaterials, R"({ "width": 8, "height": 6, )" + extra + " }");
+    };
+    const auto ok = load_scene(dir.write("ok.json", with_film(R"("exposure": -1.5, "tone_curve": "aces", "filter": { "type": "gaussian", "sigma": 0.4 })")));
+    CHECK(ok.film.exposure == -1.5f);
+    CHECK(ok.film.tone_curve == sweeptrace::ToneCurve::Aces);
+    CHECK(ok.film.filter.type == sweeptrace::FilterSpec::Type::Gaussian);
+    CHECK(ok.film.filter.radius == 1.5f);
+    CHECK_THAT(load_error(dir, with_film(R"("tone_curve": "filmic")")),
+               Catch::Contains("film.tone_curve: unknown tone curve \"filmic\" (known: clamp, aces)"));
+    CHECK_THAT(load_error(dir, with_film(R"("exposure": 100)")), Catch::Contains("film.exposure: must be in [-64, 64]"));
+    CHECK_THAT(load_error(dir, with_film(R"("filter": "tent")")), Catch::Contains("film.filter: must be an object"));
+    CHECK_THAT(load_error(dir, with_film(R"("filter": { "type": "lanczos" })")),
+               Catch::Contains("film.filter.type: unknown filter type \"lanczos\""));
+    CHECK_THAT(load_error(dir, with_film(R"("filter": { "type": "tent", "radius": 0 })")),
+               Catch::Contains("film.filter.radius: must be in [0.05, 16] pixels, got 0"));
+    CHECK_THAT(load_error(dir, with_film(R"("filter": { "type": "box", "sigma": 1 })")),
+               Catch::Contains("film.filter.sigma"));
+    CHECK_THAT(load_error(dir, with_film(R"("filter": { "type": "mitchell", "b": 2 })")),
+               Catch::Contains("film.filter.b: must be in [0, 1], got 2"));
+}
+
+TEST_CASE("scene errors: environment backgrounds", "[scene][errors][environment]") {
+    TempDir dir;
+    auto with_bg = [](const std::string& bg) {
+        return scene_text(kSphere, kMaterials, R"({ "width": 8, "height": 6 })",
+                          R"({ "position": [0, 0, 5], "look_at": [0, 0, 0] })", "  \"background\": " + bg + ",\n");
+    };
+    CHECK_THAT(load_error(dir, with_bg(R"({ "environment": { "file": "nope.hdr" } })")),
+               Catch::Contains("background.environment.file: environment image \"nope.hdr\" not found"));
+    CHECK_THAT(load_error(dir, with_bg(R"({ "environment": { "file": "x.hdr" }, "color": [0, 0, 0] })")),
+               Catch::Contains("background: give exactly one of \"color\", \"sky\" or \"environment\""));
+    dir.write("bad.hdr", "not an image");
+    CHECK_THAT(load_error(dir, with_bg(R"({ "environment": { "file": "bad.hdr" } })")),
+               Catch::Contains("background.environment.file: cannot read") && Catch::Contains("not a Radiance HDR file"));
+    dir.write("photo.png", "x");
+    CHECK_THAT(load_error(dir, with_bg(R"({ "environment": { "file": "photo.png" } })")),
+               Catch::Contains("background.environment.file: an environment must be linear radiance"));
+    std::string hdr = "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 1 +X 2\n";
+    for (int i = 0; i < 2; ++i) hdr += std::string{char(128), char(128), char(128), char(129)};
+    dir.write("ok.hdr", hdr);
+    CHECK_THAT(load_error(dir, with_bg(R"({ "environment": { "file": "ok.hdr", "scale": -1 } })")),
+               Catch::Contains("background.environment.scale: must be >= 0, got -1"));
+    CHECK_THAT(load_error(dir, with_bg(R"({ "environment": { "file": "ok.hdr", "turn": 3 } })")),
+               Catch::Contains("background.environment.turn"));
+}
+
+TEST_CASE("scene errors: textures", "[scene][errors][texture]") {
+    TempDir dir;
+    auto with_albedo = [](const std::string& albedo) {
+        return scene_text(kSphere, R"({ "m": { "type": "diffuse", "albedo": )" + albedo + " } }");
+    };
+    CHECK_THAT(load_error(dir, with_albedo(R"({ "checker": { "scale": 0 } })")),
+               Catch::Contains("materials.m.albedo.checker.scale: must be > 0, got 0"));
+    CHECK_THAT(load_error(dir, with_albedo(R"({ "checker": { "a": [2, 0, 0] } })")),
+               Catch::Contains("materials.m.albedo.checker.a[0]: must be in [0, 1], got 2"));
+    CHECK_THAT(load_error(dir, with_albedo(R"({ "image": { "file": "none.png" } })")),
+               Catch::Contains("materials.m.albedo.image.file: texture image \"none.png\" not found"));
+    CHECK_THAT(load_error(dir, with_albedo(R"({ "marble": {} })")), Catch::Contains("materials.m.albedo.marble"));
+    CHECK_THAT(load_error(dir, with_albedo(R"({ "checker": {}, "image": { "file": "x.png" } })")),
+               Catch::Contains("materials.m.albedo: give exactly one of \"checker\" or \"image\""));
+    std::string hdr = "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 1 +X 2\n";
+    for (int i = 0; i < 2; ++i) hdr += std::string{char(128), char(128), char(128), char(130)};  // 2.0
+    dir.write("bright.hdr", hdr);
+    CHECK_THAT(load_error(dir, with_albedo(R"({ "image": { "file": "bright.hdr" } })")),
+               Catch::Contains("materials.m.albedo.image.file: an albedo texture's values must lie in [0, 1]"));
+    dir.write("ok.hdr", hdr.substr(0, hdr.size() - 8) + std::string{char(128), char(128), char(128), char(128)} +
+                            std::string{char(128), char(128), char(128), char(128)});
+    CHECK_THAT(load_error(dir, with_albedo(R"({ "image": { "file": "ok.hdr", "wrap": "mirror" } })")),
+               Catch::Contains("materials.m.albedo.image.wrap: unknown wrap mode \"mirror\" (known: repeat, clamp)"));
+}

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "raytracer/image/image.hpp"
 #include "raytracer/scene/load_scene.hpp"
 #include "raytracer/scene/text_file.hpp"
 #include "scene_test_files.hpp"
@@ -36,6 +37,11 @@ TEST_CASE("scenes README: every JSON example loads", "[scene][docs]") {
 
     sweeptrace::test::TempDir dir;
     dir.write("meshes/torus_knot.obj", sweeptrace::read_text_file(scenes / "meshes" / "torus_knot.obj", "mesh"));
+    // The environment example's map: 4 x 2 uncompressed RGBE texels of 1.0.
+    std::string hdr = "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 2 +X 4\n";
+    for (int i = 0; i < 8; ++i) hdr += std::string{char(128), char(128), char(128), char(129)};
+    dir.write("sky.hdr", hdr);
+    sweeptrace::write_image(sweeptrace::Image(2, 2), dir.path() / "wood.png");  // the image texture example's file
     std::string materials;
     for (const std::string& b : blocks)
         if (starts_with(b, "\"materials\"")) materials = b;
@@ -53,6 +59,16 @@ TEST_CASE("scenes README: every JSON example loads", "[scene][docs]") {
             scene = head + b + R"(, "objects": [] })";
         else if (starts_with(b, "\"objects\""))
             scene = head + materials + ", " + b + "}";
+        else if (starts_with(b, "\"film\""))
+            scene = R"({ "camera": { "position": [0, 1, 5], "look_at": [0, 1, 0] }, )" + b + ", " + materials +
+                    R"(, "objects": [] })";
+        else if (starts_with(b, "\"albedo\""))
+            scene = head + R"("materials": { "t": { "type": "diffuse", )" + b +
+                    R"( } }, "objects": [{ "type": "quad", "corner": [0, 0, 0], "edge_u": [1, 0, 0], "edge_v": [0, 1, 0], "material": "t" }] })";
+        else if (starts_with(b, "\"background\""))
+            scene = head + materials + R"(, "objects": [], )" + b + "}";
+        else if (starts_with(b, "\"lights\""))
+            scene = head + materials + R"(, "objects": [], )" + b + "}";
         else if (starts_with(b, "\"transform\""))
             scene = head + materials + R"(, "objects": [{ "type": "sphere", "radius": 1, "material": "chalk", )" + b + "}]}";
         else

@@ -1,9 +1,18 @@
 #pragma once
 // The box's home in the renderer: scene keys, object-space bounds, light sampling.
 // Intersection: collision/intersect_aabb.cpp.
+#include <algorithm>
+#include <array>
 #include <string>
 
+#include <glm/geometric.hpp>
+
+#include "collision/bounds3.hpp"
+#include "collision/shapes.hpp"
 #include "raytracer/geometry/shapes/mesh_instance.hpp"
+#include "raytracer/geometry/shapes/scene_keys.hpp"
+#include "raytracer/geometry/shapes/shape_light.hpp"
+#include "raytracer/geometry/shapes/uv_maps.hpp"
 #include "raytracer/geometry/shapes/shape_home.hpp"
 
 namespace sweeptrace {
@@ -19,6 +28,17 @@ struct BoxShape {
     // ObjectArea: a face chosen by area, then uniform on it.
     static ShapeLight light(const Geometry& g, const Transform& xf, const std::vector<Mesh>& meshes);
     static void sample(const Geometry& g, const ShapeLight& l, float u_part, float u1, float u2, SurfacePoint& out);
+    // uv of an object-space point p on the box: each face is mapped whole onto [0, 1]^2. The face
+    // is the axis k where |p - center| / size is largest; (u, v) are the other two coordinates,
+    // in the order (y, z) for an x face, (x, z) for a y face, (x, y) for a z face, each from the
+    // box's low side (0) to its high side (1).
+    static glm::vec2 uv(const Geometry& g, const glm::vec3& p) {
+        const glm::vec3 f = (p - g.center) / g.size;  // in [-1/2, 1/2] per axis
+        const glm::vec3 a = glm::abs(f);
+        const int k = a.x >= a.y && a.x >= a.z ? 0 : (a.y >= a.z ? 1 : 2);
+        const int i = k == 0 ? 1 : 0, j = k == 2 ? 1 : 2;
+        return {std::clamp(f[i] + 0.5f, 0.0f, 1.0f), std::clamp(f[j] + 0.5f, 0.0f, 1.0f)};
+    }
 };
 
 template <class Node, class Loader>

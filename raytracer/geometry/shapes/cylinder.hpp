@@ -1,7 +1,19 @@
 #pragma once
 // The cylinder's home in the renderer: scene keys, object-space bounds, light sampling.
 // Intersection: collision/intersect_cylinder.cpp.
+#include <algorithm>
+#include <array>
+#include <string_view>
+#include <vector>
+
+#include <glm/geometric.hpp>
+
+#include "collision/bounds3.hpp"
+#include "collision/shapes.hpp"
 #include "raytracer/geometry/shapes/mesh_instance.hpp"
+#include "raytracer/geometry/shapes/scene_keys.hpp"
+#include "raytracer/geometry/shapes/shape_light.hpp"
+#include "raytracer/geometry/shapes/uv_maps.hpp"
 #include "raytracer/geometry/shapes/shape_home.hpp"
 
 namespace sweeptrace {
@@ -17,6 +29,14 @@ struct CylinderShape {
     // ObjectArea: side or a cap chosen by area, then uniform on it.
     static ShapeLight light(const Geometry& g, const Transform& xf, const std::vector<Mesh>& meshes);
     static void sample(const Geometry& g, const ShapeLight& l, float u_part, float u1, float u2, SurfacePoint& out);
+    // uv of an object-space point p on the cylinder: u = longitude about its axis, atan2(z, x)
+    // / 2 pi from +X toward +Z; v = height from the bottom cap / height, in [0, 1] on the side
+    // (the caps take their rim's v: 0 below, 1 on top, so a texture on them is constant
+    // radially).
+    static glm::vec2 uv(const Geometry& g, const glm::vec3& p) {
+        const glm::vec3 d = p - g.center;
+        return {uv_maps::longitude(d.x, d.z), std::clamp(d.y / g.height + 0.5f, 0.0f, 1.0f)};
+    }
 };
 
 template <class Node, class Loader>

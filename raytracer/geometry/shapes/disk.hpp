@@ -1,6 +1,17 @@
 #pragma once
 // The disk's home in the renderer: scene keys, object-space bounds, light sampling.
 // Intersection: collision/intersect_disk.cpp.
+#include <array>
+#include <cmath>
+#include <string_view>
+#include <vector>
+
+#include <glm/geometric.hpp>
+
+#include "collision/bounds3.hpp"
+#include "collision/float_error.hpp"
+#include "collision/shapes.hpp"
+#include "raytracer/geometry/shapes/flat_front.hpp"
 #include "raytracer/geometry/shapes/mesh_instance.hpp"
 #include "raytracer/geometry/shapes/shape_home.hpp"
 
@@ -17,6 +28,18 @@ struct DiskShape {
     // WorldArea: the unit disk's image is an ellipse c + x U + y V, U and V the images of two orthogonal radii; uniform on the disk stays uniform on the ellipse.
     static ShapeLight light(const Geometry& g, const Transform& xf, const std::vector<Mesh>& meshes);
     static void sample(const Geometry& g, const ShapeLight& l, float u_part, float u1, float u2, SurfacePoint& out);
+    // uv of an object-space point p on the disk: u = the angle about the normal / 2 pi in [0, 1),
+    // measured from the tangent s of geometry/warps.hpp's Frame(normal) toward its t; v = the
+    // distance from the centre / radius.
+    static glm::vec2 uv(const Geometry& g, const glm::vec3& p) {
+        const Frame f(glm::normalize(g.normal));
+        const glm::vec3 d = p - g.center;
+        const float x = glm::dot(d, f.s), y = glm::dot(d, f.t);
+        const float a = std::atan2(y, x) / (2.0f * kPi);
+        return {a < 0.0f ? a + 1.0f : a, std::sqrt(x * x + y * y) / g.radius};
+    }
+    // Flat: a point of its plane and its front (emitting) normal, in object space, unnormalised.
+    static FlatFront front(const Geometry& g) { return {g.center, g.normal}; }
 };
 
 template <class Node, class Loader>

@@ -1,7 +1,19 @@
 #pragma once
 // The ellipsoid's home in the renderer: scene keys, object-space bounds, light sampling.
 // Intersection: collision/intersect_ellipsoid.cpp.
+#include <algorithm>
+#include <array>
+#include <string_view>
+#include <vector>
+
+#include <glm/geometric.hpp>
+
+#include "collision/bounds3.hpp"
+#include "collision/shapes.hpp"
 #include "raytracer/geometry/shapes/mesh_instance.hpp"
+#include "raytracer/geometry/shapes/scene_keys.hpp"
+#include "raytracer/geometry/shapes/shape_light.hpp"
+#include "raytracer/geometry/shapes/uv_maps.hpp"
 #include "raytracer/geometry/shapes/shape_home.hpp"
 
 namespace sweeptrace {
@@ -17,6 +29,12 @@ struct EllipsoidShape {
     // ObjectArea, as the unit sphere under L diag(radii) translated to the centre.
     static ShapeLight light(const Geometry& g, const Transform& xf, const std::vector<Mesh>& meshes);
     static void sample(const Geometry& g, const ShapeLight& l, float u_part, float u1, float u2, SurfacePoint& out);
+    // uv of an object-space point p on the ellipsoid: the sphere's (longitude, polar angle from
+    // +Y) of (p - center) / radii, the point's direction on the unit sphere it is stretched from.
+    static glm::vec2 uv(const Geometry& g, const glm::vec3& p) {
+        const glm::vec3 d = glm::normalize((p - g.center) / g.radii);
+        return {uv_maps::longitude(d.x, d.z), uv_maps::polar(d.y)};
+    }
 };
 
 template <class Node, class Loader>

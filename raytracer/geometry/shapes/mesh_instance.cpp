@@ -38,4 +38,19 @@ void MeshInstanceShape::sample(const Geometry&, const ShapeLight& l, float u_par
     out.normal = glm::cross(tri.b - tri.a, tri.c - tri.a);
 }
 
+glm::vec2 MeshInstanceShape::mesh_uv(const Geometry& m, const std::vector<Mesh>& meshes, std::uint32_t primitive,
+                                     const glm::vec3& p) {
+    const Mesh& mesh = meshes[m.mesh];
+    if (mesh.vertex_uvs.empty() || primitive >= mesh.triangles.indices.size()) return glm::vec2(0.0f);
+    const glm::uvec3 f = mesh.triangles.indices[primitive];
+    const glm::vec3 a = mesh.triangles.vertices[f.x];
+    // Barycentrics (b1, b2) of p by the dual basis of the edges, as the triangle's own home does.
+    const glm::vec3 e1 = mesh.triangles.vertices[f.y] - a, e2 = mesh.triangles.vertices[f.z] - a, d = p - a;
+    const glm::vec3 n = glm::cross(e1, e2);
+    const float nn = glm::dot(n, n);
+    if (!(nn > 0.0f)) return mesh.vertex_uvs[f.x];
+    const float b1 = glm::dot(glm::cross(d, e2), n) / nn, b2 = glm::dot(glm::cross(e1, d), n) / nn;
+    return (1.0f - b1 - b2) * mesh.vertex_uvs[f.x] + b1 * mesh.vertex_uvs[f.y] + b2 * mesh.vertex_uvs[f.z];
+}
+
 }  // namespace sweeptrace

@@ -9,6 +9,7 @@
 #include <string_view>
 #include <vector>
 
+#include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
 #include "collision/bounds3.hpp"
@@ -20,6 +21,7 @@ namespace sweeptrace {
 struct Mesh {
     collision::TriangleMesh triangles;
     std::vector<glm::vec3> vertex_normals;  // empty, or one per vertex (smooth shading)
+    std::vector<glm::vec2> vertex_uvs;      // empty, or one per vertex (OBJ vt), for textures
     std::string source;                     // file it came from, for messages
 };
 
@@ -42,6 +44,12 @@ struct MeshInstanceShape {
     // MeshArea: a triangle chosen by world area, then uniformly on it (uniform over the surface).
     static ShapeLight light(const Geometry& m, const Transform& xf, const std::vector<Mesh>& meshes);
     static void sample(const Geometry& m, const ShapeLight& l, float u_part, float u1, float u2, SurfacePoint& out);
+    // uv of object-space point p on triangle `primitive`: the OBJ's vt interpolated by p's
+    // barycentrics on that triangle; (0, 0) when the mesh has none (the loader refuses textures
+    // on such meshes). Not the uv(geometry, point) of the analytic homes: a mesh point needs its
+    // triangle.
+    static glm::vec2 mesh_uv(const Geometry& m, const std::vector<Mesh>& meshes, std::uint32_t primitive,
+                             const glm::vec3& p);
 };
 
 }  // namespace sweeptrace

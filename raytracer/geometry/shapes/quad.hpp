@@ -1,6 +1,16 @@
 #pragma once
 // The quad's home in the renderer: scene keys, object-space bounds, light sampling.
 // Intersection: collision/intersect_quad.cpp.
+#include <array>
+#include <string_view>
+#include <vector>
+
+#include <glm/geometric.hpp>
+
+#include "collision/bounds3.hpp"
+#include "collision/float_error.hpp"
+#include "collision/shapes.hpp"
+#include "raytracer/geometry/shapes/flat_front.hpp"
 #include "raytracer/geometry/shapes/mesh_instance.hpp"
 #include "raytracer/geometry/shapes/shape_home.hpp"
 
@@ -17,6 +27,15 @@ struct QuadShape {
     // WorldArea: uniform on the world parallelogram.
     static ShapeLight light(const Geometry& g, const Transform& xf, const std::vector<Mesh>& meshes);
     static void sample(const Geometry& g, const ShapeLight& l, float u_part, float u1, float u2, SurfacePoint& out);
+    // uv of an object-space point p on the plane: (s, t) in [0, 1]^2, the coordinates of p - g.corner in the edges
+    // g.edge_u, g.edge_v (dual basis through the normal n = g.edge_u x g.edge_v: s = ((d x g.edge_v) . n) / |n|^2, ...).
+    static glm::vec2 uv(const Geometry& g, const glm::vec3& p) {
+        const glm::vec3 d = p - g.corner, n = glm::cross(g.edge_u, g.edge_v);
+        const float nn = glm::dot(n, n);
+        return {glm::dot(glm::cross(d, g.edge_v), n) / nn, glm::dot(glm::cross(g.edge_u, d), n) / nn};
+    }
+    // Flat: a point of its plane and its front (emitting) normal, in object space, unnormalised.
+    static FlatFront front(const Geometry& g) { return {g.corner, glm::cross(g.edge_u, g.edge_v)}; }
 };
 
 template <class Node, class Loader>

@@ -1,7 +1,22 @@
 #pragma once
 // The sphere's home in the renderer: scene keys, object-space bounds, light sampling.
 // Intersection: collision/intersect_sphere.cpp.
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <string_view>
+#include <vector>
+
+#include <glm/geometric.hpp>
+
+#include "collision/bounds3.hpp"
+#include "collision/float_error.hpp"
+#include "collision/shapes.hpp"
 #include "raytracer/geometry/shapes/mesh_instance.hpp"
+#include "raytracer/geometry/shapes/scene_keys.hpp"
+#include "raytracer/geometry/shapes/shape_light.hpp"
+#include "raytracer/geometry/shapes/uv_maps.hpp"
+#include "raytracer/geometry/warps.hpp"
 #include "raytracer/geometry/shapes/shape_home.hpp"
 
 namespace sweeptrace {
@@ -20,6 +35,13 @@ struct SphereShape {
     static ShapeLight light(const Geometry& s, const Transform& xf, const std::vector<Mesh>& meshes);
     // SphereCone: uniform by area on the world sphere; ObjectArea: on the object sphere.
     static void sample(const Geometry& s, const ShapeLight& l, float u_part, float u1, float u2, SurfacePoint& out);
+    // uv of an object-space point p on the sphere, from its direction d from the centre:
+    // (phi / 2 pi, theta / pi) with phi = atan2(d.z, d.x) in [0, 2 pi) and theta = acos(d.y) from
+    // +Y (the convention of collision's sphere hit uv).
+    static glm::vec2 uv(const Geometry& g, const glm::vec3& p) {
+        const glm::vec3 d = glm::normalize(p - g.center);
+        return {uv_maps::longitude(d.x, d.z), uv_maps::polar(d.y)};
+    }
 };
 
 // Inline: called once per light sample, through visit_shape.

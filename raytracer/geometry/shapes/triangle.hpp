@@ -1,6 +1,16 @@
 #pragma once
 // The triangle's home in the renderer: scene keys, object-space bounds, light sampling.
 // Intersection: collision/intersect_triangle.cpp.
+#include <array>
+#include <string_view>
+#include <vector>
+
+#include <glm/geometric.hpp>
+
+#include "collision/bounds3.hpp"
+#include "collision/float_error.hpp"
+#include "collision/shapes.hpp"
+#include "raytracer/geometry/shapes/flat_front.hpp"
 #include "raytracer/geometry/shapes/mesh_instance.hpp"
 #include "raytracer/geometry/shapes/shape_home.hpp"
 
@@ -17,6 +27,15 @@ struct TriangleShape {
     // WorldArea: uniform on the world triangle.
     static ShapeLight light(const Geometry& g, const Transform& xf, const std::vector<Mesh>& meshes);
     static void sample(const Geometry& g, const ShapeLight& l, float u_part, float u1, float u2, SurfacePoint& out);
+    // uv of an object-space point p on the triangle: its barycentrics (b1, b2) of b and c, the coordinates of p - g.a in the edges
+    // (g.b - g.a), (g.c - g.a) (dual basis through the normal n = (g.b - g.a) x (g.c - g.a): s = ((d x (g.c - g.a)) . n) / |n|^2, ...).
+    static glm::vec2 uv(const Geometry& g, const glm::vec3& p) {
+        const glm::vec3 d = p - g.a, n = glm::cross((g.b - g.a), (g.c - g.a));
+        const float nn = glm::dot(n, n);
+        return {glm::dot(glm::cross(d, (g.c - g.a)), n) / nn, glm::dot(glm::cross((g.b - g.a), d), n) / nn};
+    }
+    // Flat: a point of its plane and its front (emitting) normal, in object space, unnormalised.
+    static FlatFront front(const Geometry& g) { return {g.a, glm::cross(g.b - g.a, g.c - g.a)}; }
 };
 
 template <class Node, class Loader>

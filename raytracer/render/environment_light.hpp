@@ -1,0 +1,69 @@
+#pragma once
+// An equirectangular environment map as a light: radiance by direction, and importance sampling
+// of directions by a 2D piecewise-constant distribution over the texels (pbrt-v4's
+// ImageInfiniteLight, without its MIS compensation).
+//
+// Mapping. A world direction d is first turned into the map's frame by the inverse of the
+// background's rotation about +Y (a right-handed rotation by rotate_degrees, like a transform's
+// rotate about [0, 1, 0]): d' = R_y(-rotate) d. Then theta = acos(d'.y) in [0, pi] (0 = +Y, the
+// top row) and phi = atan2(d'.x, -d'.z) in (-pi, pi], and the texel coordinates are
+// u = 1/2 + phi / (2 pi) (column, left to right), v = theta / pi (row, top to bottom): the
+// image's centre looks along -Z, its right half toward +X. Radiance is the texel's value
+// (nearest, piecewise constant) times scale.
+//
+// Sampling. Texel (i, j) gets weight luminance(texel) sin(theta_j), theta_j at the row's centre;
+// a row is chosen by the marginal of the row sums, a column by that row's conditional, each
+// with a uniform offset inside the cell, so the density on the unit square is
+// p(u, v) = w_ij / mean(w), and on the sphere (d omega = 2 pi^2 sin(theta) du dv)
+//   p(omega) = p(u, v) / (2 pi^2 sin(theta)),
+// with theta the direction's own polar angle. pdf() evaluates exactly this for any direction,
+// so the density used in MIS is the one sampled with. Texels of weight 0 are never sampled and
+// have pdf 0; their radiance is 0 too (RGB is non-negative and every luminance coefficient is
+// positive), so nothing is missed.
+#include <memory>
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+#include "raytracer/scene/scene.hpp"
+
+namespace sweeptrace {
+
+// Radiance of an Environment background along unit direction `dir` (scale included).
+glm::vec3 environment_radiance(const Background& bg, const glm::vec3& dir);
+
+class EnvironmentLight {
+public:
+    explicit EnvironmentLight(const Background& bg);
+
+    bool emits() const { return total_ > 0.0; }
+    // The integral of luminance over the sphere, int lum(L) d omega (scale included).
+    double luminance_integral() const { return integral_; }
+
+    glm::vec3 radiance(const glm::vec3& dir) const { return environment_radiance(*bg_, dir); }
+    // A direction from two uniforms in [0, 1), its solid-angle density and radiance; false for a
+    // degenerate sample (at a pole, where sin(theta) = 0).
+    bool sample(float u1, float u2, glm::vec3& dir, float& pdf, glm::vec3& radiance) const;
+    float pdf(const glm::vec3& dir) const;
+
+private:
+    // One piecewise-constant 1D distribution: bins of width 1/n with weights f.
+    struct Distribution1D {
+        std::vector<float> f;
+        std::vector<float> cdf;  // n + 1 entries, cdf[0] = 0, cdf[n] = 1
+        double sum = 0.0;
+        void build(std::vector<float> weights);
+        // The continuous sample in [0, 1) and its bin; the density there is f[bin] / mean(f).
+        float sample(float u, int& bin) const;
+        float density(int bin) const { return static_cast<float>(f[static_cast<std::size_t>(bin)] * f.size() / sum); }
+    };
+
+    const Background* bg_;
+    int width_ = 0, height_ = 0;
+    std::vector<Distribution1D> rows_;  // conditional per row (columns)
+    Distribution1D marginal_;           // over rows
+    double total_ = 0.0;                // sum of all weights
+    double integral_ = 0.0;
+};
+
+}  // namespace sweeptrace

@@ -1,0 +1,57 @@
+#include "raytracer/render/texture.hpp"
+
+#include <cmath>
+
+namespace sweeptrace {
+
+namespace {
+
+int wrap_index(int i, int n, Texture::Wrap wrap) {
+    if (wrap == Texture::Wrap::Clamp) return i < 0 ? 0 : (i >= n ? n - 1 : i);
+    const int m = i % n;
+    return m < 0 ? m + n : m;
+}
+
+glm::vec3 bilinear(const Texture& t, const glm::vec2& uv) {
+    const Image& img = *t.image;
+    const float x = uv.x * static_cast<float>(img.width) - 0.5f;
+    const float y = (1.0f - uv.y) * static_cast<float>(img.height) - 0.5f;
+    const float fx = std::floor(x), fy = std::floor(y);
+    const float ax = x - fx, ay = y - fy;
+    const int x0 = static_cast<int>(fx), y0 = static_cast<int>(fy);
+    auto at = [&](int i, int j) { return img.at(wrap_index(i, img.width, t.wrap), wrap_index(j, img.height, t.wrap)); };
+    return (1.0f - ay) * ((1.0f - ax) * at(x0, y0) + ax * at(x0 + 1, y0)) +
+           ay * ((1.0f - ax) * at(x0, y0 + 1) + ax * at(x0 + 1, y0 + 1));
+}
+
+}  // namespace
+
+glm::vec3 eval_texture(const Texture& t, const glm::vec2& uv) {
+    if (t.kind == Texture::Kind::Checker) {
+        const float s = std::floor(t.scale * uv.x) + std::floor(t.scale * uv.y);
+        return std::fmod(std::abs(s), 2.0f) == 0.0f ? t.a : t.b;
+    }
+    if (!std::isfinite(uv.x) || !std::isfinite(uv.y)) return glm::vec3(0.0f);
+    return bilinear(t, uv);
+}
+
+glm::vec2 hit_uv(const Scene& scene, const SurfaceHit& hit) {
+    const Object& obj = scene.objects[hit.object];
+    const glm::vec3 p(obj.transform.to_object * glm::vec4(hit.point, 1.0f));
+    return visit_shape(obj.shape, [&](auto home, const auto& g) -> glm::vec2 {
+        using Home = decltype(home);
+        if constexpr (requires { Home::uv(g, p); }) return Home::uv(g, p);
+        else if constexpr (requires { Home::mesh_uv(g, scene.meshes, hit.primitive, p); })
+            return Home::mesh_uv(g, scene.meshes, hit.primitive, p);
+        else return glm::vec2(0.0f);
+    });
+}
+
+Material textured_material(const Scene& scene, const Material& base, const SurfaceHit& hit) {
+    Material m = base;
+    if (base.albedo_texture >= 0)
+        m.albedo = eval_texture(scene.textures[static_cast<std::size_t>(base.albedo_texture)], hit_uv(scene, hit));
+    return m;
+}
+
+}  // namespace sweeptrace

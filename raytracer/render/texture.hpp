@@ -1,0 +1,29 @@
+#pragma once
+// Textures at a hit (scene.hpp: Texture). The uv comes from the hit object's shape home
+// (geometry/shapes/<shape>, `uv(geometry, object_point)`), computed only here, so only for hits
+// whose material reads a texture; the hit's world point is taken back to object space by the
+// object's inverse transform.
+//
+// - checker: with s = floor(scale u) + floor(scale v), colour a where s is even, b where odd;
+// - image: bilinear between the four texel centres around (u W - 1/2, (1 - v) H - 1/2) (v = 0 is
+//   the image's bottom row, v = 1 its top, as in OBJ and OpenGL); wrap "repeat" takes texel
+//   indices modulo the size, "clamp" clamps them to the edge.
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+
+#include "raytracer/geometry/surface_hit.hpp"
+#include "raytracer/scene/scene.hpp"
+
+namespace sweeptrace {
+
+glm::vec3 eval_texture(const Texture& t, const glm::vec2& uv);
+
+// The uv of `hit` on its object by the shape's home; (0, 0) for shapes without uv (the loader
+// refuses textures on those).
+glm::vec2 hit_uv(const Scene& scene, const SurfaceHit& hit);
+
+// `base` with its textured parameters evaluated at `hit` (the caller's copy; only called for
+// materials that read a texture).
+Material textured_material(const Scene& scene, const Material& base, const SurfaceHit& hit);
+
+}  // namespace sweeptrace
