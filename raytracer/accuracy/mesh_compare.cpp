@@ -17,7 +17,7 @@
 #include "collision/intersect.hpp"
 #include "collision/mesh_boxes.hpp"
 #include "raytracer/accel/embree_reference.hpp"
-#include "raytracer/accel/mesh_ray_bvh.hpp"
+#include "raytracer/accel/wide_mesh_bvh.hpp"
 #include "raytracer/accuracy/cases.hpp"
 #include "raytracer/accuracy/reference.hpp"
 #include "raytracer/accuracy/thread_timer.hpp"
@@ -85,12 +85,12 @@ struct Method {
     std::function<Hit(const Ray&)> trace;
 };
 
-std::vector<Method> make_methods(const collision::TriangleMesh& mesh, std::vector<std::unique_ptr<MeshRayBvh>>& bvhs,
+std::vector<Method> make_methods(const collision::TriangleMesh& mesh, std::vector<std::unique_ptr<WideMeshBvh>>& bvhs,
                                  std::vector<std::unique_ptr<EmbreeTriangles>>& embrees) {
     std::vector<Method> methods;
     double start = wall_seconds();
-    bvhs.push_back(std::make_unique<MeshRayBvh>(mesh));
-    const MeshRayBvh* bvh = bvhs.back().get();
+    bvhs.push_back(std::make_unique<WideMeshBvh>(mesh));  // the renderer's own traversal
+    const WideMeshBvh* bvh = bvhs.back().get();
     methods.push_back({"native", wall_seconds() - start, [bvh](const Ray& r) {
                            Hit h;
                            collision::RayHit rh;
@@ -244,7 +244,7 @@ MeshReport compare_meshes(const std::vector<NamedMesh>& meshes, std::size_t rays
         const collision::TriangleMesh& mesh = nm.mesh;
         if (mesh.triangle_count() == 0) continue;
         CaseRng rng(seed ^ std::hash<std::string>{}(nm.name));
-        std::vector<std::unique_ptr<MeshRayBvh>> bvhs;
+        std::vector<std::unique_ptr<WideMeshBvh>> bvhs;
         std::vector<std::unique_ptr<EmbreeTriangles>> embrees;
         const std::vector<Method> methods = make_methods(mesh, bvhs, embrees);
         const EdgeMap edges(mesh);

@@ -9,7 +9,7 @@
 
 #include "collision/intersect.hpp"
 #include "raytracer/accel/embree_reference.hpp"
-#include "raytracer/accel/mesh_ray_bvh.hpp"
+#include "raytracer/accel/wide_mesh_bvh.hpp"
 #include "raytracer/accel/mesh_hashed_grid.hpp"
 #include "raytracer/accel/mesh_ray_octants.hpp"
 #include "raytracer/accuracy/cases.hpp"
@@ -59,7 +59,7 @@ Tracer build(const std::string& name, const collision::TriangleMesh& mesh, std::
     }
     if (name == "octants") return tracer_of(std::make_shared<MeshRayOctants>(mesh), keep);
     if (name == "hashed-grid") return tracer_of(std::make_shared<MeshHashedGrid>(mesh), keep);
-    if (name == "bvh") return tracer_of(std::make_shared<MeshRayBvh>(mesh), keep);
+    if (name == "bvh") return tracer_of(std::make_shared<WideMeshBvh>(mesh), keep);  // the renderer's traversal
     auto s = std::make_shared<EmbreeTriangles>(mesh, false);
     keep = s;
     return [s](const Ray& r) {
