@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "raytracer/cli/commands.hpp"
+#include "raytracer/cli/output_guard.hpp"
 #include "raytracer/image/diff.hpp"
 #include "raytracer/image/image.hpp"
 #include "raytracer/input_error.hpp"
@@ -23,6 +24,11 @@ struct DiffArgs {
 };
 
 int run_diff(const DiffArgs& args) {
+    if (!args.heatmap.empty()) {
+        std::vector<NamedInput> inputs{{"image A", args.a}, {"image B", args.b}};
+        if (!args.noise.empty()) inputs.push_back({"--noise image", args.noise});
+        refuse_output_over_input(args.heatmap, inputs);
+    }
     const Image a = read_image(args.a);
     const Image b = read_image(args.b);
     DiffOptions options;

@@ -1,24 +1,27 @@
 // `sweeptrace render SCENE.json [options]`: load, build the acceleration structure, render with a
-// progress display, write the image atomically. Ctrl-C stops after the samples finished so far,
-// writes them, and exits 130; a second Ctrl-C kills at once (the atomic write still leaves no
-// partial file).
+// progress display, write the image atomically. Ctrl-C or SIGTERM stops after the samples
+// finished so far, writes them, and exits 130 / 143; a second signal kills at once (the atomic
+// write still leaves no partial file, cli/interrupt.hpp).
 #include <unistd.h>
 
 #include <algorithm>
-#include <atomic>
 #include <chrono>
 #include <cmath>
-#include <csignal>
 #include <cstdint>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include <tbb/info.h>
 
 #include "raytracer/accel/accel.hpp"
 #include "raytracer/cli/commands.hpp"
+#include "raytracer/cli/interrupt.hpp"
+#include "raytracer/cli/memory_budget.hpp"
+#include "raytracer/cli/output_guard.hpp"
+#include "raytracer/cli/render_limits.hpp"
 #include "raytracer/input_error.hpp"
 #include "raytracer/render/renderer.hpp"
 #include "raytracer/render/tone_map.hpp"
@@ -28,39 +31,12 @@ namespace sweeptrace {
 
 namespace {
 
-// Lock-free, so setting it from a signal handler is well defined.
-std::atomic<bool> g_interrupted{false};
-static_assert(std::atomic<bool>::is_always_lock_free);
-
-extern "C" void on_sigint(int) {
-    g_interrupted.store(true);
-    std::signal(SIGINT, SIG_DFL);  // a second Ctrl-C terminates immediately
-}
-
-// Installs the handler for its lifetime.
-class SigintGuard {
-public:
-    SigintGuard() {
-        g_interrupted.store(false);
-        previous_ = std::signal(SIGINT, on_sigint);
-    }
-    ~SigintGuard() { std::signal(SIGINT, previous_ == SIG_ERR ? SIG_DFL : previous_); }
-    SigintGuard(const SigintGuard&) = delete;
-    SigintGuard& operator=(const SigintGuard&) = delete;
-
-private:
-    void (*previous_)(int) = SIG_DFL;
-};
-
 struct RenderArgs {
     std::string scene;
     std::string output;
-    int spp = 0, width = 0, height = 0, threads = 0, max_depth = 0;
-    std::uint64_t seed = 0;
+    RenderLimits limits;  // --width --height --spp --max-depth --seed --threads --max-memory
     std::string accel = "bvh";
     bool quiet = false;
-    CLI::Option *spp_opt = nullptr, *width_opt = nullptr, *height_opt = nullptr, *depth_opt = nullptr,
-                *seed_opt = nullptr;
 };
 
 std::string clock_text(double seconds) {
@@ -122,12 +98,8 @@ void require(bool ok, const std::string& message) {
 }
 
 int run_render(const RenderArgs& a) {
-    if (a.spp_opt->count()) require(a.spp >= 1, "--spp must be at least 1, got " + std::to_string(a.spp));
-    if (a.width_opt->count()) require(a.width >= 1, "--width must be at least 1, got " + std::to_string(a.width));
-    if (a.height_opt->count()) require(a.height >= 1, "--height must be at least 1, got " + std::to_string(a.height));
-    if (a.depth_opt->count())
-        require(a.max_depth >= 1, "--max-depth must be at least 1, got " + std::to_string(a.max_depth));
-    require(a.threads >= 0, "--threads must be 0 (all cores) or more, got " + std::to_string(a.threads));
+    a.limits.validate();
+    const int thread_count = a.limits.thread_count();
 
     const std::filesystem::path scene_path(a.scene);
     const std::filesystem::path out =
@@ -145,17 +117,11 @@ int run_render(const RenderArgs& a) {
     }
 
     Scene scene = load_scene(scene_path);
-    // --width or --height alone keeps the film's aspect ratio; both set it.
-    const int film_w = scene.film.width, film_h = scene.film.height;
-    if (a.width_opt->count()) scene.film.width = a.width;
-    if (a.height_opt->count()) scene.film.height = a.height;
-    if (a.width_opt->count() && !a.height_opt->count())
-        scene.film.height = std::max(1, static_cast<int>(std::lround(double(a.width) * film_h / film_w)));
-    if (a.height_opt->count() && !a.width_opt->count())
-        scene.film.width = std::max(1, static_cast<int>(std::lround(double(a.height) * film_w / film_h)));
-    if (a.spp_opt->count()) scene.film.spp = a.spp;
-    if (a.depth_opt->count()) scene.film.max_depth = a.max_depth;
-    if (a.seed_opt->count()) scene.seed = a.seed;
+    a.limits.apply(scene);
+    std::vector<NamedInput> inputs{{"scene", scene_path}};
+    for (const Mesh& m : scene.meshes) inputs.push_back({"mesh", m.source});
+    refuse_output_over_input(out, inputs);
+    check_render_memory(scene, a.limits.memory_limit());
 
     const auto build_start = std::chrono::steady_clock::now();
     const std::unique_ptr<Accel> accel = make_accel(a.accel == "embree" ? AccelKind::Embree : AccelKind::Bvh, scene);
@@ -164,10 +130,10 @@ int run_render(const RenderArgs& a) {
     RenderOptions opt;
     opt.spp = scene.film.spp;
     opt.max_depth = scene.film.max_depth;
-    opt.threads = a.threads;
+    opt.threads = thread_count;
     opt.seed = scene.seed;
-    SigintGuard sigint;
-    opt.cancel = &g_interrupted;
+    const InterruptGuard interrupt;
+    opt.cancel = InterruptGuard::flag();
     ProgressDisplay progress(isatty(fileno(stderr)) != 0);
     if (!a.quiet) opt.progress = [&progress](double f) { progress.update(f); };
 
@@ -180,14 +146,14 @@ int run_render(const RenderArgs& a) {
                      static_cast<unsigned long long>(st.nonfinite_samples));
     if (st.cancelled && st.completed_spp == 0) {
         std::fprintf(stderr, "sweeptrace: interrupted before the first pass over the image finished; nothing written\n");
-        return 130;
+        return InterruptGuard::exit_code();
     }
     write_image(is_display_format(out) ? to_display(result.image) : result.image, out);
     if (st.cancelled)
         std::fprintf(stderr, "sweeptrace: interrupted: wrote %s with %d of %d samples per pixel\n", out.string().c_str(),
                      st.completed_spp, opt.spp);
     if (!a.quiet) {
-        const int threads = a.threads > 0 ? a.threads : tbb::info::default_concurrency();
+        const int threads = thread_count > 0 ? thread_count : tbb::info::default_concurrency();
         const double secs = std::max(st.seconds, 1e-9);
         std::fprintf(stderr,
                      "%s: %dx%d, %d spp, %s (%s, built in %.2f s), %d thread%s: %.2f s, %s samples/s, %s rays/s -> %s\n",
@@ -196,7 +162,7 @@ int run_render(const RenderArgs& a) {
                      threads, threads == 1 ? "" : "s", st.seconds, si_text(double(st.samples) / secs).c_str(),
                      si_text(double(st.rays) / secs).c_str(), out.string().c_str());
     }
-    return st.cancelled ? 130 : 0;
+    return st.cancelled ? InterruptGuard::exit_code() : 0;
 }
 
 }  // namespace
@@ -208,15 +174,7 @@ void add_render_command(CLI::App& app, int& exit_code) {
     cmd->add_option("-o,--output", args->output,
                     "Output image: .png (8-bit sRGB, radiance clamped to [0, 1]), .pfm or .exr (linear float). "
                     "Default: the scene's name with .png, in the current directory");
-    args->spp_opt = cmd->add_option("--spp", args->spp, "Samples per pixel (default: the scene's film.spp)");
-    args->width_opt = cmd->add_option("--width", args->width,
-                                      "Image width; alone, the height follows the film's aspect ratio");
-    args->height_opt = cmd->add_option("--height", args->height,
-                                       "Image height; alone, the width follows the film's aspect ratio");
-    cmd->add_option("--threads", args->threads, "Worker threads, 0 = all cores")->capture_default_str();
-    args->seed_opt = cmd->add_option("--seed", args->seed, "Random seed (default: the scene's seed)");
-    args->depth_opt = cmd->add_option("--max-depth", args->max_depth,
-                                      "Path vertices after the camera (default: the scene's film.max_depth)");
+    args->limits.add_options(*cmd);
     cmd->add_option("--accel", args->accel, "Acceleration structure")
         ->check(CLI::IsMember({"bvh", "embree"}))
         ->capture_default_str();

@@ -8,8 +8,10 @@
 #include <glm/geometric.hpp>
 
 #include "raytracer/input_error.hpp"
+#include "raytracer/scene/film_limits.hpp"
 #include "raytracer/scene/json_reader.hpp"
 #include "raytracer/scene/obj_loader.hpp"
+#include "raytracer/scene/scene_extent.hpp"
 #include "raytracer/scene/scene_transform.hpp"
 #include "raytracer/scene/text_file.hpp"
 
@@ -18,12 +20,6 @@ namespace sweeptrace {
 namespace {
 
 using scene_json::Node;
-
-// Generous limits that catch typos (an extra zero) before they turn into an hour-long render or a
-// failed allocation; nothing real comes near them.
-constexpr std::int64_t kMaxImageSide = 16384;
-constexpr std::int64_t kMaxSpp = 1 << 20;
-constexpr std::int64_t kMaxDepth = 1024;
 
 // Exactly zero in double: the inputs are floats, so differences and cross products of them are
 // (nearly) exact in double, and "zero" here means truly degenerate, not "small".
@@ -50,13 +46,19 @@ Camera read_camera(const Node& node) {
     return camera;
 }
 
+// The same ranges as the command line's overrides (film_limits.hpp).
+int read_film_setting(const Node& node, FilmSetting setting) {
+    const SettingRange r = film_range(setting);
+    return static_cast<int>(node.integer(r.lo, r.hi));
+}
+
 Film read_film(const Node& node) {
     node.require_object({"width", "height", "spp", "max_depth"});
     Film film;
-    film.width = static_cast<int>(node.at("width").integer(1, kMaxImageSide));
-    film.height = static_cast<int>(node.at("height").integer(1, kMaxImageSide));
-    if (auto spp = node.find("spp")) film.spp = static_cast<int>(spp->integer(1, kMaxSpp));
-    if (auto depth = node.find("max_depth")) film.max_depth = static_cast<int>(depth->integer(1, kMaxDepth));
+    film.width = read_film_setting(node.at("width"), FilmSetting::Width);
+    film.height = read_film_setting(node.at("height"), FilmSetting::Height);
+    if (auto spp = node.find("spp")) film.spp = read_film_setting(*spp, FilmSetting::Spp);
+    if (auto depth = node.find("max_depth")) film.max_depth = read_film_setting(*depth, FilmSetting::MaxDepth);
     return film;
 }
 
@@ -300,7 +302,7 @@ private:
 }  // namespace
 
 Scene load_scene(const std::filesystem::path& file) {
-    const std::string text = read_text_file(file, "scene");
+    const std::string text = read_text_file(file, "scene", kMaxSceneFileBytes);
     const nlohmann::json doc = scene_json::parse(text, file);
     const Node root(doc, file);
     root.require_object({"description", "camera", "film", "background", "seed", "materials", "objects"});
@@ -314,6 +316,7 @@ Scene load_scene(const std::filesystem::path& file) {
     if (auto s = root.find("seed")) scene.seed = s->unsigned_integer();
     ObjectReader objects(scene, read_materials(root.at("materials"), scene.materials));
     objects.read_all(root.at("objects"));
+    check_scene_extent(scene, root);
     return scene;
 }
 

@@ -12,9 +12,11 @@ namespace sweeptrace {
 // bit-identical position, so the mesh stays watertight. Otherwise `vertex_normals` is empty and
 // the renderer shades with face normals. Only vertices used by a face are kept.
 //
-// Throws InputError "<file>: ..." when the file cannot be read, tinyobjloader reports an error, a
-// face refers to a vertex or normal that does not exist (with the face's line), a face has fewer
-// than 3 corners, a coordinate is not finite, or there are no faces at all.
+// Throws InputError "<file>: ..." when the file cannot be read or is over kMaxMeshFileBytes,
+// tinyobjloader reports an error, a face refers to a vertex or normal that does not exist (with
+// the face's line), a face has fewer than 3 or more than 255 corners, a vertex coordinate is
+// missing, not a decimal number or not finite (with its line), or there are no faces at all.
+// Lines may end in \n, \r\n or \r (obj_outline.hpp); the result does not depend on which.
 Mesh load_obj(const std::filesystem::path& file);
 
 }  // namespace sweeptrace
