@@ -32,20 +32,18 @@ void write_exr(const Image& image, const std::filesystem::path& path) {
         file.setFrameBuffer(frame);
         file.writePixels(image.height);
     } catch (const std::exception& e) {
-        throw InputError("cannot write '" + path.string() + "': " + e.what());
+        throw InputError("cannot write '" + path.string() + "': " + reason_or(e.what(), "OpenEXR failed"));
     }
 }
 
 Image read_exr(const std::filesystem::path& path) {
-    if (!std::filesystem::exists(path)) throw InputError("cannot read '" + path.string() + "': no such file");
+    check_image_file(path);
     try {
         Imf::InputFile file(path.c_str());
         const Imath::Box2i window = file.header().dataWindow();
         const long long w = static_cast<long long>(window.max.x) - window.min.x + 1;
         const long long h = static_cast<long long>(window.max.y) - window.min.y + 1;
-        if (w <= 0 || h <= 0 || w > (1 << 16) || h > (1 << 16))
-            throw InputError("cannot read '" + path.string() + "': data window " + std::to_string(w) + "x" +
-                             std::to_string(h) + " is out of range (1..65536)");
+        check_image_size(path, "EXR data window", w, h);
         const Imf::ChannelList& channels = file.header().channels();
         const bool rgb = channels.findChannel("R") && channels.findChannel("G") && channels.findChannel("B");
         const bool grey = !rgb && channels.findChannel("Y");
@@ -70,7 +68,7 @@ Image read_exr(const std::filesystem::path& path) {
     } catch (const InputError&) {
         throw;
     } catch (const std::exception& e) {
-        throw InputError("cannot read '" + path.string() + "': not a valid EXR file (" + e.what() + ")");
+        throw InputError("cannot read '" + path.string() + "': not a valid EXR file (" + reason_or(e.what(), "OpenEXR failed") + ")");
     }
 }
 

@@ -51,17 +51,21 @@ Image read_png(const std::filesystem::path& path) {
     const auto* data = bytes.data();
     const int size = static_cast<int>(bytes.size());
     int w = 0, h = 0, channels = 0;
+    if (!stbi_info_from_memory(data, size, &w, &h, &channels))
+        throw InputError("cannot read '" + path.string() + "': not a valid PNG (" +
+                         reason_or(stbi_failure_reason(), "unreadable header") + ")");
+    check_image_size(path, "PNG", w, h);
     const bool sixteen = stbi_is_16_bit_from_memory(data, size) != 0;
     Image image;
     if (sixteen) {
         std::unique_ptr<stbi_us, StbFree> px(stbi_load_16_from_memory(data, size, &w, &h, &channels, 3));
-        if (!px) throw InputError("cannot read '" + path.string() + "': not a valid PNG (" + stbi_failure_reason() + ")");
+        if (!px) throw InputError("cannot read '" + path.string() + "': not a valid PNG (" + reason_or(stbi_failure_reason(), "decoding failed") + ")");
         image = Image(w, h);
         for (std::size_t i = 0; i < image.pixels.size(); ++i)
             for (int c = 0; c < 3; ++c) image.pixels[i][c] = srgb_decode(px.get()[3 * i + c] / 65535.0f);
     } else {
         std::unique_ptr<stbi_uc, StbFree> px(stbi_load_from_memory(data, size, &w, &h, &channels, 3));
-        if (!px) throw InputError("cannot read '" + path.string() + "': not a valid PNG (" + stbi_failure_reason() + ")");
+        if (!px) throw InputError("cannot read '" + path.string() + "': not a valid PNG (" + reason_or(stbi_failure_reason(), "decoding failed") + ")");
         std::array<float, 256> table;
         for (int v = 0; v < 256; ++v) table[v] = srgb_decode(v / 255.0f);
         image = Image(w, h);

@@ -11,7 +11,6 @@ namespace sweeptrace {
 // are a few KB, the biggest mesh the tests use is 3.7 MB.
 inline constexpr std::uintmax_t kMaxSceneFileBytes = std::uintmax_t{16} << 20;   // 16 MiB
 inline constexpr std::uintmax_t kMaxMeshFileBytes = std::uintmax_t{512} << 20;   // 512 MiB
-inline constexpr std::uintmax_t kMaxImageFileBytes = std::uintmax_t{1} << 30;    // 1 GiB
 
 // Throws InputError "<file>: cannot read <what>: <reason>" unless `file` is a regular file of at
 // most `max_bytes` (so also for a missing file, a directory, a FIFO or a device).
