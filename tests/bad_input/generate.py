@@ -268,6 +268,10 @@ diff_case("png-truncated", E + r"cannot read 'bad\.png': not a valid PNG \(.+\)"
 diff_case("png-huge-header", E + r"cannot read 'bad\.png': PNG size 10000x10000 is out of range", png(10000, 10000, b""))
 diff_case("png-wide-header", E + r"cannot read 'bad\.png': PNG size 16777216x1 is out of range|cannot read 'bad\.png': not a valid PNG",
           png(1 << 24, 1, b""))
+# Found by tests/fuzz/fuzz_png: stb reallocates to 2 GB for a chunk length the file cannot hold.
+with open(os.path.join(HERE, "..", "fuzz", "corpus", "png", "regression-idat-length-2gb.png"), "rb") as f:
+    diff_case("png-chunk-length-bomb", E + r"cannot read 'bad\.png': not a valid PNG \(chunk at byte \d+ claims \d+ bytes", f.read())
+diff_case("png-no-iend", E + r"cannot read 'bad\.png': not a valid PNG \(no IEND chunk\)", GOOD[:-12])
 diff_case("pfm-bad-magic", E + r"cannot read 'bad\.pfm': not a valid PFM file: magic number is 'P6'", b"P6\n4 4\n255\n", "bad.pfm")
 diff_case("pfm-empty", E + r"cannot read 'bad\.pfm': not a valid PFM file: header ends before the magic number", b"", "bad.pfm")
 diff_case("pfm-width-zero", E + r"cannot read 'bad\.pfm': PFM size 0x4 is out of range", pfm(0, 4), "bad.pfm")
