@@ -3,7 +3,8 @@
 # so on a prepared machine it costs a second. Needs root (as CI and fresh machines run).
 set -euo pipefail
 packages=(build-essential cmake libglm-dev libembree-dev libstb-dev catch2 nlohmann-json3-dev
-          libtinyobjloader-dev libcli11-dev libtbb-dev libopenexr-dev python3-matplotlib)
+          libtinyobjloader-dev libcli11-dev libtbb-dev libopenexr-dev python3-matplotlib
+          clang libclang-rt-14-dev)  # clang + its runtime: the libFuzzer harnesses (tests/fuzz)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

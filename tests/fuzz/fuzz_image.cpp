@@ -1,4 +1,5 @@
-// libFuzzer: bytes -> read_image("x.png") -> an Image of the size it claims, or an InputError.
+// libFuzzer: bytes -> read_image("input.EXT") -> an Image of the size it claims, or an
+// InputError. Built once per reader: FUZZ_IMAGE_EXT is "png", "pfm" or "exr" (project/CMakeLists.txt).
 #include <cstdlib>
 
 #include "fuzz_input_file.hpp"
@@ -6,7 +7,7 @@
 #include "raytracer/input_error.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-    const auto path = sweeptrace::fuzz::input_file("input.png", data, size);
+    const auto path = sweeptrace::fuzz::input_file("input." FUZZ_IMAGE_EXT, data, size);
     try {
         const sweeptrace::Image image = sweeptrace::read_image(path);
         if (image.width < 1 || image.height < 1 ||
