@@ -20,9 +20,11 @@
 #include "raytracer/accel/bvh_accel.hpp"
 #include "raytracer/accel/embree_accel.hpp"
 #include "raytracer/cli/commands.hpp"
+#include "raytracer/cli/render_limits.hpp"
 #include "raytracer/input_error.hpp"
 #include "raytracer/render/camera.hpp"
 #include "raytracer/render/renderer.hpp"
+#include "raytracer/scene/film_limits.hpp"
 #include "raytracer/scene/load_scene.hpp"
 
 namespace sweeptrace {
@@ -87,8 +89,10 @@ TraceResult trace_all(const Accel& accel, const std::vector<collision::Ray>& ray
 
 void run_bench(const BenchArgs& args) {
     if (args.rays < 1) throw InputError("bench: --rays must be >= 1, got " + std::to_string(args.rays));
-    if (args.threads < 1) throw InputError("bench: --threads must be >= 1, got " + std::to_string(args.threads));
-    if (args.spp < 1) throw InputError("bench: --spp must be >= 1, got " + std::to_string(args.spp));
+    if (args.threads < 1 || args.threads > kMaxThreads)
+        throw InputError("bench: --threads must be in [1, " + std::to_string(kMaxThreads) + "], got " + std::to_string(args.threads));
+    if (const std::string problem = film_setting_problem(FilmSetting::Spp, args.spp); !problem.empty())
+        throw InputError("bench: --spp " + problem);
     const Scene scene = load_scene(args.scene);
 
     double w0 = wall_seconds();
