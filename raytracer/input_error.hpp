@@ -15,10 +15,16 @@
 namespace sweeptrace {
 
 // Text quoted from input, at most `max` bytes: longer text keeps its head and tail around "...".
+// The cuts fall between UTF-8 characters, so valid UTF-8 stays valid.
 inline std::string excerpt(std::string_view s, std::size_t max = 60) {
-    if (s.size() <= max || max < 8) return std::string(s.substr(0, max));
-    const std::size_t tail = (max - 3) / 3;
-    return std::string(s.substr(0, max - 3 - tail)) + "..." + std::string(s.substr(s.size() - tail));
+    if (s.size() <= max) return std::string(s);
+    auto continuation = [&](std::size_t i) { return i < s.size() && (static_cast<unsigned char>(s[i]) & 0xC0) == 0x80; };
+    const std::size_t tail = max < 8 ? 0 : (max - 3) / 3;
+    std::size_t head_end = max < 8 ? max : max - 3 - tail, tail_start = s.size() - tail;
+    while (head_end > 0 && continuation(head_end)) --head_end;
+    while (continuation(tail_start)) ++tail_start;
+    if (max < 8) return std::string(s.substr(0, head_end));
+    return std::string(s.substr(0, head_end)) + "..." + std::string(s.substr(tail_start));
 }
 
 // A library's reason for a failure, or `fallback` when it gave none (null, empty, or errno 0's

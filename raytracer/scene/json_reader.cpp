@@ -19,7 +19,7 @@ std::string key_component(const std::string& parent, std::string_view key) {
         return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_' || c == '-';
     });
     if (plain) return parent.empty() ? std::string(key) : parent + "." + std::string(key);
-    return parent + "[" + nlohmann::json(std::string(key)).dump() + "]";
+    return parent + "[" + nlohmann::json(std::string(key)).dump(-1, ' ', false, nlohmann::json::error_handler_t::replace) + "]";
 }
 
 // The path is quoted as an excerpt: a key may be any string, and the message stays one short line.
@@ -55,8 +55,9 @@ std::size_t too_deep_at(const std::string& text) {
 
 // JSON text of `v`, cut off after about `budget` bytes, without serialising all of a huge value.
 void bounded_dump(const nlohmann::json& v, std::size_t budget, std::string& out) {
+    constexpr auto kReplace = nlohmann::json::error_handler_t::replace;  // never throw over a cut character
     if (!v.is_structured()) {
-        out += v.dump();
+        out += v.dump(-1, ' ', false, kReplace);
         return;
     }
     const bool object = v.is_object();
@@ -69,7 +70,7 @@ void bounded_dump(const nlohmann::json& v, std::size_t budget, std::string& out)
         }
         if (!first) out += ", ";
         first = false;
-        if (object) out += nlohmann::json(excerpt(it.key(), budget)).dump() + ": ";
+        if (object) out += nlohmann::json(excerpt(it.key(), budget)).dump(-1, ' ', false, kReplace) + ": ";
         bounded_dump(*it, budget, out);
     }
     out += object ? '}' : ']';

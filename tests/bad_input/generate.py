@@ -99,6 +99,10 @@ render_case("json-long-value", E + r"scene\.json: materials\.m\.type: unknown ma
             scene().replace('"diffuse"', '"' + "d" * 5000 + '"'))
 render_case("json-newline-in-key", E + r"scene\.json: film\[\"w\\nidth\"\]: unknown key",
             scene().replace('"spp": 1', '"spp": 1, "w\\nidth": 3'))
+# Found while reviewing the excerpts: a key cut inside a UTF-8 character made nlohmann's dump
+# throw, an internal error (exit 3) on f0d10f8's successor before the cut was made UTF-8 aware.
+render_case("json-utf8-key-in-excerpt", E + r"scene\.json: camera\.position: must be an array of 3 numbers .*got \[\{\"é+",
+            scene(camera__position=[{"é" * 40: 1}]).replace("\\u00e9", "é"))
 render_case("json-long-array-value", E + r"scene\.json: camera\.position: must be an array of 3 numbers",
             scene().replace("[0, 0, 5]", "[" + ", ".join(["1"] * 20000) + "]"))
 # --- scene files: structure and ranges ---------------------------------------------------------

@@ -206,6 +206,18 @@ TEST_CASE("hostile input: a message is one line of bounded length whatever it qu
     CHECK(what.find('\r') == std::string::npos);
     CHECK(what.rfind("scene.json: objects[0].kkk", 0) == 0);  // keeps the file and the place
     CHECK(what.find("...") != std::string::npos);
+    // Cuts fall between UTF-8 characters: no continuation byte right after the head or before
+    // the tail ("é" is 2 bytes, so an odd cut would split one).
+    std::string accents;
+    for (int i = 0; i < 100; ++i) accents += "\xc3\xa9";
+    for (const std::size_t max : {7u, 8u, 9u, 40u, 41u}) {
+        const std::string e = sweeptrace::excerpt(accents, max);
+        INFO(max << ": " << e);
+        CHECK(e.size() <= max);
+        for (std::size_t i = 0; i < e.size(); ++i)
+            if ((static_cast<unsigned char>(e[i]) & 0xC0) == 0x80) CHECK((static_cast<unsigned char>(e[i - 1]) & 0xE0) == 0xC0);
+        CHECK((static_cast<unsigned char>(e.back()) & 0xE0) != 0xC0);  // no lead byte left without its partner
+    }
     CHECK(sweeptrace::reason_or("", "fallback") == "fallback");
     CHECK(sweeptrace::reason_or("Success", "fallback") == "fallback");
     CHECK(sweeptrace::reason_or(nullptr, "fallback") == "fallback");
