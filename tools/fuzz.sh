@@ -20,9 +20,11 @@ mkdir -p build-fuzz/artifacts
 status=0
 for h in "${harnesses[@]}"; do
   mkdir -p "build-fuzz/work/$h"
+  dict=()
+  [ -f "tests/fuzz/$h.dict" ] && dict=(-dict="tests/fuzz/$h.dict")
   echo "fuzz.sh: $h for $seconds s" >&2
   ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
-    "$bin/fuzz_$h" -max_total_time="$seconds" -rss_limit_mb=2048 -malloc_limit_mb=2048 -timeout=10 \
+    "$bin/fuzz_$h" "${dict[@]}" -max_total_time="$seconds" -rss_limit_mb=2048 -malloc_limit_mb=2048 -timeout=10 \
     -max_len=16384 -print_final_stats=1 -artifact_prefix="build-fuzz/artifacts/$h-" \
     "build-fuzz/work/$h" "tests/fuzz/corpus/$h" 2>"build-fuzz/$h.log" || status=1
   tail -n 12 "build-fuzz/$h.log" | grep -E "^(Done|stat::number_of_executed_units|stat::peak_rss_mb)|ERROR|SUMMARY" >&2 || true
