@@ -20,6 +20,7 @@
 #include "raytracer/accel/bvh_accel.hpp"
 #include "raytracer/accel/embree_accel.hpp"
 #include "raytracer/cli/commands.hpp"
+#include "raytracer/cli/memory_budget.hpp"
 #include "raytracer/cli/render_limits.hpp"
 #include "raytracer/input_error.hpp"
 #include "raytracer/render/camera.hpp"
@@ -94,6 +95,7 @@ void run_bench(const BenchArgs& args) {
     if (const std::string problem = film_setting_problem(FilmSetting::Spp, args.spp); !problem.empty())
         throw InputError("bench: --spp " + problem);
     const Scene scene = load_scene(args.scene);
+    check_render_memory(scene, std::nullopt);
 
     double w0 = wall_seconds();
     const BvhAccel native(scene);
