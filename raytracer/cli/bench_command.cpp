@@ -14,8 +14,11 @@
 #include "raytracer/cli/bench_meshes.hpp"
 #include "raytracer/cli/bench_rays.hpp"
 #include "raytracer/cli/commands.hpp"
+#include "raytracer/cli/memory_budget.hpp"
+#include "raytracer/cli/render_limits.hpp"
 #include "raytracer/input_error.hpp"
 #include "raytracer/render/renderer.hpp"
+#include "raytracer/scene/film_limits.hpp"
 #include "raytracer/scene/load_scene.hpp"
 
 namespace sweeptrace {
@@ -31,8 +34,10 @@ struct BenchArgs {
 
 void run_bench(const BenchArgs& args) {
     if (args.rays < 1) throw InputError("bench: --rays must be >= 1, got " + std::to_string(args.rays));
-    if (args.threads < 1) throw InputError("bench: --threads must be >= 1, got " + std::to_string(args.threads));
-    if (args.spp < 1) throw InputError("bench: --spp must be >= 1, got " + std::to_string(args.spp));
+    if (args.threads < 1 || args.threads > kMaxThreads)
+        throw InputError("bench: --threads must be in [1, " + std::to_string(kMaxThreads) + "], got " + std::to_string(args.threads));
+    if (const std::string problem = film_setting_problem(FilmSetting::Spp, args.spp); !problem.empty())
+        throw InputError("bench: --spp " + problem);
     if (args.scene.empty() == args.meshes.empty())
         throw InputError("bench: give either a scene file or --meshes DIR, not both or neither");
     if (!args.meshes.empty()) {
@@ -40,6 +45,7 @@ void run_bench(const BenchArgs& args) {
         return;
     }
     const Scene scene = load_scene(args.scene);
+    check_render_memory(scene, std::nullopt);
 
     double w0 = wall_seconds();
     const BvhAccel native(scene);

@@ -9,6 +9,7 @@
 #include "raytracer/cli/commands.hpp"
 #include "raytracer/cli/diff_folder.hpp"
 #include "raytracer/cli/diff_pair.hpp"
+#include "raytracer/cli/output_guard.hpp"
 #include "raytracer/image/image.hpp"
 #include "raytracer/input_error.hpp"
 
@@ -75,6 +76,12 @@ int run_diff(DiffArgs& args, const CLI::App& cmd) {
     }
     if (args.a.empty() || args.b.empty()) throw InputError("diff needs two images A B (or --golden DIR --actual DIR)");
     require_writable_parent(args.heatmap, "heatmap");
+    if (!args.heatmap.empty()) {
+        std::vector<NamedInput> inputs{{"image A", args.a}, {"image B", args.b}};
+        if (!args.variance_a.empty()) inputs.push_back({"--variance-a image", args.variance_a});
+        if (!args.variance_b.empty()) inputs.push_back({"--variance-b image", args.variance_b});
+        refuse_output_over_input(args.heatmap, inputs);
+    }
     const PairReport r = compare_pair({args.a, args.b, args.variance_a, args.variance_b}, args.settings);
     print_report(r, stdout);
     return write_heatmap(args, r);

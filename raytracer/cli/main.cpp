@@ -19,9 +19,12 @@ int main(int argc, char** argv) {
     sweeptrace::add_merge_command(app, exit_code);
     try {
         app.parse(argc, argv);
+    } catch (const CLI::Success& e) {  // --help
+        return app.exit(e);
     } catch (const CLI::ParseError& e) {
-        const int code = app.exit(e);
-        return code == 0 ? 0 : 2;
+        // CLI11's own message, as one line with the program's prefix (it prints two, unprefixed).
+        std::fprintf(stderr, "sweeptrace: error: %s (see --help)\n", sweeptrace::InputError(e.what()).what());
+        return 2;
     } catch (const sweeptrace::InputError& e) {
         std::fprintf(stderr, "sweeptrace: error: %s\n", e.what());
         return 2;

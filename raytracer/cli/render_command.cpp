@@ -1,19 +1,18 @@
 // `sweeptrace render SCENE.json [options]`: load, build the acceleration structure, render with a
-// progress display, write the image atomically. Ctrl-C stops after the samples finished so far,
-// writes them, and exits 130; a second Ctrl-C kills at once (the atomic write still leaves no
-// partial file).
+// progress display, write the image atomically. Ctrl-C or SIGTERM stops after the samples
+// finished so far, writes them, and exits 130 / 143; a second signal kills at once (the atomic
+// write still leaves no partial file, cli/interrupt.hpp).
 #include <unistd.h>
 
 #include <algorithm>
-#include <atomic>
 #include <chrono>
 #include <cmath>
-#include <csignal>
 #include <cstdint>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include <tbb/info.h>
 
@@ -21,6 +20,10 @@
 #include "raytracer/cli/commands.hpp"
 #include "raytracer/cli/render_identity.hpp"
 #include "raytracer/cli/render_part.hpp"
+#include "raytracer/cli/interrupt.hpp"
+#include "raytracer/cli/memory_budget.hpp"
+#include "raytracer/cli/output_guard.hpp"
+#include "raytracer/cli/render_limits.hpp"
 #include "raytracer/input_error.hpp"
 #include "raytracer/render/renderer.hpp"
 #include "raytracer/render/tone_map.hpp"
@@ -31,40 +34,15 @@ namespace sweeptrace {
 
 namespace {
 
-// Lock-free, so setting it from a signal handler is well defined.
-std::atomic<bool> g_interrupted{false};
-
 // --time without --spp: no pass limit a render could reach (the scene format's own spp limit).
 constexpr int kMaxTimedSpp = 1 << 20;
-static_assert(std::atomic<bool>::is_always_lock_free);
-
-extern "C" void on_sigint(int) {
-    g_interrupted.store(true);
-    std::signal(SIGINT, SIG_DFL);  // a second Ctrl-C terminates immediately
-}
-
-// Installs the handler for its lifetime.
-class SigintGuard {
-public:
-    SigintGuard() {
-        g_interrupted.store(false);
-        previous_ = std::signal(SIGINT, on_sigint);
-    }
-    ~SigintGuard() { std::signal(SIGINT, previous_ == SIG_ERR ? SIG_DFL : previous_); }
-    SigintGuard(const SigintGuard&) = delete;
-    SigintGuard& operator=(const SigintGuard&) = delete;
-
-private:
-    void (*previous_)(int) = SIG_DFL;
-};
 
 struct RenderArgs {
     std::string scene;
     std::string output;
     std::string variance;  // optional: per-pixel variance of the pixel means (float formats only)
-    int spp = 0, width = 0, height = 0, threads = 0, max_depth = 0;
+    RenderLimits limits;   // --width --height --spp --max-depth --seed --threads --max-memory
     double time = 0.0;
-    std::uint64_t seed = 0;
     std::string accel = "bvh";
     std::string sampler;  // empty: the scene's film.sampler
     std::string guiding;  // "on", "off" or empty: the scene's film.guiding
@@ -72,8 +50,7 @@ struct RenderArgs {
     bool quiet = false;
     std::string samples;  // "A:B": render a farm part
     bool skip_existing = false;
-    CLI::Option *spp_opt = nullptr, *width_opt = nullptr, *height_opt = nullptr, *depth_opt = nullptr,
-                *seed_opt = nullptr, *time_opt = nullptr;
+    CLI::Option* time_opt = nullptr;
 };
 
 std::string clock_text(double seconds) {
@@ -140,12 +117,8 @@ void require(bool ok, const std::string& message) {
 }
 
 int run_render(const RenderArgs& a) {
-    if (a.spp_opt->count()) require(a.spp >= 1, "--spp must be at least 1, got " + std::to_string(a.spp));
-    if (a.width_opt->count()) require(a.width >= 1, "--width must be at least 1, got " + std::to_string(a.width));
-    if (a.height_opt->count()) require(a.height >= 1, "--height must be at least 1, got " + std::to_string(a.height));
-    if (a.depth_opt->count())
-        require(a.max_depth >= 1, "--max-depth must be at least 1, got " + std::to_string(a.max_depth));
-    require(a.threads >= 0, "--threads must be 0 (all cores) or more, got " + std::to_string(a.threads));
+    a.limits.validate();
+    const int thread_count = a.limits.thread_count();
     if (a.time_opt->count())
         require(a.time > 0.0 && std::isfinite(a.time), "--time must be a positive number of seconds, got " + a.time_opt->as<std::string>());
 
@@ -176,18 +149,13 @@ int run_render(const RenderArgs& a) {
 
     Scene scene = load_scene(scene_path);
     for (const std::string& w : emitters_facing_nothing(scene)) std::fprintf(stderr, "sweeptrace: warning: %s\n", w.c_str());
-    // --width or --height alone keeps the film's aspect ratio; both set it.
-    const int film_w = scene.film.width, film_h = scene.film.height;
-    if (a.width_opt->count()) scene.film.width = a.width;
-    if (a.height_opt->count()) scene.film.height = a.height;
-    if (a.width_opt->count() && !a.height_opt->count())
-        scene.film.height = std::max(1, static_cast<int>(std::lround(double(a.width) * film_h / film_w)));
-    if (a.height_opt->count() && !a.width_opt->count())
-        scene.film.width = std::max(1, static_cast<int>(std::lround(double(a.height) * film_w / film_h)));
-    if (a.spp_opt->count()) scene.film.spp = a.spp;
-    if (a.depth_opt->count()) scene.film.max_depth = a.max_depth;
-    if (a.seed_opt->count()) scene.seed = a.seed;
+    a.limits.apply(scene);
     if (!a.sampler.empty()) scene.film.sampler = a.sampler == "independent" ? SamplerKind::Independent : SamplerKind::Sobol;
+    std::vector<NamedInput> inputs{{"scene", scene_path}};
+    for (const Mesh& m : scene.meshes) inputs.push_back({"mesh", m.source});
+    refuse_output_over_input(out, inputs);
+    if (!a.variance.empty()) refuse_output_over_input(a.variance, inputs);
+    check_render_memory(scene, a.limits.memory_limit());
 
     // A farm part: which samples, and the render they belong to; a re-run task skips a finished one.
     const SampleRange range =
@@ -204,11 +172,11 @@ int run_render(const RenderArgs& a) {
 
     RenderOptions opt;
     // --time alone renders until the budget is spent; with --spp, whichever comes first.
-    opt.spp = a.time_opt->count() && !a.spp_opt->count() ? kMaxTimedSpp : scene.film.spp;
+    opt.spp = a.time_opt->count() && !a.limits.spp_opt->count() ? kMaxTimedSpp : scene.film.spp;
     opt.time_budget = a.time_opt->count() ? a.time : 0.0;
     opt.budget_clock = a.time_clock == "cpu" ? BudgetClock::ProcessCpu : BudgetClock::Wall;
     opt.max_depth = scene.film.max_depth;
-    opt.threads = a.threads;
+    opt.threads = thread_count;
     opt.seed = scene.seed;
     opt.sampler = scene.film.sampler;
     opt.guiding = a.guiding.empty() ? scene.film.guiding : a.guiding == "on";
@@ -220,8 +188,8 @@ int run_render(const RenderArgs& a) {
         opt.first_sample = range.begin;
         opt.spp = range.end - range.begin;
     }
-    SigintGuard sigint;
-    opt.cancel = &g_interrupted;
+    const InterruptGuard interrupt;
+    opt.cancel = InterruptGuard::flag();
     ProgressDisplay progress(isatty(fileno(stderr)) != 0, std::uint64_t(scene.film.width) * scene.film.height);
     if (!a.quiet) opt.progress = [&progress](const RenderProgress& p) { progress.update(p); };
 
@@ -237,7 +205,7 @@ int run_render(const RenderArgs& a) {
                      static_cast<unsigned long long>(st.nonfinite_samples));
     if (st.cancelled && st.completed_spp == 0) {
         std::fprintf(stderr, "sweeptrace: interrupted before the first pass over the image finished; nothing written\n");
-        return 130;
+        return InterruptGuard::exit_code();
     }
     if (!a.samples.empty()) write_part(result, identity, range.begin, out);
     else write_image(is_display_format(out) ? to_display(result.image, scene.film.exposure, scene.film.tone_curve) : result.image, out);
@@ -248,7 +216,7 @@ int run_render(const RenderArgs& a) {
     if (st.budget_spent && !a.quiet)
         std::fprintf(stderr, "sweeptrace: --time %g s spent: %d spp reached\n", a.time, st.completed_spp);
     if (!a.quiet) {
-        const int threads = a.threads > 0 ? a.threads : tbb::info::default_concurrency();
+        const int threads = thread_count > 0 ? thread_count : tbb::info::default_concurrency();
         const double secs = std::max(st.seconds, 1e-9);
         std::fprintf(stderr,
                      "%s: %dx%d, %d spp%s, %s (%s, built in %.2f s), %d thread%s: %.2f s, %s samples/s, %s rays/s -> %s\n",
@@ -258,7 +226,7 @@ int run_render(const RenderArgs& a) {
                      threads, threads == 1 ? "" : "s", st.seconds, si_text(double(st.samples) / secs).c_str(),
                      si_text(double(st.rays) / secs).c_str(), out.string().c_str());
     }
-    return st.cancelled ? 130 : 0;
+    return st.cancelled ? InterruptGuard::exit_code() : 0;
 }
 
 }  // namespace
@@ -275,19 +243,10 @@ void add_render_command(CLI::App& app, int& exit_code) {
                     "variance / spp, from the same samples (needs spp >= 2); for `diff --variance-a/-b`. Exact for "
                     "--sampler independent; under sobol (stratified) the true variance is smaller, so the file "
                     "overstates it and diff's noise test is conservative");
-    args->spp_opt = cmd->add_option("--spp", args->spp,
-                                    "Samples per pixel (default: the scene's film.spp; with --time: no limit)");
+    args->limits.add_options(*cmd);
     args->time_opt = cmd->add_option("--time", args->time,
                                      "Time budget in seconds (wall clock): whole passes of 1 spp until it is spent, at "
                                      "least one; the image holds the finished passes. With --spp, whichever comes first");
-    args->width_opt = cmd->add_option("--width", args->width,
-                                      "Image width; alone, the height follows the film's aspect ratio");
-    args->height_opt = cmd->add_option("--height", args->height,
-                                       "Image height; alone, the width follows the film's aspect ratio");
-    cmd->add_option("--threads", args->threads, "Worker threads, 0 = all cores")->capture_default_str();
-    args->seed_opt = cmd->add_option("--seed", args->seed, "Random seed (default: the scene's seed)");
-    args->depth_opt = cmd->add_option("--max-depth", args->max_depth,
-                                      "Path vertices after the camera (default: the scene's film.max_depth)");
     cmd->add_option("--accel", args->accel, "Acceleration structure")
         ->check(CLI::IsMember({"bvh", "embree"}))
         ->capture_default_str();

@@ -26,6 +26,21 @@ Image read_hdr(const std::filesystem::path& path);
 
 namespace sweeptrace::formats {
 
+// What the readers accept, checked on the file's size and the header's dimensions before the
+// pixels are decoded or allocated: a 1 KB EXR or PNG header may claim 65536 x 65536 pixels
+// (51 GB as floats). 2^26 pixels (8192 x 8192, 805 MB as an Image) is far above any render the
+// tests or docs compare.
+inline constexpr std::uintmax_t kMaxImageFileBytes = std::uintmax_t{1} << 30;  // 1 GiB
+inline constexpr long long kMaxImageSide = 1 << 16;
+inline constexpr long long kMaxImagePixels = 1LL << 26;
+
+// Throws InputError "cannot read '<path>': <format> size WxH is out of range ..." unless
+// 1 <= w, h <= kMaxImageSide and w * h <= kMaxImagePixels.
+void check_image_size(const std::filesystem::path& path, const char* format, long long w, long long h);
+
+// Throws InputError naming `path` unless it is a regular file of at most kMaxImageFileBytes.
+void check_image_file(const std::filesystem::path& path);
+
 // Writes `size` bytes to `path` (truncating); throws InputError naming `path` on any failure.
 void write_bytes(const std::filesystem::path& path, const void* data, std::size_t size);
 

@@ -60,20 +60,39 @@ namespace formats {
 
 void write_bytes(const std::filesystem::path& path, const void* data, std::size_t size) {
     std::FILE* f = std::fopen(path.c_str(), "wb");
-    if (!f) throw InputError("cannot write '" + path.string() + "': " + std::strerror(errno));
+    if (!f) throw InputError("cannot write '" + path.string() + "': " + reason_or(std::strerror(errno), "open failed"));
     const bool written = std::fwrite(data, 1, size, f) == size;
     const int saved = errno;
     const bool closed = std::fclose(f) == 0;
     if (!written || !closed)
-        throw InputError("cannot write '" + path.string() + "': " + std::strerror(written ? errno : saved));
+        throw InputError("cannot write '" + path.string() + "': " +
+                         reason_or(std::strerror(written ? errno : saved), "write failed"));
+}
+
+void check_image_size(const std::filesystem::path& path, const char* format, long long w, long long h) {
+    if (w >= 1 && h >= 1 && w <= kMaxImageSide && h <= kMaxImageSide && w * h <= kMaxImagePixels) return;
+    throw InputError("cannot read '" + path.string() + "': " + format + " size " + std::to_string(w) + "x" +
+                     std::to_string(h) + " is out of range (each side 1.." + std::to_string(kMaxImageSide) +
+                     ", at most " + std::to_string(kMaxImagePixels) + " pixels)");
+}
+
+void check_image_file(const std::filesystem::path& path) {
+    std::error_code ec;
+    const auto status = std::filesystem::status(path, ec);
+    std::string reason;
+    if (!std::filesystem::exists(status)) reason = "no such file";
+    else if (std::filesystem::is_directory(status)) reason = "is a directory";
+    else if (!std::filesystem::is_regular_file(status)) reason = "not a regular file";
+    else if (std::filesystem::file_size(path, ec) > kMaxImageFileBytes)
+        reason = "larger than the " + std::to_string(kMaxImageFileBytes >> 20) + " MiB an image may be";
+    if (!reason.empty()) throw InputError("cannot read '" + path.string() + "': " + reason);
 }
 
 std::vector<unsigned char> read_bytes(const std::filesystem::path& path) {
-    std::error_code ec;
-    if (std::filesystem::is_directory(path, ec))
-        throw InputError("cannot read '" + path.string() + "': is a directory");
+    check_image_file(path);
+    errno = 0;
     std::ifstream in(path, std::ios::binary);
-    if (!in) throw InputError("cannot read '" + path.string() + "': " + std::strerror(errno));
+    if (!in) throw InputError("cannot read '" + path.string() + "': " + reason_or(std::strerror(errno), "open failed"));
     std::vector<unsigned char> bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
     if (in.bad()) throw InputError("cannot read '" + path.string() + "': read error");
     return bytes;

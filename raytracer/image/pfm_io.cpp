@@ -97,8 +97,7 @@ Image read_pfm(const std::filesystem::path& path) {
     const int channels = magic == "PF" ? 3 : 1;
     const long long w = header.integer("width");
     const long long h = header.integer("height");
-    if (w <= 0 || h <= 0 || w > (1 << 16) || h > (1 << 16))
-        header.fail("size " + std::to_string(w) + "x" + std::to_string(h) + " is out of range (1..65536)");
+    check_image_size(path, "PFM", w, h);
     const double scale = header.number("scale");
     if (scale == 0.0 || !std::isfinite(scale)) header.fail("scale must be a non-zero number (its sign is the byte order)");
     const bool little = scale < 0.0;

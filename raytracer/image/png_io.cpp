@@ -7,6 +7,7 @@
 #include <stb/stb_image.h>
 #include <stb/stb_image_write.h>
 
+#include <algorithm>
 #include <array>
 #include <climits>
 #include <memory>
@@ -23,6 +24,30 @@ void append_to_vector(void* context, void* data, int size) {
     auto* out = static_cast<std::vector<unsigned char>*>(context);
     const auto* bytes = static_cast<const unsigned char*>(data);
     out->insert(out->end(), bytes, bytes + size);
+}
+
+// stb trusts each chunk's length field: one chunk claiming 2 GB in a 71-byte file makes it
+// reallocate its buffer to 2 GB before reading (found by tests/fuzz/fuzz_png). So the chunk
+// structure is walked first: every chunk must fit in what the file holds.
+void check_chunks(const std::vector<unsigned char>& bytes, const std::filesystem::path& path) {
+    static const unsigned char kSignature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
+    auto fail = [&](const std::string& what) {
+        throw InputError("cannot read '" + path.string() + "': not a valid PNG (" + what + ")");
+    };
+    if (bytes.size() < 8 || !std::equal(kSignature, kSignature + 8, bytes.begin())) fail("no PNG signature");
+    std::size_t at = 8;
+    while (at < bytes.size()) {
+        if (bytes.size() - at < 12) fail("chunk at byte " + std::to_string(at) + " is cut off");
+        const std::size_t length = (std::size_t(bytes[at]) << 24) | (std::size_t(bytes[at + 1]) << 16) |
+                                   (std::size_t(bytes[at + 2]) << 8) | std::size_t(bytes[at + 3]);
+        const bool end = std::equal(bytes.begin() + at + 4, bytes.begin() + at + 8, "IEND");
+        if (length > bytes.size() - at - 12)
+            fail("chunk at byte " + std::to_string(at) + " claims " + std::to_string(length) + " bytes, the file has " +
+                 std::to_string(bytes.size() - at - 12) + " left");
+        at += 12 + length;
+        if (end) return;
+    }
+    fail("no IEND chunk");
 }
 
 struct StbFree {
@@ -52,17 +77,22 @@ Image read_png(const std::filesystem::path& path) {
     const auto* data = bytes.data();
     const int size = static_cast<int>(bytes.size());
     int w = 0, h = 0, channels = 0;
+    check_chunks(bytes, path);
+    if (!stbi_info_from_memory(data, size, &w, &h, &channels))
+        throw InputError("cannot read '" + path.string() + "': not a valid PNG (" +
+                         reason_or(stbi_failure_reason(), "unreadable header") + ")");
+    check_image_size(path, "PNG", w, h);
     const bool sixteen = stbi_is_16_bit_from_memory(data, size) != 0;
     Image image;
     if (sixteen) {
         std::unique_ptr<stbi_us, StbFree> px(stbi_load_16_from_memory(data, size, &w, &h, &channels, 3));
-        if (!px) throw InputError("cannot read '" + path.string() + "': not a valid PNG (" + stbi_failure_reason() + ")");
+        if (!px) throw InputError("cannot read '" + path.string() + "': not a valid PNG (" + reason_or(stbi_failure_reason(), "decoding failed") + ")");
         image = Image(w, h);
         for (std::size_t i = 0; i < image.pixels.size(); ++i)
             for (int c = 0; c < 3; ++c) image.pixels[i][c] = srgb_decode(px.get()[3 * i + c] / 65535.0f);
     } else {
         std::unique_ptr<stbi_uc, StbFree> px(stbi_load_from_memory(data, size, &w, &h, &channels, 3));
-        if (!px) throw InputError("cannot read '" + path.string() + "': not a valid PNG (" + stbi_failure_reason() + ")");
+        if (!px) throw InputError("cannot read '" + path.string() + "': not a valid PNG (" + reason_or(stbi_failure_reason(), "decoding failed") + ")");
         std::array<float, 256> table;
         for (int v = 0; v < 256; ++v) table[v] = srgb_decode(v / 255.0f);
         image = Image(w, h);

@@ -19,11 +19,61 @@ std::string key_component(const std::string& parent, std::string_view key) {
         return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_' || c == '-';
     });
     if (plain) return parent.empty() ? std::string(key) : parent + "." + std::string(key);
-    return parent + "[" + nlohmann::json(std::string(key)).dump() + "]";
+    return parent + "[" + nlohmann::json(std::string(key)).dump(-1, ' ', false, nlohmann::json::error_handler_t::replace) + "]";
 }
 
+// The path is quoted as an excerpt: a key may be any string, and the message stays one short line.
 std::string where(const std::filesystem::path& file, const std::string& path) {
-    return file.string() + ": " + (path.empty() ? std::string("(top level)") : path) + ": ";
+    return file.string() + ": " + (path.empty() ? std::string("(top level)") : excerpt(path, 120)) + ": ";
+}
+
+// Deeper than any scene needs (root > objects > object > transform > step > rotate > axis is 6),
+// and shallow enough that nothing recursive over the document (dump, destruction, messages) can
+// run out of stack. Checked on the raw text, before nlohmann builds anything.
+constexpr int kMaxNesting = 32;
+
+// Byte offset of the first bracket that opens level kMaxNesting + 1, or npos.
+std::size_t too_deep_at(const std::string& text) {
+    int depth = 0;
+    bool in_string = false, escaped = false;
+    for (std::size_t i = 0; i < text.size(); ++i) {
+        const char c = text[i];
+        if (in_string) {
+            if (escaped) escaped = false;
+            else if (c == '\\') escaped = true;
+            else if (c == '"') in_string = false;
+        } else if (c == '"') {
+            in_string = true;
+        } else if (c == '[' || c == '{') {
+            if (++depth > kMaxNesting) return i;
+        } else if (c == ']' || c == '}') {
+            --depth;
+        }
+    }
+    return std::string::npos;
+}
+
+// JSON text of `v`, cut off after about `budget` bytes, without serialising all of a huge value.
+void bounded_dump(const nlohmann::json& v, std::size_t budget, std::string& out) {
+    constexpr auto kReplace = nlohmann::json::error_handler_t::replace;  // never throw over a cut character
+    if (!v.is_structured()) {
+        out += v.dump(-1, ' ', false, kReplace);
+        return;
+    }
+    const bool object = v.is_object();
+    out += object ? '{' : '[';
+    bool first = true;
+    for (auto it = v.begin(); it != v.end(); ++it) {
+        if (out.size() >= budget) {
+            out += "...";
+            break;
+        }
+        if (!first) out += ", ";
+        first = false;
+        if (object) out += nlohmann::json(excerpt(it.key(), budget)).dump(-1, ' ', false, kReplace) + ": ";
+        bounded_dump(*it, budget, out);
+    }
+    out += object ? '}' : ']';
 }
 
 // nlohmann reports the byte offset of the character it stopped at; people want line:column.
@@ -116,12 +166,17 @@ private:
 }  // namespace
 
 nlohmann::json parse(const std::string& text, const std::filesystem::path& file) {
+    if (const std::size_t at = too_deep_at(text); at != std::string::npos) {
+        const auto [line, column] = line_column(text, at + 1);
+        throw InputError(file.string() + ":" + std::to_string(line) + ":" + std::to_string(column) +
+                         ": nested deeper than " + std::to_string(kMaxNesting) + " arrays/objects (no scene needs more than 6)");
+    }
     try {
         return nlohmann::json::parse(text, DuplicateKeyCheck(file));
     } catch (const nlohmann::json::parse_error& e) {
         const auto [line, column] = line_column(text, e.byte);
         throw InputError(file.string() + ":" + std::to_string(line) + ":" + std::to_string(column) +
-                         ": invalid JSON: " + parse_error_reason(e.what()));
+                         ": invalid JSON: " + excerpt(reason_or(parse_error_reason(e.what()).c_str(), "parse error"), 160));
     } catch (const nlohmann::json::out_of_range& e) {
         // Number overflow (1e999): nlohmann names the token but not its place; find it.
         const std::string what = e.what();
@@ -136,7 +191,7 @@ nlohmann::json parse(const std::string& text, const std::filesystem::path& file)
                 place = ":" + std::to_string(line) + ":" + std::to_string(column);
             }
         }
-        throw InputError(file.string() + place + ": number " + (token.empty() ? std::string() : token + " ") +
+        throw InputError(file.string() + place + ": number " + (token.empty() ? std::string() : excerpt(token, 40) + " ") +
                          "is out of range (not a finite double)");
     }
 }
@@ -167,9 +222,9 @@ Node::Node(const nlohmann::json& value, const std::filesystem::path& file, std::
 void Node::fail(const std::string& message) const { throw InputError(where(*file_, path_) + message); }
 
 std::string Node::shown() const {
-    std::string s = value_->dump();
-    if (s.size() > 40) s = s.substr(0, 37) + "...";
-    return s;
+    std::string s;
+    bounded_dump(*value_, 40, s);
+    return excerpt(s, 40);
 }
 
 Node Node::child(std::string_view key, const nlohmann::json& v) const {

@@ -9,6 +9,7 @@
 
 #include "raytracer/geometry/shape.hpp"
 #include "raytracer/input_error.hpp"
+#include "raytracer/scene/film_limits.hpp"
 #include "raytracer/scene/json_reader.hpp"
 #include "raytracer/scene/load_film_display.hpp"
 #include "raytracer/scene/load_environment.hpp"
@@ -16,6 +17,7 @@
 #include "raytracer/scene/load_lights.hpp"
 #include "raytracer/scene/load_texture.hpp"
 #include "raytracer/scene/obj_loader.hpp"
+#include "raytracer/scene/scene_extent.hpp"
 #include "raytracer/scene/scene_transform.hpp"
 #include "raytracer/scene/text_file.hpp"
 
@@ -24,12 +26,6 @@ namespace sweeptrace {
 namespace {
 
 using scene_json::Node;
-
-// Generous limits that catch typos (an extra zero) before they turn into an hour-long render or a
-// failed allocation; nothing real comes near them.
-constexpr std::int64_t kMaxImageSide = 16384;
-constexpr std::int64_t kMaxSpp = 1 << 20;
-constexpr std::int64_t kMaxDepth = 1024;
 
 using scene_keys::parallel;
 
@@ -55,13 +51,19 @@ Camera read_camera(const Node& node) {
     return camera;
 }
 
+// The same ranges as the command line's overrides (film_limits.hpp).
+int read_film_setting(const Node& node, FilmSetting setting) {
+    const SettingRange r = film_range(setting);
+    return static_cast<int>(node.integer(r.lo, r.hi));
+}
+
 Film read_film(const Node& node) {
     node.require_object({"width", "height", "spp", "max_depth", "sampler", "guiding", "exposure", "tone_curve", "filter"});
     Film film;
-    film.width = static_cast<int>(node.at("width").integer(1, kMaxImageSide));
-    film.height = static_cast<int>(node.at("height").integer(1, kMaxImageSide));
-    if (auto spp = node.find("spp")) film.spp = static_cast<int>(spp->integer(1, kMaxSpp));
-    if (auto depth = node.find("max_depth")) film.max_depth = static_cast<int>(depth->integer(1, kMaxDepth));
+    film.width = read_film_setting(node.at("width"), FilmSetting::Width);
+    film.height = read_film_setting(node.at("height"), FilmSetting::Height);
+    if (auto spp = node.find("spp")) film.spp = read_film_setting(*spp, FilmSetting::Spp);
+    if (auto depth = node.find("max_depth")) film.max_depth = read_film_setting(*depth, FilmSetting::MaxDepth);
     if (auto sampler = node.find("sampler")) {
         const std::string name = sampler->string();
         if (name == "sobol") film.sampler = SamplerKind::Sobol;
@@ -271,7 +273,7 @@ private:
 }  // namespace
 
 Scene load_scene(const std::filesystem::path& file) {
-    const std::string text = read_text_file(file, "scene");
+    const std::string text = read_text_file(file, "scene", kMaxSceneFileBytes);
     const nlohmann::json doc = scene_json::parse(text, file);
     const Node root(doc, file);
     root.require_object({"description", "camera", "film", "background", "seed", "materials", "objects", "lights"});
@@ -287,6 +289,7 @@ Scene load_scene(const std::filesystem::path& file) {
     objects.read_all(root.at("objects"));
     check_texture_uv(scene, root.at("objects"));
     if (auto l = root.find("lights")) scene.lights = read_lights(*l);
+    check_scene_extent(scene, root);
     return scene;
 }
 

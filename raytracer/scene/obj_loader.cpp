@@ -10,39 +10,39 @@
 #include <tiny_obj_loader.h>
 
 #include "raytracer/input_error.hpp"
+#include "raytracer/scene/obj_outline.hpp"
 #include "raytracer/scene/text_file.hpp"
 
 namespace sweeptrace {
 
 namespace {
 
-// Line numbers of the `f` statements, in file order. tinyobjloader keeps faces in file order
-// but forgets their lines; when the counts agree, messages can point at the line. It also drops
-// faces with fewer than 3 corners with only a warning, and stores the corner count in a byte, so
-// both are rejected here, where the line is known.
-std::vector<std::size_t> face_lines(const std::string& text, const std::string& name) {
-    std::vector<std::size_t> lines;
-    std::size_t line = 1;
-    std::size_t i = 0;
-    auto blank = [](char c) { return c == ' ' || c == '\t' || c == '\r'; };
-    while (i < text.size()) {
-        std::size_t end = text.find('\n', i);
-        if (end == std::string::npos) end = text.size();
-        std::size_t j = i;
-        while (j < end && blank(text[j])) ++j;
-        if (j + 1 < end && text[j] == 'f' && blank(text[j + 1])) {
-            lines.push_back(line);
-            std::size_t corners = 0;
-            for (std::size_t k = j + 1; k < end; ++k)
-                if (!blank(text[k]) && blank(text[k - 1])) ++corners;
-            if (corners < 3 || corners > 255)
-                throw InputError(name + ": line " + std::to_string(line) + ": a face needs 3 to 255 vertices, this one has " +
-                                 std::to_string(corners));
+// Every face tinyobjloader read is the face on its line, with the same corners, and every `v` is
+// a vertex: from here on, indices and corner counts can be trusted and faces have their lines.
+void agree_with_outline(const tinyobj::ObjReader& reader, const ObjOutline& outline, std::size_t vertex_count,
+                        const std::string& name) {
+    if (vertex_count != outline.vertex_count)
+        throw InputError(name + ": tinyobjloader read " + std::to_string(vertex_count) + " vertices, the file has " +
+                         std::to_string(outline.vertex_count) + " `v` lines");
+    std::size_t face = 0;
+    for (const tinyobj::shape_t& shape : reader.GetShapes()) {
+        std::size_t indices = 0;
+        for (const unsigned char corners : shape.mesh.num_face_vertices) {
+            if (face >= outline.face_corners.size()) throw InputError(name + ": tinyobjloader read more faces than `f` lines");
+            if (corners != outline.face_corners[face])
+                throw InputError(name + ": line " + std::to_string(outline.face_lines[face]) + ": tinyobjloader read " +
+                                 std::to_string(corners) + " corners, the line has " +
+                                 std::to_string(outline.face_corners[face]));
+            indices += corners;
+            ++face;
         }
-        i = end + 1;
-        ++line;
+        if (indices != shape.mesh.indices.size())
+            throw InputError(name + ": tinyobjloader returned " + std::to_string(shape.mesh.indices.size()) +
+                             " face indices for " + std::to_string(indices) + " corners");
     }
-    return lines;
+    if (face != outline.face_corners.size())
+        throw InputError(name + ": tinyobjloader read " + std::to_string(face) + " faces, the file has " +
+                         std::to_string(outline.face_corners.size()) + " `f` lines");
 }
 
 // A face corner's texture coordinate index: -1 is "none" (then the mesh has no uv), anything else
@@ -79,8 +79,9 @@ std::string first_line(const std::string& s) {
 }  // namespace
 
 Mesh load_obj(const std::filesystem::path& file) {
-    const std::string text = read_text_file(file, "mesh");
+    const std::string text = read_text_file(file, "mesh", kMaxMeshFileBytes);
     const std::string name = file.string();
+    const ObjOutline outline = outline_obj(text, name);
 
     // triangulate = false: tinyobjloader's triangulation reads vertex positions before anyone has
     // checked the indices; we check them first and split polygons ourselves.
@@ -91,21 +92,15 @@ Mesh load_obj(const std::filesystem::path& file) {
     // From a string, so that an `mtllib` line cannot make it open other files: materials come
     // from the scene, not the OBJ.
     if (!reader.ParseFromString(text, std::string(), config))
-        throw InputError(name + ": invalid OBJ: " + first_line(reader.Error()));
+        throw InputError(name + ": invalid OBJ: " + excerpt(reason_or(first_line(reader.Error()).c_str(), "tinyobjloader failed"), 160));
 
     const tinyobj::attrib_t& attrib = reader.GetAttrib();
     const std::size_t vertex_count = attrib.vertices.size() / 3;
     const std::size_t normal_count = attrib.normals.size() / 3;
     const std::size_t texcoord_count = attrib.texcoords.size() / 2;
-    const std::vector<std::size_t> lines = face_lines(text, name);
-
-    std::size_t face_total = 0;
-    for (const tinyobj::shape_t& shape : reader.GetShapes()) face_total += shape.mesh.num_face_vertices.size();
-    if (face_total == 0) throw InputError(name + ": contains no faces (no `f` lines), nothing to render");
-    const bool know_lines = lines.size() == face_total;
-    auto face_where = [&](std::size_t face) {
-        return know_lines ? "line " + std::to_string(lines[face]) : "face " + std::to_string(face + 1);
-    };
+    agree_with_outline(reader, outline, vertex_count, name);
+    if (outline.face_lines.empty()) throw InputError(name + ": contains no faces (no `f` lines), nothing to render");
+    auto face_where = [&](std::size_t face) { return "line " + std::to_string(outline.face_lines[face]); };
 
     // First pass: every index in range, and do all corners carry a usable normal?
     bool all_normals = normal_count > 0;
@@ -114,8 +109,6 @@ Mesh load_obj(const std::filesystem::path& file) {
     for (const tinyobj::shape_t& shape : reader.GetShapes()) {
         std::size_t offset = 0;
         for (const unsigned char corners : shape.mesh.num_face_vertices) {
-            if (offset + corners > shape.mesh.indices.size())
-                throw InputError(name + ": " + face_where(face) + ": tinyobjloader returned fewer indices than corners");
             for (std::size_t k = 0; k < corners; ++k) {
                 const tinyobj::index_t& idx = shape.mesh.indices[offset + k];
                 if (idx.vertex_index < 0 || static_cast<std::size_t>(idx.vertex_index) >= vertex_count)

@@ -14,9 +14,11 @@ namespace sweeptrace {
 // when every face corner has one (finite), a vertex used with several duplicated; otherwise
 // empty. Only vertices used by a face are kept.
 //
-// Throws InputError "<file>: ..." when the file cannot be read, tinyobjloader reports an error, a
-// face refers to a vertex, normal or texture coordinate that does not exist (with the face's line), a face has fewer
-// than 3 corners, a coordinate is not finite, or there are no faces at all.
+// Throws InputError "<file>: ..." when the file cannot be read or is over kMaxMeshFileBytes,
+// tinyobjloader reports an error, a face refers to a vertex, normal or texture coordinate that does not exist (with
+// the face's line), a face has fewer than 3 or more than 255 corners, a vertex coordinate is
+// missing, not a decimal number or not finite (with its line), or there are no faces at all.
+// Lines may end in \n, \r\n or \r (obj_outline.hpp); the result does not depend on which.
 Mesh load_obj(const std::filesystem::path& file);
 
 }  // namespace sweeptrace

@@ -10,7 +10,15 @@
 
 namespace sweeptrace {
 
-std::string read_text_file(const std::filesystem::path& file, const char* what) {
+namespace {
+
+std::string mib(std::uintmax_t bytes) {
+    return std::to_string((bytes + (std::uintmax_t{1} << 20) - 1) >> 20) + " MiB";
+}
+
+}  // namespace
+
+void check_input_file(const std::filesystem::path& file, const char* what, std::uintmax_t max_bytes) {
     std::error_code ec;
     const auto status = std::filesystem::status(file, ec);
     std::string reason;
@@ -18,16 +26,25 @@ std::string read_text_file(const std::filesystem::path& file, const char* what) 
         reason = "no such file";
     else if (std::filesystem::is_directory(status))
         reason = "it is a directory";
-    if (reason.empty()) {
-        std::ifstream in(file, std::ios::binary);
-        if (in) {
-            std::ostringstream text;
-            text << in.rdbuf();
-            if (!in.bad()) return std::move(text).str();
-        }
-        reason = std::strerror(errno);
+    else if (!std::filesystem::is_regular_file(status))
+        reason = "not a regular file";
+    else if (const std::uintmax_t size = std::filesystem::file_size(file, ec); ec)
+        reason = reason_or(ec.message().c_str(), "cannot get its size");
+    else if (size > max_bytes)
+        reason = "it is " + mib(size) + ", over the limit of " + mib(max_bytes) + " for a " + what;
+    if (!reason.empty()) throw InputError(file.string() + ": cannot read " + what + ": " + reason);
+}
+
+std::string read_text_file(const std::filesystem::path& file, const char* what, std::uintmax_t max_bytes) {
+    check_input_file(file, what, max_bytes);
+    errno = 0;
+    std::ifstream in(file, std::ios::binary);
+    if (in) {
+        std::ostringstream text;
+        text << in.rdbuf();
+        if (!in.bad()) return std::move(text).str();
     }
-    throw InputError(file.string() + ": cannot read " + what + ": " + reason);
+    throw InputError(file.string() + ": cannot read " + what + ": " + reason_or(std::strerror(errno), "read error"));
 }
 
 }  // namespace sweeptrace

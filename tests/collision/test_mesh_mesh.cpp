@@ -15,6 +15,7 @@
 #include "collision/mesh_mesh.hpp"
 #include "mesh_fixtures.hpp"
 #include "random_cases.hpp"
+#include "../shared_meshes.hpp"
 
 using namespace collision;
 using testing::TriangleMesh;
@@ -55,6 +56,7 @@ glm::quat random_rotation(testing::SeededRng& rng) {
 }  // namespace
 
 TEST_CASE("mesh-mesh: SAT, brute force, octants and BVH agree on a shared set", "[mesh]") {
+    if (!sweeptrace::test::shared_meshes_available()) return;
     const std::vector<Fixture> set = shared_set();
     testing::SeededRng rng(99);
     int touching = 0, apart = 0, sat_checked = 0, thesis_octant_misses = 0;
@@ -163,6 +165,7 @@ TEST_CASE("mesh-mesh: bad meshes are rejected with a message; empty meshes never
 // Not a pass/fail test (hidden tag, not registered with ctest): prints how much work and time
 // each method needs on a shared mesh pair. Run: build/tests/collision_tests "[.mesh_figures]"
 TEST_CASE("mesh-mesh figures", "[.mesh_figures]") {
+    if (!sweeptrace::test::shared_meshes_available()) return;
     const TriangleMesh spot = testing::read_obj(SWEEPTRACE_SHARED_DIR "/meshes/spot.obj");
     const TriangleMesh sphere = testing::uv_sphere(0.5f, 32, 64);
     const TriangleMesh cube = testing::box_mesh({0.25f, 0.25f, 0.25f});

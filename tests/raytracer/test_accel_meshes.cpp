@@ -13,6 +13,7 @@
 #include "raytracer/accel/embree_accel.hpp"
 #include "raytracer/accel/mesh_ray_bvh.hpp"
 #include "raytracer/scene/obj_loader.hpp"
+#include "../shared_meshes.hpp"
 
 using namespace sweeptrace;
 
@@ -31,7 +32,8 @@ Scene mesh_only(Mesh mesh) {
 }  // namespace
 
 TEST_CASE("accel: every triangle of the shared meshes is in the tree and reachable by a ray", "[accel][meshes]") {
-    const std::filesystem::path dir = std::filesystem::path(SWEEPTRACE_SHARED_DIR) / "meshes";
+    if (!sweeptrace::test::shared_meshes_available()) return;
+    const std::filesystem::path dir = sweeptrace::test::shared_meshes_dir();
     for (const char* name : {"spot.obj", "fandisk.obj", "suzanne.obj", "teapot.obj", "stanford-bunny.obj"}) {
         INFO(name);
         const Scene scene = mesh_only(load_obj(dir / name));

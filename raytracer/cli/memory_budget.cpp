@@ -1,0 +1,84 @@
+#include "raytracer/cli/memory_budget.hpp"
+
+#include <cstdio>
+#include <fstream>
+#include <variant>
+
+#include "raytracer/input_error.hpp"
+
+namespace sweeptrace {
+
+namespace {
+
+// Per pixel: renderer sums and sums of squares (2 x dvec3), the pass in flight, the mean and the
+// variance images (3 x vec3), the display copy (vec3) and the 8-bit RGB buffer plus its encoding.
+constexpr std::uint64_t kFilmBytesPerPixel = 2 * 24 + 3 * 12 + 12 + 2 * 3;
+// Per primitive of the acceleration structure (a triangle, or an analytic object at the top
+// level): BVH nodes (~2 per primitive at 32 bytes), the primitive's index and precomputed test
+// data, and the builder's temporary boxes and centroids. Rounded up: Embree's is of that order.
+constexpr std::uint64_t kAccelBytesPerPrimitive = 256;
+// Per mesh vertex kept in the acceleration structure's own copy (position + normal).
+constexpr std::uint64_t kAccelBytesPerVertex = 24;
+
+std::optional<std::uint64_t> read_number_file(const char* path) {
+    std::ifstream in(path);
+    std::uint64_t v = 0;
+    if (in >> v) return v;
+    return std::nullopt;  // missing, or "max"
+}
+
+std::optional<std::uint64_t> meminfo_available() {
+    std::ifstream in("/proc/meminfo");
+    std::string key;
+    std::uint64_t kb = 0;
+    std::string unit;
+    while (in >> key >> kb >> unit)
+        if (key == "MemAvailable:") return kb * 1024;
+    return std::nullopt;
+}
+
+}  // namespace
+
+MemoryEstimate estimate_render_memory(const Scene& scene) {
+    MemoryEstimate e;
+    e.film = std::uint64_t(scene.film.width) * std::uint64_t(scene.film.height) * kFilmBytesPerPixel;
+    std::uint64_t primitives = scene.objects.size(), vertices = 0;
+    for (const Mesh& m : scene.meshes) {
+        primitives += m.triangles.indices.size();
+        vertices += m.triangles.vertices.size();
+    }
+    e.scene = primitives * kAccelBytesPerPrimitive + vertices * kAccelBytesPerVertex;
+    return e;
+}
+
+std::optional<std::uint64_t> available_memory() {
+    std::optional<std::uint64_t> avail = meminfo_available();
+    const auto max = read_number_file("/sys/fs/cgroup/memory.max");
+    const auto current = read_number_file("/sys/fs/cgroup/memory.current");
+    if (max && current) {
+        const std::uint64_t room = *max > *current ? *max - *current : 0;
+        if (!avail || room < *avail) avail = room;
+    }
+    return avail;
+}
+
+std::string byte_text(std::uint64_t bytes) {
+    char buf[32];
+    const double b = double(bytes);
+    if (b >= 1e9) std::snprintf(buf, sizeof buf, "%.2f GB", b / 1e9);
+    else if (b >= 1e6) std::snprintf(buf, sizeof buf, "%.1f MB", b / 1e6);
+    else std::snprintf(buf, sizeof buf, "%.0f kB", b / 1e3);
+    return buf;
+}
+
+void check_render_memory(const Scene& scene, std::optional<std::uint64_t> limit) {
+    const MemoryEstimate e = estimate_render_memory(scene);
+    const std::optional<std::uint64_t> room = limit ? limit : available_memory();
+    if (!room || e.total() <= *room) return;
+    throw InputError(scene.source.string() + ": the render needs an estimated " + byte_text(e.total()) + " (film " +
+                     std::to_string(scene.film.width) + "x" + std::to_string(scene.film.height) + ": " +
+                     byte_text(e.film) + ", scene: " + byte_text(e.scene) + "), more than the " + byte_text(*room) +
+                     (limit ? " that --max-memory allows" : " of memory available (--max-memory sets the limit)"));
+}
+
+}  // namespace sweeptrace
