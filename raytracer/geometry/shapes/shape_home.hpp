@@ -11,6 +11,9 @@
 //                   that strategy's precomputed data and the area its selection weight uses
 //   sample(g, light, u_part, u1, u2, out)   a uniform point on its surface, with its rounding
 //                   bound and normal, in the space the strategy names
+//   uv(g, object_point)  its documented texture parameterisation, computed only for hits whose
+//                   material reads a texture (a mesh instance: mesh_uv, from the triangle's vt)
+//   front(g)        flat shapes only: a point and the front normal (the emitter-facing warning)
 // Also the includes every home needs, so a home's header is its own code.
 #include <array>
 #include <concepts>
