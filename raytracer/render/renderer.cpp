@@ -1,5 +1,4 @@
 #include "raytracer/render/renderer.hpp"
-#include "raytracer/render/planted_defect.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -22,10 +21,12 @@
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
+#include "collision/finite.hpp"
 #include "raytracer/render/camera.hpp"
 #include "raytracer/render/guiding_sd_tree.hpp"
 #include "raytracer/render/integrator.hpp"
 #include "raytracer/render/lights.hpp"
+#include "raytracer/render/planted_defect.hpp"
 #include "raytracer/render/sampler.hpp"
 
 namespace sweeptrace {
@@ -175,7 +176,7 @@ private:
                 const float fy = static_cast<float>(y) + film.dy;
                 glm::vec3 l =
                     film.weight * integrator_.radiance(camera_.generate(fx, fy, lens.x, lens.y), sampler, rays, records);
-                if (!std::isfinite(l.x) || !std::isfinite(l.y) || !std::isfinite(l.z)) {
+                if (!collision::finite(l)) {
                     l = glm::vec3(0.0f);
                     ++nonfinite;
                 }
