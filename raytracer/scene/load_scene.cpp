@@ -110,19 +110,22 @@ Material read_material(const Node& node, const std::string& name, std::vector<Te
     Material m;
     m.name = name;
     if (type == "diffuse") {
-        node.require_object({"type", "albedo", "emission", "two_sided"});
+        node.require_object({"type", "albedo", "emission", "two_sided", "normal_map"});
         m.type = Material::Type::Diffuse;
     } else if (type == "metal") {
-        node.require_object({"type", "albedo", "roughness", "emission", "two_sided"});
+        node.require_object({"type", "albedo", "roughness", "emission", "two_sided", "normal_map"});
         m.type = Material::Type::Metal;
-        if (auto r = node.find("roughness")) m.roughness = r->number_in(0.0f, 1.0f);
+        if (auto r = node.find("roughness")) {
+            if (r->value().is_object()) m.roughness_texture = add_texture(*r, TextureUse::Roughness, textures);
+            else m.roughness = r->number_in(0.0f, 1.0f);
+        }
     } else if (type == "dielectric") {
-        node.require_object({"type", "ior", "albedo", "emission", "two_sided"});
+        node.require_object({"type", "ior", "albedo", "emission", "two_sided", "normal_map"});
         m.type = Material::Type::Dielectric;
         m.albedo = glm::vec3(1.0f);  // clear glass unless tinted
         if (auto ior = node.find("ior")) m.ior = ior->number_at_least(0.0f, false);
     } else if (type == "thin_dielectric") {
-        node.require_object({"type", "ior", "albedo", "emission", "two_sided"});
+        node.require_object({"type", "ior", "albedo", "emission", "two_sided", "normal_map"});
         m.type = Material::Type::ThinDielectric;
         m.albedo = glm::vec3(1.0f);  // clear unless tinted
         if (auto ior = node.find("ior")) m.ior = ior->number_at_least(0.0f, false);
@@ -135,20 +138,25 @@ Material read_material(const Node& node, const std::string& name, std::vector<Te
     }
     if (auto albedo = node.find("albedo")) {
         if (albedo->value().is_object()) {
-            m.albedo_texture = static_cast<int>(textures.size());
-            textures.push_back(read_texture(*albedo, textures));
+            m.albedo_texture = add_texture(*albedo, TextureUse::Albedo, textures);
         } else {
             m.albedo = read_albedo(*albedo);
         }
     }
     if (auto emission = node.find("emission")) {
-        m.emission = emission->vec3_at_least(0.0f);
+        if (emission->value().is_object()) {
+            m.emission_texture = add_texture(*emission, TextureUse::Emission, textures);
+            m.emission = texture_mean(textures.back());
+        } else {
+            m.emission = emission->vec3_at_least(0.0f);
+        }
         if (m.type == Material::Type::Emissive && m.emission == glm::vec3(0.0f))
             emission->fail("an emissive material must emit: some component must be > 0");
     } else if (m.type == Material::Type::Emissive) {
         node.at("emission");  // reports it missing
     }
     if (auto two_sided = node.find("two_sided")) m.two_sided_emission = two_sided->boolean();
+    if (auto normal = node.find("normal_map")) m.normal_texture = add_texture(*normal, TextureUse::NormalMap, textures);
     return m;
 }
 

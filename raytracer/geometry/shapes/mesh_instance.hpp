@@ -50,6 +50,9 @@ struct MeshInstanceShape {
     // triangle.
     static glm::vec2 mesh_uv(const Geometry& m, const std::vector<Mesh>& meshes, std::uint32_t primitive,
                              const glm::vec3& p);
+    // d(point)/du, d(point)/dv on triangle `primitive` from its corners' positions and vt (one
+    // pair per triangle, as the uv is linear on it); zero when its uv triangle is degenerate.
+    static UvTangents mesh_uv_tangents(const Geometry& m, const std::vector<Mesh>& meshes, std::uint32_t primitive);
 };
 
 }  // namespace sweeptrace
