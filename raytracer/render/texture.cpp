@@ -63,7 +63,7 @@ Material textured_material(const Scene& scene, const Material& base, SurfaceHit&
     if (base.albedo_texture >= 0) m.albedo = eval_texture(texture(scene, base.albedo_texture), uv);
     if (base.roughness_texture >= 0) {
         const glm::vec3 r = eval_texture(texture(scene, base.roughness_texture), uv);
-        m.roughness = (r.x + r.y + r.z) / 3.0f;
+        m.roughness = r.x + ((r.y - r.x) + (r.z - r.x)) / 3.0f;  // the mean, exact for a grey texel
     }
     if (base.emission_texture >= 0) m.emission = eval_texture(texture(scene, base.emission_texture), uv);
     if (base.normal_texture >= 0)

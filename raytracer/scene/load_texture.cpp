@@ -71,11 +71,14 @@ void read_image_texture(const scene_json::Node& im, TextureUse use, const std::v
     std::error_code ec;
     t.image_file = std::filesystem::weakly_canonical(file.file().parent_path() / file.string(), ec);
     const bool png = is_png(t.image_file);
+    // The same reading if one is loaded; else the other reading of a .png, converted.
+    const Texture* other_reading = nullptr;
     for (const Texture& other : loaded) {
         if (!other.image || other.image_file != t.image_file) continue;
-        t.image = (!png || other.linear_data == t.linear_data) ? other.image : converted(*other.image, t.linear_data);
-        break;
+        if (!png || other.linear_data == t.linear_data) t.image = other.image;
+        else if (!other_reading) other_reading = &other;
     }
+    if (!t.image && other_reading) t.image = converted(*other_reading->image, t.linear_data);
     if (!t.image) {
         t.image = read_image_file(file, "texture image");
         if (png && t.linear_data) t.image = converted(*t.image, true);
