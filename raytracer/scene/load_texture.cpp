@@ -48,7 +48,7 @@ std::shared_ptr<const Image> converted(const Image& from, bool to_data) {
     return std::make_shared<const Image>(std::move(out));
 }
 
-void check_values(const scene_json::Node& file, const Image& image, TextureUse use) {
+void check_values(const Image& image, TextureUse use, const ImageFail& fail) {
     const char* what = use == TextureUse::Albedo      ? "an albedo"
                        : use == TextureUse::Roughness ? "a roughness"
                        : use == TextureUse::NormalMap ? "a normal map"
@@ -56,34 +56,19 @@ void check_values(const scene_json::Node& file, const Image& image, TextureUse u
     for (const glm::vec3& p : image.pixels)
         for (int k = 0; k < 3; ++k) {
             if (use == TextureUse::Emission) {
-                if (!(p[k] >= 0.0f) || !std::isfinite(p[k])) file.fail("an emission texture's values must be finite and >= 0");
+                if (!(p[k] >= 0.0f) || !std::isfinite(p[k])) fail("an emission texture's values must be finite and >= 0");
             } else if (!(p[k] >= 0.0f && p[k] <= 1.0f)) {
-                file.fail(std::string(what) + " texture's values must lie in [0, 1]");
+                fail(std::string(what) + " texture's values must lie in [0, 1]");
             }
         }
 }
 
 void read_image_texture(const scene_json::Node& im, TextureUse use, const std::vector<Texture>& loaded, Texture& t) {
     im.require_object({"file", "wrap"});
-    t.kind = Texture::Kind::Image;
-    t.linear_data = is_data(use);
     const scene_json::Node file = im.at("file");
-    std::error_code ec;
-    t.image_file = std::filesystem::weakly_canonical(file.file().parent_path() / file.string(), ec);
-    const bool png = is_png(t.image_file);
-    // The same reading if one is loaded; else the other reading of a .png, converted.
-    const Texture* other_reading = nullptr;
-    for (const Texture& other : loaded) {
-        if (!other.image || other.image_file != t.image_file) continue;
-        if (!png || other.linear_data == t.linear_data) t.image = other.image;
-        else if (!other_reading) other_reading = &other;
-    }
-    if (!t.image && other_reading) t.image = converted(*other_reading->image, t.linear_data);
-    if (!t.image) {
-        t.image = read_image_file(file, "texture image");
-        if (png && t.linear_data) t.image = converted(*t.image, true);
-    }
-    check_values(file, *t.image, use);
+    const std::string relative = file.string();
+    t = image_texture(relative, file.file().parent_path() / relative, use, loaded,
+                      [&](const std::string& message) { file.fail(message); });
     if (auto w = im.find("wrap")) {
         const std::string wrap = w->string();
         if (wrap == "repeat") t.wrap = Texture::Wrap::Repeat;
@@ -98,6 +83,30 @@ bool reads_texture(const Material& m) {
 }
 
 }  // namespace
+
+Texture image_texture(const std::string& relative, const std::filesystem::path& path, TextureUse use,
+                      const std::vector<Texture>& loaded, const ImageFail& fail) {
+    Texture t;
+    t.kind = Texture::Kind::Image;
+    t.linear_data = is_data(use);
+    std::error_code ec;
+    t.image_file = std::filesystem::weakly_canonical(path, ec);
+    const bool png = is_png(t.image_file);
+    // The same reading if one is loaded; else the other reading of a .png, converted.
+    const Texture* other_reading = nullptr;
+    for (const Texture& other : loaded) {
+        if (!other.image || other.image_file != t.image_file) continue;
+        if (!png || other.linear_data == t.linear_data) t.image = other.image;
+        else if (!other_reading) other_reading = &other;
+    }
+    if (!t.image && other_reading) t.image = converted(*other_reading->image, t.linear_data);
+    if (!t.image) {
+        t.image = read_image_path(relative, path, "texture image", fail);
+        if (png && t.linear_data) t.image = converted(*t.image, true);
+    }
+    check_values(*t.image, use, fail);
+    return t;
+}
 
 Texture read_texture(const scene_json::Node& node, TextureUse use, const std::vector<Texture>& loaded) {
     node.require_object({"checker", "image"});

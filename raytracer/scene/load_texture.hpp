@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "raytracer/scene/json_reader.hpp"
+#include "raytracer/scene/load_image_file.hpp"
 #include "raytracer/scene/scene.hpp"
 
 namespace sweeptrace {
@@ -25,6 +26,11 @@ enum class TextureUse {
 // already holds is shared, not read again (a .png read both as colour and as data is read from
 // disk once and converted).
 Texture read_texture(const scene_json::Node& node, TextureUse use, const std::vector<Texture>& loaded);
+
+// An image texture (wrap "repeat") from a file another file names (an .mtl's map_Kd): `relative` as
+// written there, `path` where it is; shared with `loaded` as read_texture does; failures go to `fail`.
+Texture image_texture(const std::string& relative, const std::filesystem::path& path, TextureUse use,
+                      const std::vector<Texture>& loaded, const ImageFail& fail);
 
 // read_texture appended to `textures`; returns its index.
 int add_texture(const scene_json::Node& node, TextureUse use, std::vector<Texture>& textures);
