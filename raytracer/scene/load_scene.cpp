@@ -16,6 +16,7 @@
 #include "raytracer/scene/load_filter.hpp"
 #include "raytracer/scene/load_lights.hpp"
 #include "raytracer/scene/load_texture.hpp"
+#include "raytracer/scene/obj_materials.hpp"
 #include "raytracer/scene/obj_loader.hpp"
 #include "raytracer/scene/scene_extent.hpp"
 #include "raytracer/scene/scene_transform.hpp"
@@ -227,15 +228,20 @@ public:
             file_node.fail("mesh file \"" + relative + "\" not found (looked for " + path.string() + ")");
         const std::string key = std::filesystem::weakly_canonical(path, ec).string();
         if (auto it = mesh_by_file_.find(key); it != mesh_by_file_.end()) return it->second;
+        ObjOutline outline;
         try {
-            scene_.meshes.push_back(load_obj(path));
+            scene_.meshes.push_back(load_obj(path, &outline));
         } catch (const InputError& e) {
             file_node.fail(e.what());
         }
         const auto index = static_cast<std::uint32_t>(scene_.meshes.size() - 1);
         mesh_by_file_.emplace(key, index);
+        obj_materials_.add_mesh(index, path, std::move(outline));
         return index;
     }
+
+    // Mesh objects with their OBJ's materials become one object per material (obj_materials.hpp).
+    void split_obj_materials() { obj_materials_.split(scene_); }
 
 private:
     Object read(const Node& node) {
@@ -259,15 +265,20 @@ private:
             type_node.fail("unknown shape type \"" + type + "\" (known: " + names + ")");
         }
 
-        const Node material = node.at("material");
-        const std::string material_name = material.string();
-        const auto it = materials_.find(material_name);
-        if (it == materials_.end()) {
-            std::string known;
-            for (const auto& [name, index] : materials_) known += (known.empty() ? "" : ", ") + name;
-            material.fail("unknown material \"" + material_name + "\" (defined: " + (known.empty() ? "none" : known) + ")");
+        const auto object_index = static_cast<std::uint32_t>(scene_.objects.size());
+        if (auto own = obj_materials_.from_obj(node, object.shape, object_index, scene_)) {
+            object.material = *own;
+        } else {
+            const Node material = node.at("material");
+            const std::string material_name = material.string();
+            const auto it = materials_.find(material_name);
+            if (it == materials_.end()) {
+                std::string known;
+                for (const auto& [name, index] : materials_) known += (known.empty() ? "" : ", ") + name;
+                material.fail("unknown material \"" + material_name + "\" (defined: " + (known.empty() ? "none" : known) + ")");
+            }
+            object.material = it->second;
         }
-        object.material = it->second;
         if (auto t = node.find("transform")) object.transform = read_transform(*t);
         object.name = node.has("name") ? node.at("name").string() : node.path() + " (" + type + ")";
         return object;
@@ -276,6 +287,7 @@ private:
     Scene& scene_;
     std::map<std::string, std::uint32_t> materials_;
     std::map<std::string, std::uint32_t> mesh_by_file_;
+    ObjMaterials obj_materials_;
 };
 
 }  // namespace
@@ -298,6 +310,7 @@ Scene load_scene(const std::filesystem::path& file) {
     check_texture_uv(scene, root.at("objects"));
     if (auto l = root.find("lights")) scene.lights = read_lights(*l);
     check_scene_extent(scene, root);
+    objects.split_obj_materials();
     return scene;
 }
 

@@ -32,7 +32,8 @@ struct MeshInstance {
 struct MeshInstanceShape {
     using Geometry = MeshInstance;
     static constexpr std::string_view kType = "mesh";
-    static constexpr std::array<std::string_view, 1> kKeys{"file"};
+    // "materials": "from_obj" (the default without a "material"): the OBJ's own (scene/obj_materials.hpp).
+    static constexpr std::array<std::string_view, 2> kKeys{"file", "materials"};
     // The loader resolves and loads the file (scene/), once however many objects instance it.
     template <class Node, class Loader>
     static Geometry read(const Node& node, Loader& loader) {
