@@ -8,6 +8,7 @@
 #include <cmath>
 
 #include "convergence_harness.hpp"
+#include "plane_truth.hpp"
 #include "raytracer/input_error.hpp"
 #include "raytracer/scene/load_scene.hpp"
 #include "scene_test_files.hpp"
@@ -92,34 +93,15 @@ TEST_CASE("obj materials: a square of two materials renders each triangle's albe
     dir.write("square.mtl", "newmtl dark\nKd 0.2 0.3 0.4\nnewmtl light\nKd 0.9 0.7 0.5\n");
     Scene scene = load_scene(dir.write("s.json", scene_with(R"({ "type": "mesh", "file": "square.obj", "materials": "from_obj" })")));
     REQUIRE(scene.objects.size() == 2);
-    constexpr int size = 32, sub = 8;
     const glm::vec3 L(1.0f, 0.8f, 0.6f), dark(0.2f, 0.3f, 0.4f), light(0.9f, 0.7f, 0.5f);
-    const double half = std::tan(glm::radians(25.0));
-    Image truth(size, size);
-    std::vector<std::uint8_t> mask(truth.pixels.size(), 1);
-    for (int y = 0; y < size; ++y)
-        for (int x = 0; x < size; ++x) {
-            glm::dvec3 sum(0.0);
-            int first = -1;
-            for (int j = 0; j < sub; ++j)
-                for (int i = 0; i < sub; ++i) {
-                    const double wx = (2 * (x + (i + 0.5) / sub) / size - 1) * half * 3;
-                    const double wy = (1 - 2 * (y + (j + 0.5) / sub) / size) * half * 3;
-                    const bool on = std::abs(wx) < 1 && std::abs(wy) < 1;
-                    const int cell = on ? (wy < wx ? 0 : 1) : 2;  // face 1 (dark) is below the diagonal
-                    if (first < 0) first = cell;
-                    if (cell != first) mask[y * size + x] = 0;
-                    sum += glm::dvec3(cell == 2 ? L : (cell == 0 ? dark : light) * L);
-                }
-            truth.at(x, y) = glm::vec3(sum / double(sub * sub));
-        }
-    for (AccelKind accel : {AccelKind::Bvh, AccelKind::Embree}) {
-        const RenderResult r = render_with(scene, accel, 8, 3, 4);
-        const BlockTestResult t = test_against_truth(truth, r, 2, 1e-6, &mask);
-        INFO((accel == AccelKind::Bvh ? "bvh: " : "embree: ") << t.summary());
-        CHECK(t.pass());
-        CHECK(t.blocks_tested > 150);
-    }
+    const PlaneTruth truth = plane_truth(
+        32, 8,
+        [](double wx, double wy) {
+            const bool on = std::abs(wx) < 1 && std::abs(wy) < 1;
+            return on ? (wy < wx ? 0 : 1) : 2;  // face 1 (dark) is below the diagonal
+        },
+        [&](int cell) { return cell == 2 ? L : (cell == 0 ? dark : light) * L; });
+    check_plane_render(scene, truth);
 }
 
 TEST_CASE("obj materials: errors name the OBJ or .mtl file and line", "[scene][obj_materials]") {
