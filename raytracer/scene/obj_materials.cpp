@@ -154,7 +154,7 @@ void ObjMaterials::split(Scene& scene) {
             if (inserted) {
                 const Mesh& src = scene.meshes[mesh_index];
                 Mesh part;
-                part.source = src.source + " [" + scene.materials[order[k]].name + "]";
+                part.source = src.source;  // the file it came from (the CLI hashes and guards it)
                 std::unordered_map<std::uint32_t, std::uint32_t> remap;
                 auto vertex = [&](std::uint32_t v) {
                     const auto [r, fresh] = remap.try_emplace(v, static_cast<std::uint32_t>(part.triangles.vertices.size()));
