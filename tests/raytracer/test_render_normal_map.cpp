@@ -109,7 +109,7 @@ double check_no_gain(const RenderResult& r, const std::vector<std::uint8_t>& mas
 
 // `make(a)` builds the scene with albedo (or tint) a; the mask comes from the same geometry with
 // every material a black diffuse (a black metal still reflects by Fresnel at grazing angles).
-void check_furnace(const std::function<Scene(float albedo)>& make, AccelKind accel, const char* what) {
+double check_furnace(const std::function<Scene(float albedo)>& make, AccelKind accel, const char* what) {
     Scene black_scene = make(0.0f);
     for (Material& m : black_scene.materials) m = diffuse(0.0f);
     const RenderResult black = render_with(black_scene, accel, 4, 8, 3);
@@ -121,6 +121,7 @@ void check_furnace(const std::function<Scene(float albedo)>& make, AccelKind acc
     // The surface is lit at all. What is lost (measured: README of render/shading_frame.hpp's
     // guards) is where wo or wi falls below the mapped normal or the geometric plane.
     CHECK(mean > 0.3);
+    return mean;
 }
 
 void check_black_inside(Scene scene, AccelKind accel) {
@@ -206,6 +207,29 @@ TEST_CASE("normal map: a white furnace on a mesh with wild vertex normals gains 
                 return scene;
             },
             accel, "wild-normal mesh");
+}
+
+TEST_CASE("normal map: a normal-mapped OBJ square (tangents from its vt) gains no energy", "[render][normal_map][furnace]") {
+    // Two triangles facing the camera, vt turned by 90 degrees on one of them: the frame follows
+    // each triangle's own uv.
+    Mesh square;
+    square.triangles.vertices = {{-1.5f, -1.5f, 0.0f}, {1.5f, -1.5f, 0.0f}, {1.5f, 1.5f, 0.0f}, {-1.5f, 1.5f, 0.0f},
+                                 {1.5f, -1.5f, 0.0f}, {1.5f, 1.5f, 0.0f}};
+    square.triangles.indices = {glm::uvec3(0, 1, 2), glm::uvec3(0, 5, 3)};
+    square.vertex_uvs = {{0.0f, 0.0f}, {1.0f, 0.0f}, {1.0f, 1.0f}, {0.0f, 1.0f}, {0.0f, 1.0f}, {0.0f, 0.0f}};
+    REQUIRE(glm::length(MeshInstanceShape::mesh_uv_tangents(MeshInstance{0}, {square}, 0).dpdu - glm::vec3(3, 0, 0)) < 1e-5f);
+    for (AccelKind accel : {AccelKind::Bvh, AccelKind::Embree}) {
+        const double mean = check_furnace(
+            [&](float a) {
+                Scene scene = sphere_scene(true, 40, diffuse(a));
+                scene.objects.clear();
+                scene.meshes.push_back(square);
+                add_object(scene, MeshInstance{0}, 0, glm::mat4(1.0f), "square");
+                return scene;
+            },
+            accel, "normal-mapped OBJ square");
+        CHECK(mean < 0.999);  // the map bends the shading (flat, the square reads exactly 1)
+    }
 }
 
 TEST_CASE("normal map: no light through a closed normal-mapped or wild-normal surface", "[render][normal_map]") {
