@@ -194,3 +194,35 @@ TEST_CASE("texture params: one image however many parameters and materials read 
     CHECK(data->pixels[0] == glm::vec3(10.0f / 255.0f, 128.0f / 255.0f, 1.0f));
     CHECK(data->pixels[1] == glm::vec3(1.0f / 255.0f, 254.0f / 255.0f, 0.0f));
 }
+
+TEST_CASE("texture params: the same image at 1 and 3 threads with every textured parameter and OBJ materials", "[render][texture]") {
+    test::TempDir dir;
+    dir.write("sq.obj", "mtllib sq.mtl\nv -1 -1 0\nv 1 -1 0\nv 1 1 0\nv -1 1 0\nvt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\n"
+                        "usemtl dark\nf 1/1 2/2 3/3\nusemtl lamp\nf 1/1 3/3 4/4\n");
+    dir.write("sq.mtl", "newmtl dark\nKd 0.2 0.3 0.4\nnorm n.png\nnewmtl lamp\nKd 0 0 0\nKe 3 3 3\n");
+    Image n(2, 2);
+    n.at(0, 0) = glm::vec3(srgb_decode(0.7f), srgb_decode(0.5f), srgb_decode(0.8f));
+    n.at(1, 1) = glm::vec3(srgb_decode(0.4f), srgb_decode(0.6f), srgb_decode(0.9f));
+    write_image(n, dir.path() / "n.png");
+    const Scene scene = load_scene(dir.write("s.json", R"({ "camera": { "position": [0, 0.5, 4], "look_at": [0, 0, 0] },
+        "film": { "width": 20, "height": 16 }, "background": { "sky": { "horizon": [1, 1, 1], "zenith": [0.2, 0.4, 1] } },
+        "materials": { "ball": { "type": "metal", "albedo": { "checker": { "a": [0.9, 0.8, 0.7], "b": [0.5, 0.5, 0.5] } },
+                                 "roughness": { "checker": { "a": 0.1, "b": 0.6, "scale": 5 } },
+                                 "normal_map": { "image": { "file": "n.png", "wrap": "mirror" } },
+                                 "emission": { "checker": { "a": [0, 0, 0], "b": [0.5, 0.2, 0.1], "scale": 3 } } } },
+        "objects": [ { "type": "mesh", "file": "sq.obj", "transform": [{ "translate": [0, 0, -1] }] },
+                     { "type": "sphere", "center": [0.3, 0, 0.5], "radius": 0.5, "material": "ball" } ] })"));
+    for (AccelKind kind : {AccelKind::Bvh, AccelKind::Embree}) {
+        const auto accel = make_accel(kind, scene);
+        RenderOptions o;
+        o.spp = 3;
+        o.max_depth = 4;
+        o.seed = 9;
+        o.threads = 1;
+        const RenderResult one = render(scene, *accel, o);
+        o.threads = 3;
+        const RenderResult three = render(scene, *accel, o);
+        CHECK(one.image.pixels == three.image.pixels);
+        CHECK(one.stats.nonfinite_samples == 0);
+    }
+}
