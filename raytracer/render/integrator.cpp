@@ -79,7 +79,7 @@ glm::vec3 PathIntegrator::radiance(collision::Ray ray, PixelSampler& sampler, st
         }
         const Material& base = scene_.materials[scene_.objects[hit.object].material];
         std::optional<Material> textured;  // only for materials that read a texture (render/texture.hpp)
-        const Material& mat = base.albedo_texture < 0 ? base : textured.emplace(textured_material(scene_, base, hit));
+        const Material& mat = !reads_texture(base) ? base : textured.emplace(textured_material(scene_, base, hit));
         const glm::vec3 wo = -ray.dir;
 
         const glm::vec3 le = emitted_radiance(mat, hit.normal, wo);

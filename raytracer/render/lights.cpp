@@ -10,6 +10,7 @@
 #include "raytracer/geometry/object_space.hpp"
 #include "raytracer/render/bsdf.hpp"
 #include "raytracer/render/sampling.hpp"
+#include "raytracer/render/texture.hpp"
 
 namespace sweeptrace {
 
@@ -101,6 +102,19 @@ LightSet::LightSet(const Scene& scene, PlantedDefect defect)
     if (!cdf_.empty()) cdf_.back() = 1.0f;
 }
 
+// The light's emission toward -out.wi at out.point: its material's constant, or its emission
+// texture read at that point (the material's `emission` is then the texture's mean, the
+// selection weight: the side test is the same, the value the texel's).
+glm::vec3 LightSet::emitted_radiance_at(const Light& l, const LightSample& out, std::uint32_t primitive) const {
+    const glm::vec3 le = emitted_radiance(*l.material, out.normal, -out.wi);
+    if (l.material->emission_texture < 0 || le == glm::vec3(0.0f)) return le;
+    SurfaceHit at;
+    at.point = out.point;
+    at.object = l.object;
+    at.primitive = primitive;
+    return textured_emission(*scene_, *l.material, at);
+}
+
 float LightSet::selection_probability(std::uint32_t object) const {
     return is_light(object) ? lights_[static_cast<std::size_t>(light_of_object_[object])].probability : 0.0f;
 }
@@ -140,7 +154,7 @@ bool LightSet::sample_cone(const Light& l, const glm::vec3& p, std::uint32_t p_o
     out.point = q;
     out.point_error = gamma(5) * (glm::abs(s.origin) + glm::vec3(s.radius));
     out.normal = normal_sign_ * n;
-    out.radiance = emitted_radiance(*l.material, out.normal, -out.wi);
+    out.radiance = emitted_radiance_at(l, out, 0);
     return out.pdf > 0.0f && std::isfinite(out.pdf) && luminance(out.radiance) > 0.0f;
 }
 
@@ -156,6 +170,7 @@ float LightSet::sample_area(const Light& l, float u_part, float u1, float u2, Su
     l.sample_surface(*l.geometry, s, u_part, u1, u2, local);
     affine_point_to_world(s.to_world, local.point, local.error, world.point, world.error);
     world.normal = glm::normalize(s.normal_to_world * local.normal);
+    world.primitive = local.primitive;
     return s.strategy == Strategy::ObjectArea ? object_area_pdf(s, world.normal) : s.area_pdf;
 }
 
@@ -190,7 +205,7 @@ bool LightSet::sample(const glm::vec3& p, std::uint32_t p_object, float u_select
     out.point = q;
     out.point_error = sp.error;
     out.normal = normal_sign_ * n;
-    out.radiance = emitted_radiance(*l.material, out.normal, -out.wi);
+    out.radiance = emitted_radiance_at(l, out, sp.primitive);
     return std::isfinite(out.pdf) && luminance(out.radiance) > 0.0f;
 }
 

@@ -120,6 +120,7 @@ private:
         void (*sample_surface)(const Shape&, const ShapeLight&, float, float, float, SurfacePoint&) = nullptr;
     };
 
+    glm::vec3 emitted_radiance_at(const Light& l, const LightSample& out, std::uint32_t primitive) const;
     bool sample_cone(const Light& l, const glm::vec3& p, std::uint32_t p_object, float u1, float u2, LightSample& out,
                      bool& sampled) const;
     float sample_area(const Light& l, float u_part, float u1, float u2, SurfacePoint& world) const;

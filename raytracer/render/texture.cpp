@@ -2,15 +2,24 @@
 
 #include <cmath>
 
+#include "raytracer/render/shading_frame.hpp"
+
 namespace sweeptrace {
 
 namespace {
 
 int wrap_index(int i, int n, Texture::Wrap wrap) {
     if (wrap == Texture::Wrap::Clamp) return i < 0 ? 0 : (i >= n ? n - 1 : i);
+    if (wrap == Texture::Wrap::Mirror) {
+        int m = i % (2 * n);
+        if (m < 0) m += 2 * n;
+        return m < n ? m : 2 * n - 1 - m;
+    }
     const int m = i % n;
     return m < 0 ? m + n : m;
 }
+
+glm::vec3 lerp(const glm::vec3& a, const glm::vec3& b, float t) { return a + t * (b - a); }
 
 glm::vec3 bilinear(const Texture& t, const glm::vec2& uv) {
     const Image& img = *t.image;
@@ -20,9 +29,10 @@ glm::vec3 bilinear(const Texture& t, const glm::vec2& uv) {
     const float ax = x - fx, ay = y - fy;
     const int x0 = static_cast<int>(fx), y0 = static_cast<int>(fy);
     auto at = [&](int i, int j) { return img.at(wrap_index(i, img.width, t.wrap), wrap_index(j, img.height, t.wrap)); };
-    return (1.0f - ay) * ((1.0f - ax) * at(x0, y0) + ax * at(x0 + 1, y0)) +
-           ay * ((1.0f - ax) * at(x0, y0 + 1) + ax * at(x0 + 1, y0 + 1));
+    return lerp(lerp(at(x0, y0), at(x0 + 1, y0), ax), lerp(at(x0, y0 + 1), at(x0 + 1, y0 + 1), ax), ay);
 }
+
+const Texture& texture(const Scene& scene, int index) { return scene.textures[static_cast<std::size_t>(index)]; }
 
 }  // namespace
 
@@ -47,11 +57,23 @@ glm::vec2 hit_uv(const Scene& scene, const SurfaceHit& hit) {
     });
 }
 
-Material textured_material(const Scene& scene, const Material& base, const SurfaceHit& hit) {
+Material textured_material(const Scene& scene, const Material& base, SurfaceHit& hit) {
     Material m = base;
-    if (base.albedo_texture >= 0)
-        m.albedo = eval_texture(scene.textures[static_cast<std::size_t>(base.albedo_texture)], hit_uv(scene, hit));
+    const glm::vec2 uv = hit_uv(scene, hit);
+    if (base.albedo_texture >= 0) m.albedo = eval_texture(texture(scene, base.albedo_texture), uv);
+    if (base.roughness_texture >= 0) {
+        const glm::vec3 r = eval_texture(texture(scene, base.roughness_texture), uv);
+        m.roughness = r.x + ((r.y - r.x) + (r.z - r.x)) / 3.0f;  // the mean, exact for a grey texel
+    }
+    if (base.emission_texture >= 0) m.emission = eval_texture(texture(scene, base.emission_texture), uv);
+    if (base.normal_texture >= 0)
+        hit.shading_normal = normal_from_map(hit.shading_normal, hit.normal, hit_uv_tangents(scene, hit),
+                                             eval_texture(texture(scene, base.normal_texture), uv));
     return m;
+}
+
+glm::vec3 textured_emission(const Scene& scene, const Material& m, const SurfaceHit& at) {
+    return eval_texture(texture(scene, m.emission_texture), hit_uv(scene, at));
 }
 
 }  // namespace sweeptrace

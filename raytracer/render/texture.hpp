@@ -2,12 +2,15 @@
 // Textures at a hit (scene.hpp: Texture). The uv comes from the hit object's shape home
 // (geometry/shapes/<shape>, `uv(geometry, object_point)`), computed only here, so only for hits
 // whose material reads a texture; the hit's world point is taken back to object space by the
-// object's inverse transform.
+// object's inverse transform. One uv per hit, however many parameters read textures.
 //
 // - checker: with s = floor(scale u) + floor(scale v), colour a where s is even, b where odd;
 // - image: bilinear between the four texel centres around (u W - 1/2, (1 - v) H - 1/2) (v = 0 is
-//   the image's bottom row, v = 1 its top, as in OBJ and OpenGL); wrap "repeat" takes texel
-//   indices modulo the size, "clamp" clamps them to the edge.
+//   the image's bottom row, v = 1 its top, as in OBJ and OpenGL), as c0 + a (c1 - c0) along
+//   each axis, so equal neighbours give their value exactly; wrap "repeat" takes texel indices
+//   modulo the size, "clamp" clamps them to the edge, "mirror" reflects them at each edge (the
+//   image, then its mirror image, period 2 W).
+// A scalar parameter (roughness) reads the mean of the three channels.
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
@@ -22,8 +25,17 @@ glm::vec3 eval_texture(const Texture& t, const glm::vec2& uv);
 // refuses textures on those).
 glm::vec2 hit_uv(const Scene& scene, const SurfaceHit& hit);
 
+inline bool reads_texture(const Material& m) {
+    return m.albedo_texture >= 0 || m.roughness_texture >= 0 || m.emission_texture >= 0 || m.normal_texture >= 0;
+}
+
 // `base` with its textured parameters evaluated at `hit` (the caller's copy; only called for
-// materials that read a texture).
-Material textured_material(const Scene& scene, const Material& base, const SurfaceHit& hit);
+// materials that read a texture). A normal map also replaces hit.shading_normal
+// (render/shading_frame.hpp).
+Material textured_material(const Scene& scene, const Material& base, SurfaceHit& hit);
+
+// What a material with an emission texture emits at a point a light sample drew (`at`: its world
+// point, object and primitive), toward the side `emitted_radiance` already accepted.
+glm::vec3 textured_emission(const Scene& scene, const Material& m, const SurfaceHit& at);
 
 }  // namespace sweeptrace

@@ -16,6 +16,7 @@
 #include "raytracer/scene/load_filter.hpp"
 #include "raytracer/scene/load_lights.hpp"
 #include "raytracer/scene/load_texture.hpp"
+#include "raytracer/scene/obj_materials.hpp"
 #include "raytracer/scene/obj_loader.hpp"
 #include "raytracer/scene/scene_extent.hpp"
 #include "raytracer/scene/scene_transform.hpp"
@@ -110,19 +111,22 @@ Material read_material(const Node& node, const std::string& name, std::vector<Te
     Material m;
     m.name = name;
     if (type == "diffuse") {
-        node.require_object({"type", "albedo", "emission", "two_sided"});
+        node.require_object({"type", "albedo", "emission", "two_sided", "normal_map"});
         m.type = Material::Type::Diffuse;
     } else if (type == "metal") {
-        node.require_object({"type", "albedo", "roughness", "emission", "two_sided"});
+        node.require_object({"type", "albedo", "roughness", "emission", "two_sided", "normal_map"});
         m.type = Material::Type::Metal;
-        if (auto r = node.find("roughness")) m.roughness = r->number_in(0.0f, 1.0f);
+        if (auto r = node.find("roughness")) {
+            if (r->value().is_object()) m.roughness_texture = add_texture(*r, TextureUse::Roughness, textures);
+            else m.roughness = r->number_in(0.0f, 1.0f);
+        }
     } else if (type == "dielectric") {
-        node.require_object({"type", "ior", "albedo", "emission", "two_sided"});
+        node.require_object({"type", "ior", "albedo", "emission", "two_sided", "normal_map"});
         m.type = Material::Type::Dielectric;
         m.albedo = glm::vec3(1.0f);  // clear glass unless tinted
         if (auto ior = node.find("ior")) m.ior = ior->number_at_least(0.0f, false);
     } else if (type == "thin_dielectric") {
-        node.require_object({"type", "ior", "albedo", "emission", "two_sided"});
+        node.require_object({"type", "ior", "albedo", "emission", "two_sided", "normal_map"});
         m.type = Material::Type::ThinDielectric;
         m.albedo = glm::vec3(1.0f);  // clear unless tinted
         if (auto ior = node.find("ior")) m.ior = ior->number_at_least(0.0f, false);
@@ -135,20 +139,25 @@ Material read_material(const Node& node, const std::string& name, std::vector<Te
     }
     if (auto albedo = node.find("albedo")) {
         if (albedo->value().is_object()) {
-            m.albedo_texture = static_cast<int>(textures.size());
-            textures.push_back(read_texture(*albedo, textures));
+            m.albedo_texture = add_texture(*albedo, TextureUse::Albedo, textures);
         } else {
             m.albedo = read_albedo(*albedo);
         }
     }
     if (auto emission = node.find("emission")) {
-        m.emission = emission->vec3_at_least(0.0f);
+        if (emission->value().is_object()) {
+            m.emission_texture = add_texture(*emission, TextureUse::Emission, textures);
+            m.emission = texture_mean(textures.back());
+        } else {
+            m.emission = emission->vec3_at_least(0.0f);
+        }
         if (m.type == Material::Type::Emissive && m.emission == glm::vec3(0.0f))
             emission->fail("an emissive material must emit: some component must be > 0");
     } else if (m.type == Material::Type::Emissive) {
         node.at("emission");  // reports it missing
     }
     if (auto two_sided = node.find("two_sided")) m.two_sided_emission = two_sided->boolean();
+    if (auto normal = node.find("normal_map")) m.normal_texture = add_texture(*normal, TextureUse::NormalMap, textures);
     return m;
 }
 
@@ -219,15 +228,20 @@ public:
             file_node.fail("mesh file \"" + relative + "\" not found (looked for " + path.string() + ")");
         const std::string key = std::filesystem::weakly_canonical(path, ec).string();
         if (auto it = mesh_by_file_.find(key); it != mesh_by_file_.end()) return it->second;
+        ObjOutline outline;
         try {
-            scene_.meshes.push_back(load_obj(path));
+            scene_.meshes.push_back(load_obj(path, &outline));
         } catch (const InputError& e) {
             file_node.fail(e.what());
         }
         const auto index = static_cast<std::uint32_t>(scene_.meshes.size() - 1);
         mesh_by_file_.emplace(key, index);
+        obj_materials_.add_mesh(index, path, std::move(outline));
         return index;
     }
+
+    // Mesh objects with their OBJ's materials become one object per material (obj_materials.hpp).
+    void split_obj_materials() { obj_materials_.split(scene_); }
 
 private:
     Object read(const Node& node) {
@@ -251,15 +265,20 @@ private:
             type_node.fail("unknown shape type \"" + type + "\" (known: " + names + ")");
         }
 
-        const Node material = node.at("material");
-        const std::string material_name = material.string();
-        const auto it = materials_.find(material_name);
-        if (it == materials_.end()) {
-            std::string known;
-            for (const auto& [name, index] : materials_) known += (known.empty() ? "" : ", ") + name;
-            material.fail("unknown material \"" + material_name + "\" (defined: " + (known.empty() ? "none" : known) + ")");
+        const auto object_index = static_cast<std::uint32_t>(scene_.objects.size());
+        if (auto own = obj_materials_.from_obj(node, object.shape, object_index, scene_)) {
+            object.material = *own;
+        } else {
+            const Node material = node.at("material");
+            const std::string material_name = material.string();
+            const auto it = materials_.find(material_name);
+            if (it == materials_.end()) {
+                std::string known;
+                for (const auto& [name, index] : materials_) known += (known.empty() ? "" : ", ") + name;
+                material.fail("unknown material \"" + material_name + "\" (defined: " + (known.empty() ? "none" : known) + ")");
+            }
+            object.material = it->second;
         }
-        object.material = it->second;
         if (auto t = node.find("transform")) object.transform = read_transform(*t);
         object.name = node.has("name") ? node.at("name").string() : node.path() + " (" + type + ")";
         return object;
@@ -268,6 +287,7 @@ private:
     Scene& scene_;
     std::map<std::string, std::uint32_t> materials_;
     std::map<std::string, std::uint32_t> mesh_by_file_;
+    ObjMaterials obj_materials_;
 };
 
 }  // namespace
@@ -290,6 +310,7 @@ Scene load_scene(const std::filesystem::path& file) {
     check_texture_uv(scene, root.at("objects"));
     if (auto l = root.find("lights")) scene.lights = read_lights(*l);
     check_scene_extent(scene, root);
+    objects.split_obj_materials();
     return scene;
 }
 

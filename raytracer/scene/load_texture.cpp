@@ -1,15 +1,21 @@
 #include "raytracer/scene/load_texture.hpp"
 
+#include <algorithm>
+#include <cctype>
+#include <cmath>
 #include <string>
 #include <system_error>
 #include <type_traits>
 
 #include "raytracer/geometry/shape.hpp"
+#include "raytracer/image/srgb.hpp"
 #include "raytracer/scene/load_image_file.hpp"
 
 namespace sweeptrace {
 
 namespace {
+
+bool is_data(TextureUse use) { return use == TextureUse::Roughness || use == TextureUse::NormalMap; }
 
 glm::vec3 read_colour01(const scene_json::Node& node) {
     const glm::vec3 v = node.vec3_at_least(0.0f);
@@ -18,45 +24,122 @@ glm::vec3 read_colour01(const scene_json::Node& node) {
     return v;
 }
 
-}  // namespace
+glm::vec3 read_checker_value(const scene_json::Node& node, TextureUse use) {
+    if (use == TextureUse::Roughness) return glm::vec3(node.number_in(0.0f, 1.0f));
+    if (use == TextureUse::Emission) return node.vec3_at_least(0.0f);
+    return read_colour01(node);
+}
 
-Texture read_texture(const scene_json::Node& node, const std::vector<Texture>& loaded) {
-    node.require_object({"checker", "image"});
-    if (node.value().size() != 1) node.fail("give exactly one of \"checker\" or \"image\" (or a colour [r, g, b])");
-    Texture t;
-    if (auto c = node.find("checker")) {
-        c->require_object({"a", "b", "scale"});
-        t.kind = Texture::Kind::Checker;
-        if (auto a = c->find("a")) t.a = read_colour01(*a);
-        if (auto b = c->find("b")) t.b = read_colour01(*b);
-        if (auto s = c->find("scale")) t.scale = s->number_at_least(0.0f, false);
-        return t;
-    }
-    const scene_json::Node im = node.at("image");
-    im.require_object({"file", "wrap"});
-    t.kind = Texture::Kind::Image;
-    const scene_json::Node file = im.at("file");
-    std::error_code ec;
-    t.image_file = std::filesystem::weakly_canonical(file.file().parent_path() / file.string(), ec);
-    for (const Texture& other : loaded)
-        if (other.image && other.image_file == t.image_file) t.image = other.image;
-    if (!t.image) t.image = read_image_file(file, "texture image");
-    for (const glm::vec3& p : t.image->pixels)
+bool is_png(const std::filesystem::path& file) {
+    std::string ext = file.extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+    return ext == ".png";
+}
+
+// A .png's image the other way round: the reader decodes sRGB, so a data map re-encodes (and
+// rounds to the nearest 16-bit code: an 8-bit code k comes back as exactly k / 255, since
+// k / 255 = 257 k / 65535), and a colour map decodes a data map loaded before it.
+std::shared_ptr<const Image> converted(const Image& from, bool to_data) {
+    Image out = from;
+    for (glm::vec3& p : out.pixels)
         for (int k = 0; k < 3; ++k)
-            if (!(p[k] >= 0.0f && p[k] <= 1.0f)) im.at("file").fail("an albedo texture's values must lie in [0, 1]");
+            p[k] = to_data ? static_cast<float>(std::lround(static_cast<double>(srgb_encode(p[k])) * 65535.0)) / 65535.0f
+                           : srgb_decode(p[k]);
+    return std::make_shared<const Image>(std::move(out));
+}
+
+void check_values(const Image& image, TextureUse use, const ImageFail& fail) {
+    const char* what = use == TextureUse::Albedo      ? "an albedo"
+                       : use == TextureUse::Roughness ? "a roughness"
+                       : use == TextureUse::NormalMap ? "a normal map"
+                                                      : "an emission";
+    for (const glm::vec3& p : image.pixels)
+        for (int k = 0; k < 3; ++k) {
+            if (use == TextureUse::Emission) {
+                if (!(p[k] >= 0.0f) || !std::isfinite(p[k])) fail("an emission texture's values must be finite and >= 0");
+            } else if (!(p[k] >= 0.0f && p[k] <= 1.0f)) {
+                fail(std::string(what) + " texture's values must lie in [0, 1]");
+            }
+        }
+}
+
+void read_image_texture(const scene_json::Node& im, TextureUse use, const std::vector<Texture>& loaded, Texture& t) {
+    im.require_object({"file", "wrap"});
+    const scene_json::Node file = im.at("file");
+    const std::string relative = file.string();
+    t = image_texture(relative, file.file().parent_path() / relative, use, loaded,
+                      [&](const std::string& message) { file.fail(message); });
     if (auto w = im.find("wrap")) {
         const std::string wrap = w->string();
         if (wrap == "repeat") t.wrap = Texture::Wrap::Repeat;
         else if (wrap == "clamp") t.wrap = Texture::Wrap::Clamp;
-        else w->fail("unknown wrap mode \"" + wrap + "\" (known: repeat, clamp)");
+        else if (wrap == "mirror") t.wrap = Texture::Wrap::Mirror;
+        else w->fail("unknown wrap mode \"" + wrap + "\" (known: repeat, clamp, mirror)");
     }
+}
+
+bool reads_texture(const Material& m) {
+    return m.albedo_texture >= 0 || m.roughness_texture >= 0 || m.emission_texture >= 0 || m.normal_texture >= 0;
+}
+
+}  // namespace
+
+Texture image_texture(const std::string& relative, const std::filesystem::path& path, TextureUse use,
+                      const std::vector<Texture>& loaded, const ImageFail& fail) {
+    Texture t;
+    t.kind = Texture::Kind::Image;
+    t.linear_data = is_data(use);
+    std::error_code ec;
+    t.image_file = std::filesystem::weakly_canonical(path, ec);
+    const bool png = is_png(t.image_file);
+    // The same reading if one is loaded; else the other reading of a .png, converted.
+    const Texture* other_reading = nullptr;
+    for (const Texture& other : loaded) {
+        if (!other.image || other.image_file != t.image_file) continue;
+        if (!png || other.linear_data == t.linear_data) t.image = other.image;
+        else if (!other_reading) other_reading = &other;
+    }
+    if (!t.image && other_reading) t.image = converted(*other_reading->image, t.linear_data);
+    if (!t.image) {
+        t.image = read_image_path(relative, path, "texture image", fail);
+        if (png && t.linear_data) t.image = converted(*t.image, true);
+    }
+    check_values(*t.image, use, fail);
     return t;
+}
+
+Texture read_texture(const scene_json::Node& node, TextureUse use, const std::vector<Texture>& loaded) {
+    node.require_object({"checker", "image"});
+    if (node.value().size() != 1) node.fail("give exactly one of \"checker\" or \"image\" (or a plain value)");
+    Texture t;
+    if (auto c = node.find("checker")) {
+        c->require_object({"a", "b", "scale"});
+        t.kind = Texture::Kind::Checker;
+        if (auto a = c->find("a")) t.a = read_checker_value(*a, use);
+        if (auto b = c->find("b")) t.b = read_checker_value(*b, use);
+        if (auto s = c->find("scale")) t.scale = s->number_at_least(0.0f, false);
+        return t;
+    }
+    read_image_texture(node.at("image"), use, loaded, t);
+    return t;
+}
+
+int add_texture(const scene_json::Node& node, TextureUse use, std::vector<Texture>& textures) {
+    textures.push_back(read_texture(node, use, textures));
+    return static_cast<int>(textures.size() - 1);
+}
+
+glm::vec3 texture_mean(const Texture& t) {
+    if (t.kind == Texture::Kind::Checker) return 0.5f * (t.a + t.b);
+    glm::dvec3 sum(0.0);
+    for (const glm::vec3& p : t.image->pixels) sum += glm::dvec3(p);
+    return glm::vec3(sum / static_cast<double>(t.image->pixels.size()));
 }
 
 void check_texture_uv(const Scene& scene, const scene_json::Node& objects) {
     for (std::size_t i = 0; i < scene.objects.size(); ++i) {
         const Object& obj = scene.objects[i];
-        if (scene.materials[obj.material].albedo_texture < 0) continue;
+        if (!reads_texture(scene.materials[obj.material])) continue;
         const bool has_uv = visit_shape(obj.shape, [&](auto home, const auto& g) {
             if constexpr (std::is_same_v<std::decay_t<decltype(g)>, MeshInstance>)
                 return !scene.meshes[g.mesh].vertex_uvs.empty();

@@ -78,7 +78,7 @@ std::string first_line(const std::string& s) {
 
 }  // namespace
 
-Mesh load_obj(const std::filesystem::path& file) {
+Mesh load_obj(const std::filesystem::path& file, ObjOutline* outline_out) {
     const std::string text = read_text_file(file, "mesh", kMaxMeshFileBytes);
     const std::string name = file.string();
     const ObjOutline outline = outline_obj(text, name);
@@ -182,6 +182,7 @@ Mesh load_obj(const std::filesystem::path& file) {
             offset += corners;
         }
     }
+    if (outline_out) *outline_out = outline;
     return mesh;
 }
 

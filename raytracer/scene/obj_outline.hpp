@@ -9,7 +9,9 @@
 // agree on every line whatever the file's line endings; obj_loader.cpp checks that they agree.
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace sweeptrace {
@@ -18,7 +20,24 @@ struct ObjOutline {
     std::vector<std::size_t> face_lines;      // 1-based line of each `f` statement, in file order
     std::vector<std::uint32_t> face_corners;  // its corner count, 3..kMaxObjFaceCorners
     std::size_t vertex_count = 0;             // `v` statements
+    // Material statements (scene/obj_materials.hpp reads them): the line and its words after the
+    // keyword, joined by single spaces (`usemtl`: one name; `mtllib`: one or more files).
+    struct Statement {
+        std::size_t line = 0;
+        std::string value;
+    };
+    std::vector<Statement> mtllibs, usemtls;
 };
+
+// Calls `fn(line, words)` for every line of `text` (1-based, lines split as above; words split
+// by space and tab, as tinyobjloader does). Throws InputError "<name>: line N: ..." at a NUL byte.
+// The .mtl reader (scene/load_mtl.hpp) splits its files the same way.
+void for_each_obj_line(const std::string& text, const std::string& name,
+                       const std::function<void(std::size_t, const std::vector<std::string_view>&)>& fn);
+
+// A decimal number as OBJ writers print it: [+-] digits [. digits] [e [+-] digits]; not "nan",
+// "inf" or hex.
+bool obj_decimal(std::string_view word);
 
 // The most corners tinyobjloader can count in a face.
 inline constexpr std::uint32_t kMaxObjFaceCorners = 255;

@@ -74,13 +74,16 @@ struct Background {
 // the material's plain value.
 struct Texture {
     enum class Kind { Checker, Image };
-    enum class Wrap { Repeat, Clamp };
+    enum class Wrap { Repeat, Clamp, Mirror };
     Kind kind = Kind::Checker;
     glm::vec3 a{0.2f}, b{0.8f};  // Checker: the two colours; a at uv = (0, 0)
     float scale = 8.0f;          // Checker: squares per unit of u and of v
     std::shared_ptr<const Image> image;  // Image: linear RGB (an sRGB .png is decoded on load)
     std::filesystem::path image_file;    // Image: the file, canonical: one load however many textures use it
     Wrap wrap = Wrap::Repeat;
+    // Image: the texel values are the file's stored numbers (a data map: roughness, normals), not
+    // sRGB-decoded colours; scene/load_texture.hpp says which parameters read data.
+    bool linear_data = false;
 };
 
 struct Material {
@@ -96,6 +99,13 @@ struct Material {
     // quads, the disk's normal, (b - a) x (c - a) for triangles and mesh faces.
     bool two_sided_emission = false;
     std::string name;
+    // Textures on the other parameters (indices into Scene::textures, or -1), evaluated at each
+    // hit by render/texture.hpp. With emission_texture, `emission` holds the texture's mean (the
+    // light's selection weight; each hit and light sample reads the texture itself).
+    int roughness_texture = -1;  // the mean of the texel's three channels
+    int emission_texture = -1;
+    // A tangent-space normal map (render/shading_frame.hpp): replaces the shading normal.
+    int normal_texture = -1;
 };
 
 struct Scene {

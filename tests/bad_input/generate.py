@@ -227,6 +227,32 @@ obj_case("obj-empty", E + M + r"contains no faces", "")
 obj_case("obj-binary-garbage", E + M + r"line \d+: ", bytes(range(1, 256)) * 4 + b"\nf 1 2\n")
 obj_case("obj-face-words", E + M + r"invalid OBJ", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf a b c\n")
 
+# --- OBJ materials (mtllib / usemtl): a mesh object without "material" takes its OBJ's ----------
+MTL_OBJ = "mtllib m.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 0 1\nusemtl a\nf 1/1 2/2 3/3\n"
+
+
+def mtl_case(name, pattern, mtl=None, obj=MTL_OBJ):
+    s = json.loads(mesh_scene())
+    del s["objects"][0]["material"]
+    files = {"mesh.obj": obj}
+    if mtl is not None:
+        files["m.mtl"] = mtl
+    render_case(name, pattern, json.dumps(s), extra=files)
+
+
+MF = r"scene\.json: objects\[0\]\.file: .*"
+mtl_case("mtl-missing", E + MF + r"mesh\.obj: line 1: mtllib \"m\.mtl\" not found")
+mtl_case("mtl-no-mtllib", E + MF + r"mesh\.obj: names no material library", obj="v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n")
+mtl_case("mtl-usemtl-unknown", E + MF + r"mesh\.obj: line 8: usemtl \"a\": no such material", "newmtl b\nKd 1 1 1\n")
+mtl_case("mtl-texture-missing", E + MF + r"m\.mtl: line 3: map_Kd: texture image \"wood\.png\" not found",
+         "newmtl a\nKd 1 1 1\nmap_Kd -bm 1 wood.png\n")
+mtl_case("mtl-normal-map-missing", E + MF + r"m\.mtl: line 2: normal map: texture image \"n\.png\" not found", "newmtl a\nnorm n.png\n")
+mtl_case("mtl-kd-not-number", E + MF + r"m\.mtl: line 2: Kd 'x' is not a decimal number", "newmtl a\nKd 1 x 1\n")
+mtl_case("mtl-kd-over-1", E + MF + r"m\.mtl: line 2: Kd 2 is out of range", "newmtl a\nKd 2 1 1\n")
+mtl_case("mtl-property-before-newmtl", E + MF + r"m\.mtl: line 1: Kd before any newmtl", "Kd 1 1 1\nnewmtl a\n")
+mtl_case("mtl-duplicate-name", E + MF + r"m\.mtl: line 2: material \"a\" is already defined on line 1", "newmtl a\nnewmtl a\n")
+mtl_case("mtl-nul-byte", E + MF + r"m\.mtl: line 2: contains a NUL byte", "newmtl a\nKd 1\x00 1 1\n")
+
 # --- images (diff) -------------------------------------------------------------------------------
 
 

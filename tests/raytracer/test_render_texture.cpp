@@ -8,6 +8,7 @@
 #include <functional>
 
 #include "convergence_harness.hpp"
+#include "plane_truth.hpp"
 #include "raytracer/input_error.hpp"
 #include "raytracer/render/texture.hpp"
 #include "raytracer/scene/load_scene.hpp"
@@ -106,35 +107,15 @@ void check_checker_square(const std::function<void(Scene&, std::uint32_t, const 
     add_square(scene, add_material(scene, m), xf);
     // Truth: a pixel sees the plane z = 0 at world (x, y); uv = ((x + 1) / 2, (y + 1) / 2) on
     // the quad, the sky elsewhere. A diffuse surface facing only the sky reflects albedo x L.
-    const double half = std::tan(glm::radians(25.0));
-    Image truth(size, size);
-    std::vector<std::uint8_t> mask(truth.pixels.size(), 1);
-    for (int y = 0; y < size; ++y)
-        for (int x = 0; x < size; ++x) {
-            glm::dvec3 sum(0.0);
-            int first = -1;
-            for (int j = 0; j < sub; ++j)
-                for (int i = 0; i < sub; ++i) {
-                    const double fx = x + (i + 0.5) / sub, fy = y + (j + 0.5) / sub;
-                    const double wx = (2 * fx / size - 1) * half * 3, wy = (1 - 2 * fy / size) * half * 3;
-                    const double u = (wx + 1) / 2, v = (wy + 1) / 2;
-                    const bool on = u > 0 && u < 1 && v > 0 && v < 1;
-                    const int cell = on ? int(std::floor(3 * u) + std::floor(3 * v)) % 2 : 2;
-                    if (first < 0) first = cell;
-                    if (cell != first) mask[y * size + x] = 0;
-                    sum += glm::dvec3(on ? (cell == 0 ? checker.a : checker.b) * L : L);
-                }
-            truth.at(x, y) = glm::vec3(sum / double(sub * sub));
-        }
-    for (AccelKind accel : {AccelKind::Bvh, AccelKind::Embree}) {
-        const RenderResult r = render_with(scene, accel, 8, 3, 4);
-        // Deterministic: every sample of an unmasked pixel reads exactly albedo x L (the cosine
-        // sample's weight is the albedo); 1e-6 covers its roundings.
-        const BlockTestResult t = test_against_truth(truth, r, 2, 1e-6, &mask);
-        INFO((accel == AccelKind::Bvh ? "bvh: " : "embree: ") << t.summary());
-        CHECK(t.pass());
-        CHECK(t.blocks_tested > 150);
-    }
+    const PlaneTruth truth = plane_truth(
+        size, sub,
+        [](double wx, double wy) {
+            const double u = (wx + 1) / 2, v = (wy + 1) / 2;
+            const bool on = u > 0 && u < 1 && v > 0 && v < 1;
+            return on ? int(std::floor(3 * u) + std::floor(3 * v)) % 2 : 2;
+        },
+        [&](int cell) { return cell == 2 ? L : (cell == 0 ? checker.a : checker.b) * L; });
+    check_plane_render(scene, truth);
 }
 
 }  // namespace

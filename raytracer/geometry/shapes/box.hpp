@@ -39,6 +39,16 @@ struct BoxShape {
         const int i = k == 0 ? 1 : 0, j = k == 2 ? 1 : 2;
         return {std::clamp(f[i] + 0.5f, 0.0f, 1.0f), std::clamp(f[j] + 0.5f, 0.0f, 1.0f)};
     }
+    // Along the face's two axes (the same face choice as uv), each the box's size along it.
+    static UvTangents uv_tangents(const Geometry& g, const glm::vec3& p) {
+        const glm::vec3 a = glm::abs((p - g.center) / g.size);
+        const int k = a.x >= a.y && a.x >= a.z ? 0 : (a.y >= a.z ? 1 : 2);
+        const int i = k == 0 ? 1 : 0, j = k == 2 ? 1 : 2;
+        UvTangents t;
+        t.dpdu[i] = g.size[i];
+        t.dpdv[j] = g.size[j];
+        return t;
+    }
 };
 
 template <class Node, class Loader>

@@ -37,6 +37,10 @@ struct CapsuleShape {
         const float length = g.height + 2.0f * g.radius;
         return {uv_maps::longitude(d.x, d.z), std::clamp(d.y / length + 0.5f, 0.0f, 1.0f)};
     }
+    // Around the axis, and up it (v grows with height alone; the frame keeps dpdv's tangential part).
+    static UvTangents uv_tangents(const Geometry& g, const glm::vec3& p) {
+        return {uv_maps::longitude_tangent(p - g.center), glm::vec3(0.0f, g.height + 2.0f * g.radius, 0.0f)};
+    }
 };
 
 template <class Node, class Loader>

@@ -37,6 +37,10 @@ struct CylinderShape {
         const glm::vec3 d = p - g.center;
         return {uv_maps::longitude(d.x, d.z), std::clamp(d.y / g.height + 0.5f, 0.0f, 1.0f)};
     }
+    // Around the axis, and up it (on the caps, where v is constant, dpdv lies along the normal).
+    static UvTangents uv_tangents(const Geometry& g, const glm::vec3& p) {
+        return {uv_maps::longitude_tangent(p - g.center), glm::vec3(0.0f, g.height, 0.0f)};
+    }
 };
 
 template <class Node, class Loader>

@@ -38,6 +38,14 @@ struct DiskShape {
         const float a = std::atan2(y, x) / (2.0f * kPi);
         return {a < 0.0f ? a + 1.0f : a, std::sqrt(x * x + y * y) / g.radius};
     }
+    // Around the centre (from s toward t) and outward; zero at the centre.
+    static UvTangents uv_tangents(const Geometry& g, const glm::vec3& p) {
+        const Frame f(glm::normalize(g.normal));
+        const glm::vec3 d = p - g.center;
+        const float x = glm::dot(d, f.s), y = glm::dot(d, f.t), r = std::sqrt(x * x + y * y);
+        if (!(r > 0.0f)) return {};
+        return {2.0f * kPi * (x * f.t - y * f.s), (g.radius / r) * (x * f.s + y * f.t)};
+    }
     // Flat: a point of its plane and its front (emitting) normal, in object space, unnormalised.
     static FlatFront front(const Geometry& g) { return {g.center, g.normal}; }
 };

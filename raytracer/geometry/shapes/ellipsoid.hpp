@@ -35,6 +35,11 @@ struct EllipsoidShape {
         const glm::vec3 d = glm::normalize((p - g.center) / g.radii);
         return {uv_maps::longitude(d.x, d.z), uv_maps::polar(d.y)};
     }
+    // The unit sphere's derivatives at (p - center) / radii, scaled back by the radii.
+    static UvTangents uv_tangents(const Geometry& g, const glm::vec3& p) {
+        const glm::vec3 d = glm::normalize((p - g.center) / g.radii);
+        return {g.radii * uv_maps::longitude_tangent(d), g.radii * uv_maps::polar_tangent(d)};
+    }
 };
 
 template <class Node, class Loader>

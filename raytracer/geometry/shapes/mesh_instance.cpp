@@ -36,6 +36,7 @@ void MeshInstanceShape::sample(const Geometry&, const ShapeLight& l, float u_par
     out.point = b.x * tri.a + b.y * tri.b + (1.0f - b.x - b.y) * tri.c;
     out.error = gamma(4) * (glm::abs(tri.a) + glm::abs(tri.b) + glm::abs(tri.c));
     out.normal = glm::cross(tri.b - tri.a, tri.c - tri.a);
+    out.primitive = static_cast<std::uint32_t>(k);
 }
 
 glm::vec2 MeshInstanceShape::mesh_uv(const Geometry& m, const std::vector<Mesh>& meshes, std::uint32_t primitive,
@@ -51,6 +52,21 @@ glm::vec2 MeshInstanceShape::mesh_uv(const Geometry& m, const std::vector<Mesh>&
     if (!(nn > 0.0f)) return mesh.vertex_uvs[f.x];
     const float b1 = glm::dot(glm::cross(d, e2), n) / nn, b2 = glm::dot(glm::cross(e1, d), n) / nn;
     return (1.0f - b1 - b2) * mesh.vertex_uvs[f.x] + b1 * mesh.vertex_uvs[f.y] + b2 * mesh.vertex_uvs[f.z];
+}
+
+UvTangents MeshInstanceShape::mesh_uv_tangents(const Geometry& m, const std::vector<Mesh>& meshes,
+                                               std::uint32_t primitive) {
+    const Mesh& mesh = meshes[m.mesh];
+    if (mesh.vertex_uvs.empty() || primitive >= mesh.triangles.indices.size()) return {};
+    const glm::uvec3 f = mesh.triangles.indices[primitive];
+    const glm::vec3 p0 = mesh.triangles.vertices[f.x];
+    const glm::vec3 e1 = mesh.triangles.vertices[f.y] - p0, e2 = mesh.triangles.vertices[f.z] - p0;
+    const glm::vec2 t0 = mesh.vertex_uvs[f.x];
+    const glm::vec2 d1 = mesh.vertex_uvs[f.y] - t0, d2 = mesh.vertex_uvs[f.z] - t0;
+    // e1 = dpdu d1.x + dpdv d1.y and e2 likewise: solved by Cramer's rule.
+    const float det = d1.x * d2.y - d1.y * d2.x;
+    if (!(std::abs(det) > 0.0f)) return {};
+    return {(d2.y * e1 - d1.y * e2) / det, (d1.x * e2 - d2.x * e1) / det};
 }
 
 }  // namespace sweeptrace

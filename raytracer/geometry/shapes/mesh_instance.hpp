@@ -32,7 +32,8 @@ struct MeshInstance {
 struct MeshInstanceShape {
     using Geometry = MeshInstance;
     static constexpr std::string_view kType = "mesh";
-    static constexpr std::array<std::string_view, 1> kKeys{"file"};
+    // "materials": "from_obj" (the default without a "material"): the OBJ's own (scene/obj_materials.hpp).
+    static constexpr std::array<std::string_view, 2> kKeys{"file", "materials"};
     // The loader resolves and loads the file (scene/), once however many objects instance it.
     template <class Node, class Loader>
     static Geometry read(const Node& node, Loader& loader) {
@@ -50,6 +51,9 @@ struct MeshInstanceShape {
     // triangle.
     static glm::vec2 mesh_uv(const Geometry& m, const std::vector<Mesh>& meshes, std::uint32_t primitive,
                              const glm::vec3& p);
+    // d(point)/du, d(point)/dv on triangle `primitive` from its corners' positions and vt (one
+    // pair per triangle, as the uv is linear on it); zero when its uv triangle is degenerate.
+    static UvTangents mesh_uv_tangents(const Geometry& m, const std::vector<Mesh>& meshes, std::uint32_t primitive);
 };
 
 }  // namespace sweeptrace

@@ -34,6 +34,7 @@ struct QuadShape {
         const float nn = glm::dot(n, n);
         return {glm::dot(glm::cross(d, g.edge_v), n) / nn, glm::dot(glm::cross(g.edge_u, d), n) / nn};
     }
+    static UvTangents uv_tangents(const Geometry& g, const glm::vec3&) { return {g.edge_u, g.edge_v}; }
     // Flat: a point of its plane and its front (emitting) normal, in object space, unnormalised.
     static FlatFront front(const Geometry& g) { return {g.corner, glm::cross(g.edge_u, g.edge_v)}; }
 };

@@ -13,6 +13,8 @@
 //                   bound and normal, in the space the strategy names
 //   uv(g, object_point)  its documented texture parameterisation, computed only for hits whose
 //                   material reads a texture (a mesh instance: mesh_uv, from the triangle's vt)
+//   uv_tangents(g, object_point)  with uv: d(point)/du and d(point)/dv there, for normal maps
+//                   (a mesh instance: mesh_uv_tangents, per triangle)
 //   front(g)        flat shapes only: a point and the front normal (the emitter-facing warning)
 // Also the includes every home needs, so a home's header is its own code.
 #include <array>
@@ -25,6 +27,7 @@
 #include "collision/shapes.hpp"
 #include "raytracer/geometry/shapes/scene_keys.hpp"
 #include "raytracer/geometry/shapes/shape_light.hpp"
+#include "raytracer/geometry/shapes/uv_maps.hpp"
 #include "raytracer/geometry/transform.hpp"
 #include "raytracer/geometry/warps.hpp"
 

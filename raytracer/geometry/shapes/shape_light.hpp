@@ -61,6 +61,7 @@ struct SurfacePoint {
     glm::vec3 point{0.0f};
     glm::vec3 error{0.0f};
     glm::vec3 normal{0.0f};
+    std::uint32_t primitive = 0;  // MeshArea: the triangle (an emission texture reads its uv)
 };
 
 // The object-space strategies' starting point: the object's own transform.

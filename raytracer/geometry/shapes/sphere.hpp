@@ -42,6 +42,11 @@ struct SphereShape {
         const glm::vec3 d = glm::normalize(p - g.center);
         return {uv_maps::longitude(d.x, d.z), uv_maps::polar(d.y)};
     }
+    // d(point)/du, d(point)/dv of that map (u around +Y, v down the meridian; zero at the poles).
+    static UvTangents uv_tangents(const Geometry& g, const glm::vec3& p) {
+        const glm::vec3 d = p - g.center;
+        return {uv_maps::longitude_tangent(d), uv_maps::polar_tangent(d)};
+    }
 };
 
 // Inline: called once per light sample, through visit_shape.

@@ -34,6 +34,7 @@ struct TriangleShape {
         const float nn = glm::dot(n, n);
         return {glm::dot(glm::cross(d, (g.c - g.a)), n) / nn, glm::dot(glm::cross((g.b - g.a), d), n) / nn};
     }
+    static UvTangents uv_tangents(const Geometry& g, const glm::vec3&) { return {g.b - g.a, g.c - g.a}; }
     // Flat: a point of its plane and its front (emitting) normal, in object space, unnormalised.
     static FlatFront front(const Geometry& g) { return {g.a, glm::cross(g.b - g.a, g.c - g.a)}; }
 };

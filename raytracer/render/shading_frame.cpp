@@ -1,0 +1,40 @@
+#include "raytracer/render/shading_frame.hpp"
+
+#include <cmath>
+
+#include <glm/geometric.hpp>
+#include <glm/mat3x3.hpp>
+
+namespace sweeptrace {
+
+UvTangents hit_uv_tangents(const Scene& scene, const SurfaceHit& hit) {
+    const Object& obj = scene.objects[hit.object];
+    const glm::vec3 p(obj.transform.to_object * glm::vec4(hit.point, 1.0f));
+    const UvTangents local = visit_shape(obj.shape, [&](auto home, const auto& g) -> UvTangents {
+        using Home = decltype(home);
+        if constexpr (requires { Home::uv_tangents(g, p); }) return Home::uv_tangents(g, p);
+        else if constexpr (requires { Home::mesh_uv_tangents(g, scene.meshes, hit.primitive); })
+            return Home::mesh_uv_tangents(g, scene.meshes, hit.primitive);
+        else return UvTangents{};
+    });
+    if (obj.transform.identity) return local;
+    const glm::mat3 linear(obj.transform.to_world);
+    return {linear * local.dpdu, linear * local.dpdv};
+}
+
+glm::vec3 normal_from_map(const glm::vec3& ns, const glm::vec3& ng, const UvTangents& t, const glm::vec3& texel) {
+    glm::vec3 tangent = t.dpdu - ns * glm::dot(ns, t.dpdu);
+    const float tt = glm::dot(tangent, tangent);
+    if (!(tt > 0.0f) || !std::isfinite(tt)) return ns;
+    tangent /= std::sqrt(tt);
+    glm::vec3 bitangent = glm::cross(ns, tangent);
+    if (glm::dot(bitangent, t.dpdv) < 0.0f) bitangent = -bitangent;
+    const glm::vec3 m = 2.0f * texel - glm::vec3(1.0f);
+    const glm::vec3 n = m.x * tangent + m.y * bitangent + m.z * ns;
+    const float nn = glm::dot(n, n);
+    if (!(nn > 0.0f) || !std::isfinite(nn)) return ns;
+    const glm::vec3 mapped = n / std::sqrt(nn);
+    return glm::dot(mapped, ng) > 0.0f ? mapped : ns;
+}
+
+}  // namespace sweeptrace

@@ -1,0 +1,133 @@
+// OBJ materials (scene/load_mtl.hpp, scene/obj_materials.hpp): an OBJ's mtllib / usemtl mapped by
+// the README's table, a mesh object split into one object per material, a square of two
+// differently coloured triangles rendering each triangle's albedo x L at every pixel (both
+// accels), the scene's `material` overriding the .mtl (which is then not read), and the errors
+// naming the OBJ or .mtl file and line.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+
+#include "convergence_harness.hpp"
+#include "plane_truth.hpp"
+#include "raytracer/input_error.hpp"
+#include "raytracer/scene/load_scene.hpp"
+#include "scene_test_files.hpp"
+
+using namespace sweeptrace;
+using namespace sweeptrace::testing;
+
+namespace {
+
+const char* kSquareObj = "mtllib square.mtl\nv -1 -1 0\nv 1 -1 0\nv 1 1 0\nv -1 1 0\n"
+                         "vt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\n"
+                         "usemtl dark\nf 1/1 2/2 3/3\nusemtl light\nf 1/1 3/3 4/4\n";
+
+std::string scene_with(const std::string& object) {
+    return R"({ "camera": { "position": [0, 0, 3], "look_at": [0, 0, 0], "fov": 50 }, "film": { "width": 32, "height": 32 },
+        "background": { "color": [1, 0.8, 0.6] }, "materials": { "grey": { "type": "diffuse" } },
+        "objects": [ )" + object + R"( ] })";
+}
+
+const Material& named(const Scene& s, const std::string& name) {
+    for (const Material& m : s.materials)
+        if (m.name == name) return m;
+    FAIL("no material " << name);
+    return s.materials[0];
+}
+
+std::string load_error(const std::filesystem::path& file) {
+    try {
+        load_scene(file);
+    } catch (const InputError& e) {
+        return e.what();
+    }
+    return "(loaded)";
+}
+
+}  // namespace
+
+TEST_CASE("obj materials: the mtl table", "[scene][obj_materials]") {
+    test::TempDir dir;
+    dir.write("all.obj", "mtllib all.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nvt 0 0\nvt 1 0\nvt 0 1\nvt 1 1\n"
+                         "f 1/1 2/2 3/3\nusemtl clay\nf 2/2 4/4 3/3\nusemtl steel\nf 1/1 2/2 3/3\nusemtl glass\nf 1/1 2/2 3/3\n"
+                         "usemtl lamp\nf 1/1 2/2 3/3\nusemtl wood\nf 1/1 2/2 3/3\n");
+    write_image(Image(2, 2), dir.path() / "wood.png");
+    dir.write("all.mtl", "# a comment\nnewmtl clay\nKa 0.1 0.1 0.1\nKd 0.5 0.4 0.3\nKs 0.2 0.2 0.2\nNs 10\nillum 2\n"
+                         "newmtl steel\nKd 0 0 0\nKs 0.9 0.8 0.7\nNs 98\nillum 3\n"
+                         "newmtl glass\nKd 0.1 0.1 0.1\nNi 1.33\nd 0.2\nillum 4\n"
+                         "newmtl lamp\nKd 0 0 0\nKe 5 4 3\n"
+                         "newmtl wood\nKd 1 1 1\nmap_Kd -bm 1.0 wood.png\nnorm wood.png\n");
+    const Scene s = load_scene(dir.write("s.json", scene_with(R"({ "type": "mesh", "file": "all.obj", "name": "m" })")));
+    REQUIRE(s.objects.size() == 6);  // the faces before any usemtl, and one per material
+    const Material& clay = named(s, "all.mtl/clay");
+    CHECK(clay.type == Material::Type::Diffuse);
+    CHECK(clay.albedo == glm::vec3(0.5f, 0.4f, 0.3f));
+    const Material& steel = named(s, "all.mtl/steel");
+    CHECK(steel.type == Material::Type::Metal);
+    CHECK(steel.albedo == glm::vec3(0.9f, 0.8f, 0.7f));
+    CHECK(steel.roughness == Approx(std::pow(2.0 / 100.0, 0.25)));  // alpha = sqrt(2 / (Ns + 2)) = roughness^2
+    const Material& glass = named(s, "all.mtl/glass");
+    CHECK(glass.type == Material::Type::Dielectric);
+    CHECK(glass.ior == 1.33f);
+    CHECK(named(s, "all.mtl/lamp").emission == glm::vec3(5.0f, 4.0f, 3.0f));
+    const Material& wood = named(s, "all.mtl/wood");
+    REQUIRE(wood.albedo_texture >= 0);
+    REQUIRE(wood.normal_texture >= 0);
+    CHECK_FALSE(s.textures[wood.albedo_texture].linear_data);
+    CHECK(s.textures[wood.normal_texture].linear_data);
+    CHECK(named(s, "all.obj (faces before any usemtl)").albedo == glm::vec3(0.8f));
+    // Each part holds its own triangles: 1 + 1 + 1 + 1 + 1 + 1 of the six faces.
+    std::size_t triangles = 0;
+    for (const Object& o : s.objects) triangles += s.meshes[std::get<MeshInstance>(o.shape).mesh].triangles.indices.size();
+    CHECK(triangles == 6);
+
+    // The scene's material overrides: one object, and the .mtl is not even read.
+    std::filesystem::remove(dir.path() / "all.mtl");
+    const Scene o = load_scene(dir.write("o.json", scene_with(R"({ "type": "mesh", "file": "all.obj", "material": "grey" })")));
+    CHECK(o.objects.size() == 1);
+}
+
+TEST_CASE("obj materials: a square of two materials renders each triangle's albedo x L", "[render][obj_materials]") {
+    test::TempDir dir;
+    dir.write("square.obj", kSquareObj);
+    dir.write("square.mtl", "newmtl dark\nKd 0.2 0.3 0.4\nnewmtl light\nKd 0.9 0.7 0.5\n");
+    Scene scene = load_scene(dir.write("s.json", scene_with(R"({ "type": "mesh", "file": "square.obj", "materials": "from_obj" })")));
+    REQUIRE(scene.objects.size() == 2);
+    const glm::vec3 L(1.0f, 0.8f, 0.6f), dark(0.2f, 0.3f, 0.4f), light(0.9f, 0.7f, 0.5f);
+    const PlaneTruth truth = plane_truth(
+        32, 8,
+        [](double wx, double wy) {
+            const bool on = std::abs(wx) < 1 && std::abs(wy) < 1;
+            return on ? (wy < wx ? 0 : 1) : 2;  // face 1 (dark) is below the diagonal
+        },
+        [&](int cell) { return cell == 2 ? L : (cell == 0 ? dark : light) * L; });
+    check_plane_render(scene, truth);
+}
+
+TEST_CASE("obj materials: errors name the OBJ or .mtl file and line", "[scene][obj_materials]") {
+    test::TempDir dir;
+    dir.write("square.obj", kSquareObj);
+    const auto scene = dir.write("s.json", scene_with(R"({ "type": "mesh", "file": "square.obj" })"));
+    CHECK_THAT(load_error(scene), Catch::Contains("objects[0].file: ") &&
+                                      Catch::Contains("square.obj: line 1: mtllib \"square.mtl\" not found"));
+    dir.write("square.mtl", "newmtl dark\nKd 0.2 0.3 0.4\nnewmtl light\nKd 0.9 x 0.5\n");
+    CHECK_THAT(load_error(scene), Catch::Contains("square.mtl: line 4: Kd 'x' is not a decimal number"));
+    dir.write("square.mtl", "newmtl dark\nKd 0.2 0.3 0.4\nnewmtl light\nKd 0.9 0.7 1.5\n");
+    CHECK_THAT(load_error(scene), Catch::Contains("square.mtl: line 4: Kd 1.5 is out of range"));
+    dir.write("square.mtl", "newmtl dark\nKd 0.2 0.3 0.4\n");
+    CHECK_THAT(load_error(scene), Catch::Contains("square.obj: line 12: usemtl \"light\": no such material"));
+    dir.write("square.mtl", "newmtl dark\nnewmtl light\n\nmap_Kd -s 1 1 1 nothere.png\n");
+    CHECK_THAT(load_error(scene), Catch::Contains("square.mtl: line 4: map_Kd: texture image \"nothere.png\" not found"));
+    dir.write("novt.obj", "mtllib square.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl light\nf 1 2 3\n");
+    CHECK_THAT(load_error(dir.write("n.json", scene_with(R"({ "type": "mesh", "file": "novt.obj" })"))),
+               Catch::Contains("square.mtl: line 4: map_Kd: a texture needs texture coordinates"));
+    dir.write("plain.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+    CHECK_THAT(load_error(dir.write("p.json", scene_with(R"({ "type": "mesh", "file": "plain.obj" })"))),
+               Catch::Contains("plain.obj: names no material library (no mtllib line): give the object a \"material\""));
+    CHECK_THAT(load_error(dir.write("b.json", scene_with(R"({ "type": "mesh", "file": "plain.obj", "material": "grey", "materials": "from_obj" })"))),
+               Catch::Contains("objects[0]: give either \"material\""));
+    CHECK_THAT(load_error(dir.write("v.json", scene_with(R"({ "type": "mesh", "file": "plain.obj", "materials": "mine" })"))),
+               Catch::Contains("objects[0].materials: the only value is \"from_obj\""));
+    CHECK_THAT(load_error(dir.write("q.json", scene_with(R"({ "type": "sphere", "radius": 1, "materials": "from_obj" })"))),
+               Catch::Contains("objects[0].materials: unknown key"));
+}
