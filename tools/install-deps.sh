@@ -3,7 +3,7 @@
 # so on a prepared machine it costs a second. Needs root (as CI and fresh machines run).
 set -euo pipefail
 packages=(build-essential cmake libglm-dev libembree-dev libstb-dev catch2 nlohmann-json3-dev
-          libtinyobjloader-dev libcli11-dev libtbb-dev libopenexr-dev python3 python3-matplotlib
+          libtinyobjloader-dev libcli11-dev libtbb-dev libopenexr-dev libjpeg-dev python3 python3-matplotlib
           chromium       # the diff HTML report test renders the page headless
           slurm-wlm munge  # the farm test's single-node Slurm (tools/slurm/)
           clang libclang-rt-14-dev)  # clang + its runtime: the libFuzzer harnesses (tests/fuzz)

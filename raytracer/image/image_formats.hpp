@@ -22,6 +22,9 @@ Image read_exr(const std::filesystem::path& path);
 // Radiance .hdr (RGBE), read only: linear float.
 Image read_hdr(const std::filesystem::path& path);
 
+// JPEG (.jpg, .jpeg), read only: 8-bit sRGB decoded to linear, like a PNG.
+Image read_jpeg(const std::filesystem::path& path);
+
 }  // namespace sweeptrace::formats
 
 namespace sweeptrace::formats {

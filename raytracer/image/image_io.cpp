@@ -15,7 +15,7 @@
 namespace sweeptrace {
 namespace {
 
-enum class Format { Png, Pfm, Exr, Hdr };
+enum class Format { Png, Pfm, Exr, Hdr, Jpeg };
 
 Format format_of(const std::filesystem::path& path, const char* verb) {
     std::string ext = path.extension().string();
@@ -23,9 +23,11 @@ Format format_of(const std::filesystem::path& path, const char* verb) {
     if (ext == ".png") return Format::Png;
     if (ext == ".pfm") return Format::Pfm;
     if (ext == ".exr") return Format::Exr;
-    if (ext == ".hdr" && std::string(verb) == "read") return Format::Hdr;
+    const bool read = std::string(verb) == "read";
+    if (ext == ".hdr" && read) return Format::Hdr;
+    if ((ext == ".jpg" || ext == ".jpeg") && read) return Format::Jpeg;
     throw InputError(std::string("cannot ") + verb + " '" + path.string() + "': unknown image extension '" + ext +
-                     "' (use .png, .pfm or .exr)");
+                     (read ? "' (use .png, .jpg, .pfm, .exr or .hdr)" : "' (use .png, .pfm or .exr)"));
 }
 
 }  // namespace
@@ -41,7 +43,8 @@ void write_image(const Image& image, const std::filesystem::path& path) {
             case Format::Png: formats::write_png(image, temp); break;
             case Format::Pfm: formats::write_pfm(image, temp); break;
             case Format::Exr: formats::write_exr(image, temp); break;
-            case Format::Hdr: break;  // format_of refuses to write .hdr
+            case Format::Hdr:
+            case Format::Jpeg: break;  // format_of refuses to write these
         }
     });
 }
@@ -52,6 +55,7 @@ Image read_image(const std::filesystem::path& path) {
         case Format::Pfm: return formats::read_pfm(path);
         case Format::Exr: return formats::read_exr(path);
         case Format::Hdr: return formats::read_hdr(path);
+        case Format::Jpeg: return formats::read_jpeg(path);
     }
     throw InputError("cannot read '" + path.string() + "'");
 }

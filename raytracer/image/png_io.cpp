@@ -1,9 +1,10 @@
 // PNG through stb: 8-bit sRGB on write, 8- or 16-bit (any channel count) on read.
-// The only file that compiles stb's implementations (PNG and, for hdr_io.cpp, Radiance HDR).
+// The only file that compiles stb's implementations, PNG only: .hdr is decoded by hdr_io.cpp,
+// JPEG by libjpeg-turbo (jpeg_io.cpp). stb_image_write's JPEG encoder is what the tests use to
+// make JPEG files.
 #define STB_IMAGE_WRITE_IMPLEMENTATION
 #define STB_IMAGE_IMPLEMENTATION
 #define STBI_ONLY_PNG
-#define STBI_ONLY_HDR  // for hdr_io.cpp
 #include <stb/stb_image.h>
 #include <stb/stb_image_write.h>
 

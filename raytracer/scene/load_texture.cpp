@@ -30,10 +30,10 @@ glm::vec3 read_checker_value(const scene_json::Node& node, TextureUse use) {
     return read_colour01(node);
 }
 
-bool is_png(const std::filesystem::path& file) {
+bool is_8bit_srgb(const std::filesystem::path& file) {
     std::string ext = file.extension().string();
     std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
-    return ext == ".png";
+    return ext == ".png" || ext == ".jpg" || ext == ".jpeg";  // the 8-bit sRGB formats
 }
 
 // A .png's image the other way round: the reader decodes sRGB, so a data map re-encodes (and
@@ -91,7 +91,7 @@ Texture image_texture(const std::string& relative, const std::filesystem::path& 
     t.linear_data = is_data(use);
     std::error_code ec;
     t.image_file = std::filesystem::weakly_canonical(path, ec);
-    const bool png = is_png(t.image_file);
+    const bool png = is_8bit_srgb(t.image_file);  // .png or .jpg
     // The same reading if one is loaded; else the other reading of a .png, converted.
     const Texture* other_reading = nullptr;
     for (const Texture& other : loaded) {

@@ -5,6 +5,8 @@
 #include <cstdint>
 #include <random>
 
+#include <stb/stb_image_write.h>  // to make JPEG files; the library's implementation is in png_io.cpp
+
 #include "image_test_support.hpp"
 #include "raytracer/image/image.hpp"
 #include "raytracer/image/srgb.hpp"
@@ -115,6 +117,49 @@ TEST_CASE("EXR round trip is exact in 32-bit float", "[image][exr]") {
     Image image = random_image(5, 8, 0.0f, 50.0f, 3);
     write_image(image, dir / "a.exr");
     CHECK(bitwise_equal(read_image(dir / "a.exr"), image));
+}
+
+TEST_CASE("JPEG reader: 8-bit sRGB decoded to linear, a wrong signature and a cut file refused", "[image][jpeg]") {
+    // Flat 8x8 blocks survive JPEG at quality 100 up to the colour conversion's rounding, so
+    // every pixel is within a few codes of what was written; the size must be exact.
+    ScratchDir dir("jpeg");
+    constexpr int w = 16, h = 8;
+    const unsigned char codes[2][3] = {{200, 40, 90}, {10, 250, 128}};
+    std::vector<unsigned char> rgb(w * h * 3);
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x)
+            for (int c = 0; c < 3; ++c) rgb[(y * w + x) * 3 + c] = codes[x / 8][c];
+    const std::string file = (dir / "two.jpg").string();
+    REQUIRE(stbi_write_jpg(file.c_str(), w, h, 3, rgb.data(), 100) != 0);
+    const Image image = read_image(file);
+    REQUIRE(image.width == w);
+    REQUIRE(image.height == h);
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x)
+            for (int c = 0; c < 3; ++c) {
+                INFO("pixel " << x << "," << y << " channel " << c);
+                CHECK(std::abs(srgb_encode(image.at(x, y)[c]) * 255.0f - codes[x / 8][c]) <= 3.0f);
+            }
+    // The same upper case; a PNG named .jpeg is refused, not decoded as PNG; a cut file fails.
+    std::filesystem::copy_file(file, dir / "upper.JPG");
+    CHECK(read_image(dir / "upper.JPG").width == w);
+    write_image(image, dir / "png.png");
+    std::filesystem::copy_file(dir / "png.png", dir / "png.jpeg");
+    using Catch::Matchers::Contains;
+    auto message_of = [](const std::filesystem::path& p) {
+        try {
+            read_image(p);
+        } catch (const InputError& e) {
+            return std::string(e.what());
+        }
+        return std::string("no error");
+    };
+    CHECK_THAT(message_of(dir / "png.jpeg"), Contains("png.jpeg") && Contains("no JPEG start-of-image marker"));
+    const auto bytes = testing::read_file_text(file);
+    testing::write_file_text(dir / "cut.jpg", bytes.substr(0, bytes.size() / 3));
+    CHECK_THAT(message_of(dir / "cut.jpg"), Contains("cut.jpg") && Contains("not a valid JPEG"));
+    // Outputs are never JPEG.
+    CHECK_THROWS_AS(write_image(image, dir / "out.jpg"), InputError);
 }
 
 TEST_CASE("read errors name the file and what is wrong", "[image][errors]") {
