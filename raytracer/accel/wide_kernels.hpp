@@ -50,6 +50,15 @@ extern const WideKernels kAvx2Kernels;  // call only when cpu_has_avx2()
 
 inline const WideKernels& wide_kernels(SimdPath path) { return path == SimdPath::Avx2 ? kAvx2Kernels : kScalarKernels; }
 
+// A mesh leaf holds at most this many triangles: the AVX2 kernel tests a whole leaf in one step.
+inline constexpr std::uint32_t kMaxLeafTriangles = 8;
+
+// Per lane of a leaf, what a kernel's triangle test leaves for the traversal to finish a hit
+// with: t, the range test's ts and |det|, 1 / det and the three edge functions.
+struct alignas(32) LeafCandidates {
+    float t[8], ts[8], abs_det[8], inv_det[8], e0[8], e1[8], e2[8];
+};
+
 // Floats of padding after the last leaf: the widest load (8) may start at the last float.
 inline constexpr int kWideTrianglePadding = 8;
 

@@ -1,6 +1,6 @@
-// The wide BVH's kernels for AVX2: one 8-lane slab test per node, and the watertight test's
-// shear and edge functions for up to 8 triangles of a leaf per step (wide_traversal.hpp says
-// why that pre-filter keeps the scalar test's results). Reached only when the CPU reports
+// The wide BVH's kernels for AVX2: one 8-lane slab test per node, and the watertight test on
+// the up to 8 triangles of a leaf at once (wide_traversal.hpp says why its hits are the scalar
+// test's, bit for bit). Reached only when the CPU reports
 // AVX2 (simd_path.hpp). Every header is included before the target pragma, so only the
 // functions of this file and wide_traversal.hpp's (internal linkage) are compiled for AVX2;
 // "fma" is deliberately not enabled: no multiply-add may change a rounding.
@@ -8,6 +8,7 @@
 
 #include <bit>
 #include <cstdint>
+#include <limits>
 
 #include "collision/triangle_watertight.hpp"
 #include "raytracer/accel/bvh_traversal.hpp"
@@ -59,41 +60,93 @@ struct Avx2Kernel {
     };
 
     struct Triangles {
-        __m256 ox, oy, oz, sx, sy;  // origin components along the test's kx, ky, kz; the shear
+        static constexpr bool tests_lanes = true;  // test() finishes lanes itself (LeafCandidates)
+        __m256 ox, oy, oz, sx, sy, sz;  // origin components along the test's kx, ky, kz; the shear
         int kx, ky, kz;
 
         Triangles(const collision::Ray& ray, const collision::TriangleRay& tr)
             : ox(_mm256_set1_ps(ray.origin[tr.kx])), oy(_mm256_set1_ps(ray.origin[tr.ky])),
-              oz(_mm256_set1_ps(ray.origin[tr.kz])), sx(_mm256_set1_ps(tr.sx)), sy(_mm256_set1_ps(tr.sy)), kx(tr.kx),
-              ky(tr.ky), kz(tr.kz) {}
+              oz(_mm256_set1_ps(ray.origin[tr.kz])), sx(_mm256_set1_ps(tr.sx)), sy(_mm256_set1_ps(tr.sy)),
+              sz(_mm256_set1_ps(tr.sz)), kx(tr.kx), ky(tr.ky), kz(tr.kz) {}
 
-        // collision::shear_vertex of 8 vertices: rel = p - o, x = rel_kx + sx rel_kz, y = rel_ky + sy rel_kz.
-        void shear(const float* v, std::uint32_t count, __m256& x, __m256& y) const {
-            const __m256 rz = _mm256_sub_ps(_mm256_loadu_ps(v + kz * count), oz);
-            x = _mm256_add_ps(_mm256_sub_ps(_mm256_loadu_ps(v + kx * count), ox), _mm256_mul_ps(sx, rz));
-            y = _mm256_add_ps(_mm256_sub_ps(_mm256_loadu_ps(v + ky * count), oy), _mm256_mul_ps(sy, rz));
+        // collision::shear_vertex of 8 vertices: rel = p - o, x = rel_kx + sx rel_kz, y = rel_ky + sy rel_kz, z = rel_kz.
+        void shear(const float* v, std::uint32_t count, __m256& x, __m256& y, __m256& z) const {
+            z = _mm256_sub_ps(_mm256_loadu_ps(v + kz * count), oz);
+            x = _mm256_add_ps(_mm256_sub_ps(_mm256_loadu_ps(v + kx * count), ox), _mm256_mul_ps(sx, z));
+            y = _mm256_add_ps(_mm256_sub_ps(_mm256_loadu_ps(v + ky * count), oy), _mm256_mul_ps(sy, z));
         }
 
-        // Lanes of the leaf not certainly missed (edge functions of both strict signs).
-        unsigned candidates(const float* block, std::uint32_t count) const {
-            unsigned keep = 0;
+        static __m256 abs(__m256 v) { return _mm256_andnot_ps(_mm256_set1_ps(-0.0f), v); }
+        static __m256 max3(__m256 a, __m256 b, __m256 c) { return _mm256_max_ps(_mm256_max_ps(a, b), c); }
+        static __m256 mul(__m256 a, __m256 b) { return _mm256_mul_ps(a, b); }
+        static __m256 add(__m256 a, __m256 b) { return _mm256_add_ps(a, b); }
+        static unsigned bits(__m256 m) { return static_cast<unsigned>(_mm256_movemask_ps(m)); }
+
+        // intersect_triangle_candidate on the leaf's (<= 8) triangles at once, every float
+        // operation the scalar test's in its order (wide_traversal.hpp). Lanes with an edge
+        // function of 0 go to `exact`, for the scalar test itself (it re-decides them in double);
+        // the returned lanes passed every check against (tmin, tmax), their values in `out`.
+        unsigned test(const float* block, std::uint32_t count, float tmin, float tmax, LeafCandidates& out,
+                      unsigned& exact) const {
+            const unsigned lanes = (1u << count) - 1u;
             const __m256 zero = _mm256_setzero_ps();
-            for (std::uint32_t j = 0; j < count; j += 8) {
-                __m256 xa, ya, xb, yb, xc, yc;
-                shear(block + j, count, xa, ya);
-                shear(block + 3 * count + j, count, xb, yb);
-                shear(block + 6 * count + j, count, xc, yc);
-                const __m256 e0 = _mm256_sub_ps(_mm256_mul_ps(xb, yc), _mm256_mul_ps(yb, xc));
-                const __m256 e1 = _mm256_sub_ps(_mm256_mul_ps(xc, ya), _mm256_mul_ps(yc, xa));
-                const __m256 e2 = _mm256_sub_ps(_mm256_mul_ps(xa, yb), _mm256_mul_ps(ya, xb));
-                const __m256 neg = _mm256_or_ps(_mm256_or_ps(_mm256_cmp_ps(e0, zero, _CMP_LT_OQ), _mm256_cmp_ps(e1, zero, _CMP_LT_OQ)),
-                                                _mm256_cmp_ps(e2, zero, _CMP_LT_OQ));
-                const __m256 pos = _mm256_or_ps(_mm256_or_ps(_mm256_cmp_ps(e0, zero, _CMP_GT_OQ), _mm256_cmp_ps(e1, zero, _CMP_GT_OQ)),
-                                                _mm256_cmp_ps(e2, zero, _CMP_GT_OQ));
-                const auto mixed = static_cast<unsigned>(_mm256_movemask_ps(_mm256_and_ps(neg, pos)));
-                keep |= (~mixed & 0xFFu) << j;
+            __m256 xa, ya, za, xb, yb, zb, xc, yc, zc;
+            shear(block, count, xa, ya, za);
+            shear(block + 3 * count, count, xb, yb, zb);
+            shear(block + 6 * count, count, xc, yc, zc);
+            const __m256 e0 = _mm256_sub_ps(mul(xb, yc), mul(yb, xc));
+            const __m256 e1 = _mm256_sub_ps(mul(xc, ya), mul(yc, xa));
+            const __m256 e2 = _mm256_sub_ps(mul(xa, yb), mul(ya, xb));
+            const __m256 neg = _mm256_or_ps(_mm256_or_ps(_mm256_cmp_ps(e0, zero, _CMP_LT_OQ), _mm256_cmp_ps(e1, zero, _CMP_LT_OQ)),
+                                            _mm256_cmp_ps(e2, zero, _CMP_LT_OQ));
+            const __m256 pos = _mm256_or_ps(_mm256_or_ps(_mm256_cmp_ps(e0, zero, _CMP_GT_OQ), _mm256_cmp_ps(e1, zero, _CMP_GT_OQ)),
+                                            _mm256_cmp_ps(e2, zero, _CMP_GT_OQ));
+            const unsigned zeros = bits(_mm256_or_ps(_mm256_or_ps(_mm256_cmp_ps(e0, zero, _CMP_EQ_OQ), _mm256_cmp_ps(e1, zero, _CMP_EQ_OQ)),
+                                                     _mm256_cmp_ps(e2, zero, _CMP_EQ_OQ))) & lanes;
+            exact = zeros;
+            const unsigned inside = ~bits(_mm256_and_ps(neg, pos)) & lanes & ~zeros;
+            if (inside == 0) return 0;  // the common leaf: the ray passes beside every triangle
+            const __m256 det = add(add(e0, e1), e2);
+            const __m256 abs_det = abs(det);
+            __m256 ok = _mm256_and_ps(_mm256_cmp_ps(det, zero, _CMP_NEQ_OQ),
+                                      _mm256_cmp_ps(abs_det, _mm256_set1_ps(std::numeric_limits<float>::infinity()), _CMP_LT_OQ));
+            const __m256 az = mul(sz, za), bz = mul(sz, zb), cz = mul(sz, zc);
+            const __m256 t_scaled = add(add(mul(e0, az), mul(e1, bz)), mul(e2, cz));
+            const __m256 ts = _mm256_blendv_ps(t_scaled, _mm256_xor_ps(t_scaled, _mm256_set1_ps(-0.0f)),
+                                               _mm256_cmp_ps(det, zero, _CMP_LT_OQ));
+            const __m256 vtmin = _mm256_set1_ps(tmin), vtmax = _mm256_set1_ps(tmax);
+            ok = _mm256_and_ps(ok, _mm256_cmp_ps(ts, mul(vtmin, abs_det), _CMP_GT_OQ));
+            ok = _mm256_and_ps(ok, _mm256_cmp_ps(ts, mul(vtmax, abs_det), _CMP_LT_OQ));
+            const __m256 inv_det = _mm256_div_ps(_mm256_set1_ps(1.0f), det);
+            const __m256 t = mul(t_scaled, inv_det);
+            ok = _mm256_and_ps(ok, _mm256_and_ps(_mm256_cmp_ps(t, vtmin, _CMP_GT_OQ), _mm256_cmp_ps(t, vtmax, _CMP_LT_OQ)));
+            if (tmin >= 0.0f) {
+                const __m256 max_zt = max3(abs(az), abs(bz), abs(cz));
+                const __m256 max_z = max3(abs(za), abs(zb), abs(zc));
+                const __m256 max_xt = max3(abs(xa), abs(xb), abs(xc));
+                const __m256 max_yt = max3(abs(ya), abs(yb), abs(yc));
+                const __m256 delta_z = mul(_mm256_set1_ps(collision::gamma(3)), max_zt);
+                const __m256 delta_x = mul(_mm256_set1_ps(collision::gamma(5)), add(max_xt, max_z));
+                const __m256 delta_y = mul(_mm256_set1_ps(collision::gamma(5)), add(max_yt, max_z));
+                const __m256 delta_e = mul(_mm256_set1_ps(2.0f), add(add(mul(mul(_mm256_set1_ps(collision::gamma(2)), max_xt), max_yt),
+                                                                         mul(delta_y, max_xt)),
+                                                                     mul(delta_x, max_yt)));
+                const __m256 max_e = max3(abs(e0), abs(e1), abs(e2));
+                const __m256 sum = add(add(mul(mul(_mm256_set1_ps(collision::gamma(3)), max_e), max_zt), mul(delta_e, max_zt)),
+                                       mul(delta_z, max_e));
+                const __m256 delta_t = mul(mul(_mm256_set1_ps(3.0f), sum), abs(inv_det));
+                ok = _mm256_and_ps(ok, _mm256_cmp_ps(t, delta_t, _CMP_GT_OQ));
             }
-            return keep & ((1u << count) - 1u);
+            const unsigned hits = bits(ok) & inside;
+            if (hits == 0) return 0;
+            _mm256_store_ps(out.t, t);
+            _mm256_store_ps(out.ts, ts);
+            _mm256_store_ps(out.abs_det, abs_det);
+            _mm256_store_ps(out.inv_det, inv_det);
+            _mm256_store_ps(out.e0, e0);
+            _mm256_store_ps(out.e1, e1);
+            _mm256_store_ps(out.e2, e2);
+            return hits;
         }
     };
 };

@@ -28,7 +28,8 @@ public:
     }
     bool occluded(const collision::Ray& ray) const { return kernels_->mesh_occluded(view(), ray); }
 
-    // Box of every vertex used by a triangle, in object space (empty for an empty mesh).
+    // Box of every vertex of a triangle that can be hit (not of zero area), in object space;
+    // empty when there is none.
     const collision::Bounds3& bounds() const { return bounds_; }
     std::size_t memory_bytes() const;
     double sah_cost() const { return sweeptrace::sah_cost(tree_); }

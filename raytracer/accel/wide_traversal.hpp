@@ -12,15 +12,18 @@
 // box entered beyond the current tmax; occluded() is any-hit: no sorting, stops at the first.
 //
 // Triangle test: the watertight test of collision/triangle_watertight.hpp, unchanged, so its
-// stated error bound holds. A SIMD kernel only pre-filters: it computes the sheared vertices and
-// the three edge functions of every triangle of a leaf at once, with exactly the scalar test's
-// operations (no FMA: the build has -ffp-contract=off and the kernels use separate multiply and
-// add), and drops the triangles with one edge function < 0 and another > 0. A non-zero float
-// edge function has the exact sign, so the scalar test (which re-decides only zeros, in double)
-// rejects those too; the others go through the scalar test itself. Hits are therefore the
-// scalar path's, bit for bit. The mesh leaf loops are flattened (the scalar test inlined into
-// them: a few percent on small meshes); in the AVX2 unit that compiles the scalar test with
-// VEX encodings but still without FMA ("fma" is not in the target, -ffp-contract=off).
+// stated error bound holds. The AVX2 kernel runs it on the up to 8 triangles of a leaf at once
+// with exactly the scalar test's float operations in the scalar test's order (no FMA: the build
+// has -ffp-contract=off, "fma" is not in the target, and the kernel uses separate multiply and
+// add; max of the magnitudes, the sign flip and IEEE division give the same bits), so every
+// lane's values are the scalar test's. Three parts of the scalar test are not in the kernel:
+// a lane with an edge function of exactly 0 goes to the scalar test itself (which re-decides it
+// in double); the zero-area rejection is done once at build time (wide_mesh_bvh.cpp leaves such
+// triangles out, they can never be hit); and the lanes are finished in lane order, each
+// re-checked against the tmax lowered by the lanes before it, as the scalar loop sees them.
+// Hits are therefore the scalar path's, bit for bit (test_accel_wide_bvh.cpp checks it).
+// The mesh leaf loops are flattened (the scalar test inlined into them); in the AVX2 unit that
+// compiles the scalar test with VEX encodings but still without FMA.
 #include <bit>
 #include <cstdint>
 
@@ -141,6 +144,39 @@ inline glm::vec3 leaf_vertex(const float* block, std::uint32_t count, int vertex
             block[(3 * vertex + 2) * count + lane]};
 }
 
+// One leaf of a mesh for the nearest hit: the kernel's lanes that passed against the leaf's
+// entry tmax, and the lanes for the scalar test, in lane order as the scalar loop takes them; a
+// lane accepted earlier in the leaf lowers tmax, so the kernel's lanes are re-checked against
+// it (their only tests that depend on tmax).
+template <class K>
+inline bool mesh_leaf_nearest(const typename K::Triangles& filter, const collision::TriangleRay& tr, const float* block,
+                              std::uint32_t count, collision::Ray& clipped, collision::TriangleCandidate& best,
+                              std::uint32_t& best_lane) {
+    LeafCandidates c;
+    unsigned exact = 0;
+    const unsigned kernel_hits = filter.test(block, count, clipped.tmin, clipped.tmax, c, exact);
+    bool found = false;
+    for (unsigned m = kernel_hits | exact; m != 0; m &= m - 1) {
+        const auto lane = static_cast<std::uint32_t>(std::countr_zero(m));
+        if (!K::Triangles::tests_lanes || ((exact >> lane) & 1u)) {
+            if (!collision::intersect_triangle_candidate(clipped, tr, leaf_vertex(block, count, 0, lane),
+                                                         leaf_vertex(block, count, 1, lane),
+                                                         leaf_vertex(block, count, 2, lane), best))
+                continue;
+        } else {
+            if (!(c.ts[lane] < clipped.tmax * c.abs_det[lane]) || !(c.t[lane] < clipped.tmax)) continue;
+            best.t = c.t[lane];
+            best.b0 = c.e0[lane] * c.inv_det[lane];
+            best.b1 = c.e1[lane] * c.inv_det[lane];
+            best.b2 = c.e2[lane] * c.inv_det[lane];
+        }
+        clipped.tmax = best.t;
+        best_lane = lane;
+        found = true;
+    }
+    return found;
+}
+
 template <class K>
 bool mesh_intersect(const WideMeshView& mesh, const collision::Ray& ray, collision::RayHit& hit, std::uint32_t& triangle) {
     const collision::TriangleRay tr = collision::prepare_triangle_ray(ray);
@@ -150,19 +186,13 @@ bool mesh_intersect(const WideMeshView& mesh, const collision::Ray& ray, collisi
     collision::TriangleCandidate best;
     std::uint32_t best_ref = 0, best_lane = 0;
     bool found = false;
-    traverse_nearest<K>(*mesh.tree, WideRay(ray), ray.tmin, clipped.tmax, [&](std::uint32_t ref, float& tmax) __attribute__((flatten)) {
+    traverse_nearest<K>(*mesh.tree, WideRay(ray), ray.tmin, clipped.tmax, [&](std::uint32_t ref, float&) __attribute__((flatten)) {
         const std::uint32_t first = wide_ref::first(ref), count = wide_ref::count(ref);
         const float* block = mesh.triangles + 9 * static_cast<std::size_t>(first);
-        for (unsigned m = filter.candidates(block, count); m != 0; m &= m - 1) {
-            const auto lane = static_cast<std::uint32_t>(std::countr_zero(m));
-            if (collision::intersect_triangle_candidate(clipped, tr, leaf_vertex(block, count, 0, lane),
-                                                        leaf_vertex(block, count, 1, lane),
-                                                        leaf_vertex(block, count, 2, lane), best)) {
-                tmax = best.t;  // clips `clipped` too: the traversal holds its tmax
-                best_ref = ref;
-                best_lane = lane;
-                found = true;
-            }
+        // Lowers clipped.tmax, the traversal's tmax, with every accepted hit.
+        if (mesh_leaf_nearest<K>(filter, tr, block, count, clipped, best, best_lane)) {
+            best_ref = ref;
+            found = true;
         }
     });
     if (!found) return false;
@@ -182,8 +212,11 @@ bool mesh_occluded(const WideMeshView& mesh, const collision::Ray& ray) {
     return traverse_any<K>(*mesh.tree, WideRay(ray), ray.tmin, ray.tmax, [&](std::uint32_t ref) __attribute__((flatten)) {
         const std::uint32_t first = wide_ref::first(ref), count = wide_ref::count(ref);
         const float* block = mesh.triangles + 9 * static_cast<std::size_t>(first);
+        LeafCandidates unused;
+        unsigned exact = 0;
+        if (filter.test(block, count, ray.tmin, ray.tmax, unused, exact) != 0) return true;
         collision::TriangleCandidate c;
-        for (unsigned m = filter.candidates(block, count); m != 0; m &= m - 1) {
+        for (unsigned m = exact; m != 0; m &= m - 1) {
             const auto lane = static_cast<std::uint32_t>(std::countr_zero(m));
             if (collision::intersect_triangle_candidate(ray, tr, leaf_vertex(block, count, 0, lane),
                                                         leaf_vertex(block, count, 1, lane),
