@@ -63,16 +63,24 @@ struct TriangleRay {
     bool valid = false;  // false for zero, NaN or infinite direction / origin: every test misses
 };
 
+// Written without branches on the direction (selects only): for incoherent rays every branch
+// here would be a coin toss, and this runs once per ray and mesh. kz is the largest |d| axis
+// (the first of equal ones as ad.x > ad.y ? (ad.x > ad.z ? 0 : 2) : (ad.y > ad.z ? 1 : 2)
+// picks it), kx, ky the next two cyclically, swapped when d[kz] < 0.
 inline TriangleRay prepare_triangle_ray(const Ray& ray) {
     TriangleRay tr;
     const glm::vec3 ad = glm::abs(ray.dir);
-    tr.kz = ad.x > ad.y ? (ad.x > ad.z ? 0 : 2) : (ad.y > ad.z ? 1 : 2);
-    tr.kx = tr.kz == 2 ? 0 : tr.kz + 1;
-    tr.ky = tr.kx == 2 ? 0 : tr.kx + 1;
+    const int kz_if_x = ad.x > ad.z ? 0 : 2, kz_if_y = ad.y > ad.z ? 1 : 2;
+    tr.kz = ad.x > ad.y ? kz_if_x : kz_if_y;
+    const int next_kx = tr.kz == 2 ? 0 : tr.kz + 1;
+    const int next_ky = next_kx == 2 ? 0 : next_kx + 1;
     // Keep the winding: a negative major component mirrors the projection.
-    if (ray.dir[tr.kz] < 0.0f) std::swap(tr.kx, tr.ky);
     const float dz = ray.dir[tr.kz];
-    tr.valid = dz != 0.0f && finite(ad) && finite(ray.origin);
+    const bool mirror = dz < 0.0f;
+    tr.kx = mirror ? next_ky : next_kx;
+    tr.ky = mirror ? next_kx : next_ky;
+    tr.valid = (dz != 0.0f) & std::isfinite(ad.x) & std::isfinite(ad.y) & std::isfinite(ad.z) &
+               std::isfinite(ray.origin.x) & std::isfinite(ray.origin.y) & std::isfinite(ray.origin.z);
     if (!tr.valid) return tr;
     tr.sx = -ray.dir[tr.kx] / dz;
     tr.sy = -ray.dir[tr.ky] / dz;
