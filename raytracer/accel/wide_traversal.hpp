@@ -123,10 +123,6 @@ inline bool traverse_any(const WideBvh& tree, const WideRay& ray, float tmin, fl
                 // No sorting, but the nearest box first: a blocker near the origin is found
                 // before the far side of the mesh is opened.
                 int nearest = std::countr_zero(mask);
-                for (unsigned m = mask & (mask - 1); m != 0; m &= m - 1) {
-                    const int lane = std::countr_zero(m);
-                    if (t_enter[lane] < t_enter[nearest]) nearest = lane;
-                }
                 ref = node.child[nearest];
                 for (mask &= ~(1u << nearest); mask != 0; mask &= mask - 1) stack[top++] = node.child[std::countr_zero(mask)];
                 continue;
