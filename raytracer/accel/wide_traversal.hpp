@@ -66,8 +66,12 @@ struct StackEntry {
 
 // Nearest-first traversal; leaf(ref, tmax&) may lower tmax.
 template <class K, class Leaf>
-inline void traverse_nearest(const WideBvh& tree, const WideRay& ray, float tmin, float& tmax, Leaf&& leaf) {
-    const typename K::Boxes boxes(ray);
+inline void traverse_nearest(const WideBvh& tree, const collision::Ray& world, float tmin, float& tmax, Leaf&& leaf) {
+    if (wide_ref::is_leaf(tree.root)) {  // one leaf (a scene of one object): no box to test
+        leaf(tree.root, tmax);
+        return;
+    }
+    const typename K::Boxes boxes{WideRay(world)};
     StackEntry stack[WideBvh::stack_size];
     int top = 0;
     std::uint32_t ref = tree.root;
@@ -109,8 +113,9 @@ inline void traverse_nearest(const WideBvh& tree, const WideRay& ray, float tmin
 
 // Any-hit traversal: leaf(ref) returns true to stop.
 template <class K, class Leaf>
-inline bool traverse_any(const WideBvh& tree, const WideRay& ray, float tmin, float tmax, Leaf&& leaf) {
-    const typename K::Boxes boxes(ray);
+inline bool traverse_any(const WideBvh& tree, const collision::Ray& world, float tmin, float tmax, Leaf&& leaf) {
+    if (wide_ref::is_leaf(tree.root)) return leaf(tree.root);
+    const typename K::Boxes boxes{WideRay(world)};
     std::uint32_t stack[WideBvh::stack_size];
     int top = 0;
     std::uint32_t ref = tree.root;
@@ -182,7 +187,7 @@ bool mesh_intersect(const WideMeshView& mesh, const collision::Ray& ray, collisi
     collision::TriangleCandidate best;
     std::uint32_t best_ref = 0, best_lane = 0;
     bool found = false;
-    traverse_nearest<K>(*mesh.tree, WideRay(ray), ray.tmin, clipped.tmax, [&](std::uint32_t ref, float&) __attribute__((flatten)) {
+    traverse_nearest<K>(*mesh.tree, ray, ray.tmin, clipped.tmax, [&](std::uint32_t ref, float&) __attribute__((flatten)) {
         const std::uint32_t first = wide_ref::first(ref), count = wide_ref::count(ref);
         const float* block = mesh.triangles + 9 * static_cast<std::size_t>(first);
         // Lowers clipped.tmax, the traversal's tmax, with every accepted hit.
@@ -205,7 +210,7 @@ bool mesh_occluded(const WideMeshView& mesh, const collision::Ray& ray) {
     const collision::TriangleRay tr = collision::prepare_triangle_ray(ray);
     if (!tr.valid) return false;
     const typename K::Triangles filter(ray, tr);
-    return traverse_any<K>(*mesh.tree, WideRay(ray), ray.tmin, ray.tmax, [&](std::uint32_t ref) __attribute__((flatten)) {
+    return traverse_any<K>(*mesh.tree, ray, ray.tmin, ray.tmax, [&](std::uint32_t ref) __attribute__((flatten)) {
         const std::uint32_t first = wide_ref::first(ref), count = wide_ref::count(ref);
         const float* block = mesh.triangles + 9 * static_cast<std::size_t>(first);
         LeafCandidates unused;
@@ -265,7 +270,7 @@ template <class K>
 bool top_intersect(const TopLevelView& top, const collision::Ray& ray, SurfaceHit& hit) {
     float tmax = ray.tmax;
     bool found = false;
-    traverse_nearest<K>(*top.tree, WideRay(ray), ray.tmin, tmax, [&](std::uint32_t ref, float& t_limit) {
+    traverse_nearest<K>(*top.tree, ray, ray.tmin, tmax, [&](std::uint32_t ref, float& t_limit) {
         const std::uint32_t first = wide_ref::first(ref), end = first + wide_ref::count(ref);
         for (std::uint32_t i = first; i < end; ++i) {
             collision::Ray clipped = ray;
@@ -282,7 +287,7 @@ bool top_intersect(const TopLevelView& top, const collision::Ray& ray, SurfaceHi
 
 template <class K>
 bool top_occluded(const TopLevelView& top, const collision::Ray& ray) {
-    return traverse_any<K>(*top.tree, WideRay(ray), ray.tmin, ray.tmax, [&](std::uint32_t ref) {
+    return traverse_any<K>(*top.tree, ray, ray.tmin, ray.tmax, [&](std::uint32_t ref) {
         const std::uint32_t first = wide_ref::first(ref), end = first + wide_ref::count(ref);
         for (std::uint32_t i = first; i < end; ++i)
             if (object_occluded<K>(top, i, ray)) return true;
