@@ -27,6 +27,7 @@
 #include <bit>
 #include <cstdint>
 
+#include "collision/sphere_candidate.hpp"
 #include "collision/triangle_watertight.hpp"
 #include "raytracer/accel/bvh_traversal.hpp"
 #include "raytracer/accel/object_candidates.hpp"
@@ -229,21 +230,20 @@ bool mesh_occluded(const WideMeshView& mesh, const collision::Ray& ray) {
 }
 
 // A slot's sphere without a transform: what intersect_analytic does, from the slot's copy.
-inline bool intersect_slot_sphere(const collision::Sphere& sphere, std::uint32_t index, const collision::Ray& ray,
-                                  SurfaceHit& hit) {
+// `t` is the candidate's on this ray.
+inline void finish_slot_sphere(const collision::Sphere& sphere, std::uint32_t index, const collision::Ray& ray, float t,
+                               SurfaceHit& hit) {
     static const Transform identity;
     collision::RayHit h;
-    if (!collision::intersect(ray, sphere, h)) return false;
+    collision::finish_sphere_hit(ray, sphere, t, h);
     surface_hit_to_world(identity, h, 0.0f, hit);
     hit.object = index;
     hit.primitive = 0;
-    return true;
 }
 
 template <class K>
 bool object_intersect(const TopLevelView& top, std::uint32_t slot, const collision::Ray& ray, SurfaceHit& hit) {
     const std::uint32_t index = top.objects[slot];
-    if (top.spheres[slot].radius > 0.0f) return intersect_slot_sphere(top.spheres[slot], index, ray, hit);
     const Object& object = top.scene->objects[index];
     const auto* instance = std::get_if<MeshInstance>(&object.shape);
     if (!instance) return intersect_analytic_object(*top.scene, index, ray, hit);
@@ -257,31 +257,52 @@ bool object_intersect(const TopLevelView& top, std::uint32_t slot, const collisi
 
 template <class K>
 bool object_occluded(const TopLevelView& top, std::uint32_t slot, const collision::Ray& ray) {
+    float t;
+    if (top.spheres[slot].radius > 0.0f) return collision::intersect_sphere_candidate(ray, top.spheres[slot], t);
     const std::uint32_t index = top.objects[slot];
-    SurfaceHit unused;
-    if (top.spheres[slot].radius > 0.0f) return intersect_slot_sphere(top.spheres[slot], index, ray, unused);
     const Object& object = top.scene->objects[index];
     if (const auto* instance = std::get_if<MeshInstance>(&object.shape))
         return mesh_occluded<K>(top.meshes[instance->mesh], to_object_space(object.transform, ray).ray);
+    SurfaceHit unused;
     return intersect_analytic_object(*top.scene, index, ray, unused);
 }
 
+// The nearest hit over the objects. A slot's sphere is only decided (its t) when tested; the
+// nearest one is finished once at the end, on the ray it was decided on, which gives the hit
+// the full test would have written then (sphere_candidate.hpp). Any other object's hit is
+// written when found, and a later, nearer one overwrites either.
 template <class K>
 bool top_intersect(const TopLevelView& top, const collision::Ray& ray, SurfaceHit& hit) {
     float tmax = ray.tmax;
     bool found = false;
+    std::uint32_t sphere_slot = 0;
+    float sphere_t = 0.0f;
+    bool sphere_pending = false;
+    collision::Ray sphere_ray = ray;
     traverse_nearest<K>(*top.tree, ray, ray.tmin, tmax, [&](std::uint32_t ref, float& t_limit) {
         const std::uint32_t first = wide_ref::first(ref), end = first + wide_ref::count(ref);
         for (std::uint32_t i = first; i < end; ++i) {
             collision::Ray clipped = ray;
             clipped.tmax = t_limit;
-            if (object_intersect<K>(top, i, clipped, hit)) {
-                // A transformed object's t = s + t_shift rounds once more; keep tmax monotone.
-                t_limit = hit.t < t_limit ? hit.t : t_limit;
-                found = true;
+            float t;
+            if (top.spheres[i].radius > 0.0f) {
+                if (!collision::intersect_sphere_candidate(clipped, top.spheres[i], t)) continue;
+                sphere_ray = clipped;
+                sphere_slot = i;
+                sphere_t = t;
+                sphere_pending = true;
+                t += 0.0f;  // the identity's t_shift, as surface_hit_to_world adds it
+            } else {
+                if (!object_intersect<K>(top, i, clipped, hit)) continue;
+                sphere_pending = false;
+                t = hit.t;
             }
+            // A transformed object's t = s + t_shift rounds once more; keep tmax monotone.
+            t_limit = t < t_limit ? t : t_limit;
+            found = true;
         }
     });
+    if (sphere_pending) finish_slot_sphere(top.spheres[sphere_slot], top.objects[sphere_slot], sphere_ray, sphere_t, hit);
     return found;
 }
 
