@@ -230,6 +230,11 @@ bool mesh_occluded(const WideMeshView& mesh, const collision::Ray& ray) {
 }
 
 // A slot's sphere without a transform: what intersect_analytic does, from the slot's copy.
+// to_object_space, its identity case (the ray itself, t_shift 0) without the call.
+inline ObjectRay object_ray(const Transform& xf, const collision::Ray& ray) {
+    return xf.identity ? ObjectRay{ray, 0.0f} : to_object_space(xf, ray);
+}
+
 // `t` is the candidate's on this ray.
 inline void finish_slot_sphere(const collision::Sphere& sphere, std::uint32_t index, const collision::Ray& ray, float t,
                                SurfaceHit& hit) {
@@ -247,7 +252,7 @@ bool object_intersect(const TopLevelView& top, std::uint32_t slot, const collisi
     const Object& object = top.scene->objects[index];
     const auto* instance = std::get_if<MeshInstance>(&object.shape);
     if (!instance) return intersect_analytic_object(*top.scene, index, ray, hit);
-    const ObjectRay local = to_object_space(object.transform, ray);
+    const ObjectRay local = object_ray(object.transform, ray);
     collision::RayHit h;
     std::uint32_t triangle = 0;
     if (!mesh_intersect<K>(top.meshes[instance->mesh], local.ray, h, triangle)) return false;
@@ -262,7 +267,7 @@ bool object_occluded(const TopLevelView& top, std::uint32_t slot, const collisio
     const std::uint32_t index = top.objects[slot];
     const Object& object = top.scene->objects[index];
     if (const auto* instance = std::get_if<MeshInstance>(&object.shape))
-        return mesh_occluded<K>(top.meshes[instance->mesh], to_object_space(object.transform, ray).ray);
+        return mesh_occluded<K>(top.meshes[instance->mesh], object_ray(object.transform, ray).ray);
     SurfaceHit unused;
     return intersect_analytic_object(*top.scene, index, ray, unused);
 }
