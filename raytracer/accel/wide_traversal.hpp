@@ -9,7 +9,8 @@
 // 1 + 2 gamma(3), NaN never shrinks the interval), lane by lane the same float operations in
 // the same order whatever the kernel, so every kernel visits the same nodes in the same order.
 // Closest hit visits children nearest entry first (a stack sorted per node) and skips a popped
-// box entered beyond the current tmax; occluded() is any-hit: no sorting, stops at the first.
+// box entered beyond the current tmax; occluded() is any-hit: no sorting (the farthest box of a
+// node first), stops at the first.
 //
 // Triangle test: the watertight test of collision/triangle_watertight.hpp, unchanged, so its
 // stated error bound holds. The AVX2 kernel runs it on the up to 8 triangles of a leaf at once
@@ -126,11 +127,17 @@ inline bool traverse_any(const WideBvh& tree, const collision::Ray& world, float
             const WideNode& node = tree.nodes[ref];
             unsigned mask = boxes.test(node, tmin, tmax, t_enter);
             if (mask != 0) {
-                // No sorting, but the nearest box first: a blocker near the origin is found
-                // before the far side of the mesh is opened.
-                int nearest = std::countr_zero(mask);
-                ref = node.child[nearest];
-                for (mask &= ~(1u << nearest); mask != 0; mask &= mask - 1) stack[top++] = node.child[std::countr_zero(mask)];
+                // No sorting, but the farthest box first: a shadow ray starts on a surface, and
+                // the boxes it enters first hold that surface, which cannot block it. Measured on
+                // bench --meshes shadow rays (medians of 4 runs, native / embree occluded): slot
+                // order 0.88-1.08, farthest first 0.95-1.07 (ogre 0.88 -> 0.95, bunny 0.96 -> 1.00).
+                int far = std::countr_zero(mask);
+                for (unsigned m = mask & (mask - 1); m != 0; m &= m - 1) {
+                    const int lane = std::countr_zero(m);
+                    if (t_enter[lane] > t_enter[far]) far = lane;
+                }
+                ref = node.child[far];
+                for (mask &= ~(1u << far); mask != 0; mask &= mask - 1) stack[top++] = node.child[std::countr_zero(mask)];
                 continue;
             }
         } else if (leaf(ref)) {
