@@ -291,7 +291,7 @@ bool top_intersect(const TopLevelView& top, const collision::Ray& ray, SurfaceHi
     float sphere_t = 0.0f;
     bool sphere_pending = false;
     collision::Ray sphere_ray = ray;
-    traverse_nearest<K>(*top.tree, ray, ray.tmin, tmax, [&](std::uint32_t ref, float& t_limit) {
+    traverse_nearest<K>(*top.tree, ray, ray.tmin, tmax, [&](std::uint32_t ref, float& t_limit) __attribute__((always_inline)) {
         const std::uint32_t first = wide_ref::first(ref), end = first + wide_ref::count(ref);
         for (std::uint32_t i = first; i < end; ++i) {
             collision::Ray clipped = ray;
@@ -320,7 +320,7 @@ bool top_intersect(const TopLevelView& top, const collision::Ray& ray, SurfaceHi
 
 template <class K>
 bool top_occluded(const TopLevelView& top, const collision::Ray& ray) {
-    return traverse_any<K>(*top.tree, ray, ray.tmin, ray.tmax, [&](std::uint32_t ref) {
+    return traverse_any<K>(*top.tree, ray, ray.tmin, ray.tmax, [&](std::uint32_t ref) __attribute__((always_inline)) {
         const std::uint32_t first = wide_ref::first(ref), end = first + wide_ref::count(ref);
         for (std::uint32_t i = first; i < end; ++i)
             if (object_occluded<K>(top, i, ray)) return true;
