@@ -7,7 +7,7 @@
 namespace sweeptrace {
 namespace {
 
-// Leaves of up to 8 triangles: the AVX2 filter tests 8 at once, so a leaf of 8 costs one step,
+// Leaves of up to 8 triangles: the AVX2 kernel tests 8 at once, so a leaf of 8 costs one step,
 // and fewer, fuller leaves mean fewer nodes. Measured on the shared meshes (bench --meshes,
 // native / Embree intersect): leaves of 4 gave 0.79-0.92 at 66-80 bytes per triangle, leaves of
 // 8 0.85-1.0 at 53-60; leaves of 12 (two AVX2 steps) no better.

@@ -3,7 +3,8 @@
 // (object) space, built once and shared by every object that instances it. Built from the
 // binary binned-SAH tree, collapsed; leaves hold up to 8 triangles stored in leaf
 // order, vertex coordinates in SoA form (wide_kernels.hpp), so a leaf's data is contiguous
-// and one SIMD load reads one coordinate of all its triangles.
+// and one SIMD load reads one coordinate of all its triangles. Triangles of zero area, which the
+// watertight test never hits, are left out (wide_mesh_bvh.cpp).
 #include <cstdint>
 #include <vector>
 

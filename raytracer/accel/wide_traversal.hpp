@@ -1,7 +1,7 @@
 #pragma once
 // The wide BVH's traversals, written once over a kernel K that supplies the two SIMD-able
-// steps (K::Boxes: the slab test of a node's 8 child boxes; K::Triangles: which triangles of a
-// leaf may be hit). Only wide_kernels_scalar.cpp and wide_kernels_avx2.cpp include this, each
+// steps (K::Boxes: the slab test of a node's 8 child boxes; K::Triangles: the watertight test
+// on a leaf's triangles). Only wide_kernels_scalar.cpp and wide_kernels_avx2.cpp include this, each
 // with its own kernel, and everything here has internal linkage: the AVX2 unit compiles it for
 // AVX2, and no AVX2 copy of a function may be picked by the linker for the scalar path.
 //
@@ -158,12 +158,12 @@ inline glm::vec3 leaf_vertex(const float* block, std::uint32_t count, int vertex
 // lane accepted earlier in the leaf lowers tmax, so the kernel's lanes are re-checked against
 // it (their only tests that depend on tmax).
 template <class K>
-inline bool mesh_leaf_nearest(const typename K::Triangles& filter, const collision::TriangleRay& tr, const float* block,
+inline bool mesh_leaf_nearest(const typename K::Triangles& triangles, const collision::TriangleRay& tr, const float* block,
                               std::uint32_t count, collision::Ray& clipped, collision::TriangleCandidate& best,
                               std::uint32_t& best_lane) {
     LeafCandidates c;
     unsigned exact = 0;
-    const unsigned kernel_hits = filter.test(block, count, clipped.tmin, clipped.tmax, c, exact);
+    const unsigned kernel_hits = triangles.test(block, count, clipped.tmin, clipped.tmax, c, exact);
     bool found = false;
     for (unsigned m = kernel_hits | exact; m != 0; m &= m - 1) {
         const auto lane = static_cast<std::uint32_t>(std::countr_zero(m));
@@ -190,7 +190,7 @@ template <class K>
 bool mesh_intersect(const WideMeshView& mesh, const collision::Ray& ray, collision::RayHit& hit, std::uint32_t& triangle) {
     const collision::TriangleRay tr = collision::prepare_triangle_ray(ray);
     if (!tr.valid) return false;
-    const typename K::Triangles filter(ray, tr);
+    const typename K::Triangles triangles(ray, tr);
     collision::Ray clipped = ray;
     collision::TriangleCandidate best;
     std::uint32_t best_ref = 0, best_lane = 0;
@@ -199,7 +199,7 @@ bool mesh_intersect(const WideMeshView& mesh, const collision::Ray& ray, collisi
         const std::uint32_t first = wide_ref::first(ref), count = wide_ref::count(ref);
         const float* block = mesh.triangles + 9 * static_cast<std::size_t>(first);
         // Lowers clipped.tmax, the traversal's tmax, with every accepted hit.
-        if (mesh_leaf_nearest<K>(filter, tr, block, count, clipped, best, best_lane)) {
+        if (mesh_leaf_nearest<K>(triangles, tr, block, count, clipped, best, best_lane)) {
             best_ref = ref;
             found = true;
         }
@@ -217,13 +217,13 @@ template <class K>
 bool mesh_occluded(const WideMeshView& mesh, const collision::Ray& ray) {
     const collision::TriangleRay tr = collision::prepare_triangle_ray(ray);
     if (!tr.valid) return false;
-    const typename K::Triangles filter(ray, tr);
+    const typename K::Triangles triangles(ray, tr);
     return traverse_any<K>(*mesh.tree, ray, ray.tmin, ray.tmax, [&](std::uint32_t ref) __attribute__((flatten)) {
         const std::uint32_t first = wide_ref::first(ref), count = wide_ref::count(ref);
         const float* block = mesh.triangles + 9 * static_cast<std::size_t>(first);
         LeafCandidates unused;
         unsigned exact = 0;
-        if (filter.test(block, count, ray.tmin, ray.tmax, unused, exact) != 0) return true;
+        if (triangles.test(block, count, ray.tmin, ray.tmax, unused, exact) != 0) return true;
         collision::TriangleCandidate c;
         for (unsigned m = exact; m != 0; m &= m - 1) {
             const auto lane = static_cast<std::uint32_t>(std::countr_zero(m));
