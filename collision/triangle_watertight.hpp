@@ -63,22 +63,24 @@ struct TriangleRay {
     bool valid = false;  // false for zero, NaN or infinite direction / origin: every test misses
 };
 
-// Written without branches on the direction (selects only): for incoherent rays every branch
-// here would be a coin toss, and this runs once per ray and mesh. kz is the largest |d| axis
-// (the first of equal ones as ad.x > ad.y ? (ad.x > ad.z ? 0 : 2) : (ad.y > ad.z ? 1 : 2)
-// picks it), kx, ky the next two cyclically, swapped when d[kz] < 0.
+// Written without branches on the direction (table look-ups on comparison bits; the compiler
+// turns plain selects back into jumps): for incoherent rays every branch here would be a coin
+// toss, and this runs once per ray and mesh. kz is the largest |d| axis (the one
+// ad.x > ad.y ? (ad.x > ad.z ? 0 : 2) : (ad.y > ad.z ? 1 : 2) picks), kx, ky the next two
+// cyclically, swapped when d[kz] < 0.
 inline TriangleRay prepare_triangle_ray(const Ray& ray) {
+    // Index: bit 0 = ad.x > ad.y, bit 1 = ad.x > ad.z, bit 2 = ad.y > ad.z.
+    static constexpr signed char kMajor[8] = {2, 2, 2, 0, 1, 2, 1, 0};
+    // Index: 2 kz + (d[kz] < 0): {kx, ky}.
+    static constexpr signed char kMinor[6][2] = {{1, 2}, {2, 1}, {2, 0}, {0, 2}, {0, 1}, {1, 0}};
     TriangleRay tr;
     const glm::vec3 ad = glm::abs(ray.dir);
-    const int kz_if_x = ad.x > ad.z ? 0 : 2, kz_if_y = ad.y > ad.z ? 1 : 2;
-    tr.kz = ad.x > ad.y ? kz_if_x : kz_if_y;
-    const int next_kx = tr.kz == 2 ? 0 : tr.kz + 1;
-    const int next_ky = next_kx == 2 ? 0 : next_kx + 1;
-    // Keep the winding: a negative major component mirrors the projection.
+    const int bits = int(ad.x > ad.y) | int(ad.x > ad.z) << 1 | int(ad.y > ad.z) << 2;
+    tr.kz = kMajor[bits];
     const float dz = ray.dir[tr.kz];
-    const bool mirror = dz < 0.0f;
-    tr.kx = mirror ? next_ky : next_kx;
-    tr.ky = mirror ? next_kx : next_ky;
+    const int minor = 2 * tr.kz + int(dz < 0.0f);
+    tr.kx = kMinor[minor][0];
+    tr.ky = kMinor[minor][1];
     tr.valid = (dz != 0.0f) & std::isfinite(ad.x) & std::isfinite(ad.y) & std::isfinite(ad.z) &
                std::isfinite(ray.origin.x) & std::isfinite(ray.origin.y) & std::isfinite(ray.origin.z);
     if (!tr.valid) return tr;
