@@ -28,12 +28,24 @@ struct WideMeshView {
 // entry its view (tree null when no object uses it). Spheres without a transform are copied
 // per slot (radius 0 in the other slots), so the most common analytic candidate is tested from
 // 16 contiguous bytes instead of its Object's few hundred.
+// Per top-level node, its children that are one-object leaves holding such a sphere, in SoA
+// form (radius 0 for every other child), so the traversal tests them together at the node.
+struct alignas(32) ChildSpheres {
+    float x[8], y[8], z[8], r[8];
+};
+
 struct TopLevelView {
     const Scene* scene = nullptr;
     const WideBvh* tree = nullptr;
     const std::uint32_t* objects = nullptr;
     const collision::Sphere* spheres = nullptr;
     const WideMeshView* meshes = nullptr;
+    const ChildSpheres* child_spheres = nullptr;  // per tree node
+};
+
+// Per lane of a node, a kernel's sphere test's t.
+struct alignas(32) LaneTimes {
+    float t[8];
 };
 
 struct WideKernels {

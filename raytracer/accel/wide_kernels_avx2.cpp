@@ -7,8 +7,11 @@
 #include <immintrin.h>
 
 #include <bit>
+#include <cmath>
 #include <cstdint>
 #include <limits>
+
+#include <glm/geometric.hpp>
 
 #include "collision/triangle_watertight.hpp"
 #include "raytracer/accel/bvh_traversal.hpp"
@@ -146,6 +149,78 @@ struct Avx2Kernel {
             _mm256_store_ps(out.e0, e0);
             _mm256_store_ps(out.e1, e1);
             _mm256_store_ps(out.e2, e2);
+            return hits;
+        }
+    };
+
+    // collision::intersect_sphere_candidate on a node's sphere children at once: every float
+    // operation of the scalar test (stable_roots, pick_root, reproject's check) in its order,
+    // glm::dot as x + y then + z; sqrt and division are IEEE in both.
+    struct Spheres {
+        static constexpr bool tests_lanes = true;
+        __m256 ox, oy, oz, dx, dy, dz, a;
+        bool valid;
+
+        explicit Spheres(const collision::Ray& ray)
+            : ox(_mm256_set1_ps(ray.origin.x)), oy(_mm256_set1_ps(ray.origin.y)), oz(_mm256_set1_ps(ray.origin.z)),
+              dx(_mm256_set1_ps(ray.dir.x)), dy(_mm256_set1_ps(ray.dir.y)), dz(_mm256_set1_ps(ray.dir.z)) {
+            const float a_scalar = glm::dot(ray.dir, ray.dir);
+            a = _mm256_set1_ps(a_scalar);
+            valid = a_scalar > 0.0f && std::isfinite(a_scalar);
+        }
+
+        static __m256 mul(__m256 p, __m256 q) { return _mm256_mul_ps(p, q); }
+        static __m256 add(__m256 p, __m256 q) { return _mm256_add_ps(p, q); }
+        static __m256 sub(__m256 p, __m256 q) { return _mm256_sub_ps(p, q); }
+        static __m256 dot(__m256 px, __m256 py, __m256 pz, __m256 qx, __m256 qy, __m256 qz) {
+            return add(add(mul(px, qx), mul(py, qy)), mul(pz, qz));
+        }
+        static __m256 finite(__m256 v) {
+            return _mm256_cmp_ps(_mm256_andnot_ps(_mm256_set1_ps(-0.0f), v), _mm256_set1_ps(std::numeric_limits<float>::infinity()),
+                                 _CMP_LT_OQ);
+        }
+        static unsigned bits(__m256 m) { return static_cast<unsigned>(_mm256_movemask_ps(m)); }
+
+        // Of the children in `mask`, `taken` = the sphere ones; returned: those hit within
+        // (tmin, tmax), their t in `out`. `scalar` is left 0 (every lane decided here).
+        unsigned test(const ChildSpheres& s, unsigned mask, float tmin, float tmax, LaneTimes& out, unsigned& scalar,
+                      unsigned& taken) const {
+            scalar = 0;
+            const __m256 zero = _mm256_setzero_ps(), sign = _mm256_set1_ps(-0.0f);
+            const __m256 r = _mm256_load_ps(s.r);
+            __m256 ok = _mm256_and_ps(_mm256_cmp_ps(r, zero, _CMP_GT_OQ), finite(r));
+            taken = bits(_mm256_cmp_ps(r, zero, _CMP_GT_OQ)) & mask;
+            if (taken == 0 || !valid) return 0;
+            const __m256 cx = _mm256_load_ps(s.x), cy = _mm256_load_ps(s.y), cz = _mm256_load_ps(s.z);
+            const __m256 fx = sub(ox, cx), fy = sub(oy, cy), fz = sub(oz, cz);
+            const __m256 b = dot(fx, fy, fz, dx, dy, dz);
+            const __m256 ba = _mm256_div_ps(b, a);
+            const __m256 lx = sub(fx, mul(ba, dx)), ly = sub(fy, mul(ba, dy)), lz = sub(fz, mul(ba, dz));
+            const __m256 l_len = _mm256_sqrt_ps(dot(lx, ly, lz, lx, ly, lz));
+            const __m256 disc = mul(sub(r, l_len), add(r, l_len));
+            ok = _mm256_and_ps(ok, _mm256_and_ps(_mm256_cmp_ps(disc, zero, _CMP_GE_OQ), finite(disc)));
+            if ((bits(ok) & taken) == 0) return 0;  // the common case: every sphere missed
+            const __m256 c = sub(dot(fx, fy, fz, fx, fy, fz), mul(r, r));
+            ok = _mm256_and_ps(ok, finite(c));
+            const __m256 root = _mm256_sqrt_ps(mul(a, disc));
+            const __m256 signed_root = _mm256_or_ps(_mm256_andnot_ps(sign, root), _mm256_and_ps(sign, b));
+            const __m256 q = _mm256_xor_ps(add(b, signed_root), sign);
+            const __m256 t0q = _mm256_div_ps(c, q), t1q = _mm256_div_ps(q, a);
+            const __m256 swap = _mm256_cmp_ps(t0q, t1q, _CMP_GT_OQ);
+            const __m256 q_zero = _mm256_cmp_ps(q, zero, _CMP_EQ_OQ);  // the tangent point at the origin: both 0
+            const __m256 t0 = _mm256_blendv_ps(_mm256_blendv_ps(t0q, t1q, swap), zero, q_zero);
+            const __m256 t1 = _mm256_blendv_ps(_mm256_blendv_ps(t1q, t0q, swap), zero, q_zero);
+            const __m256 vtmin = _mm256_set1_ps(tmin), vtmax = _mm256_set1_ps(tmax);
+            const __m256 ok0 = _mm256_and_ps(_mm256_cmp_ps(t0, vtmin, _CMP_GT_OQ), _mm256_cmp_ps(t0, vtmax, _CMP_LT_OQ));
+            const __m256 ok1 = _mm256_and_ps(_mm256_cmp_ps(t1, vtmin, _CMP_GT_OQ), _mm256_cmp_ps(t1, vtmax, _CMP_LT_OQ));
+            const __m256 t = _mm256_blendv_ps(t1, t0, ok0);
+            ok = _mm256_and_ps(ok, _mm256_or_ps(ok0, ok1));
+            // reproject_on_sphere's check on ray.at(t) - centre.
+            const __m256 vx = sub(add(ox, mul(dx, t)), cx), vy = sub(add(oy, mul(dy, t)), cy), vz = sub(add(oz, mul(dz, t)), cz);
+            const __m256 v2 = dot(vx, vy, vz, vx, vy, vz);
+            ok = _mm256_and_ps(ok, _mm256_and_ps(_mm256_cmp_ps(v2, zero, _CMP_GT_OQ), finite(v2)));
+            const unsigned hits = bits(ok) & taken;
+            if (hits != 0) _mm256_store_ps(out.t, t);
             return hits;
         }
     };

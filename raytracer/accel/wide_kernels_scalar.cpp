@@ -36,6 +36,19 @@ struct ScalarKernel {
             return 0;
         }
     };
+
+    struct Spheres {  // every sphere child to collision::intersect_sphere_candidate itself
+        static constexpr bool tests_lanes = false;
+        explicit Spheres(const collision::Ray&) {}
+        unsigned test(const ChildSpheres& s, unsigned mask, float, float, LaneTimes&, unsigned& scalar,
+                      unsigned& taken) const {
+            taken = 0;
+            for (int lane = 0; lane < kWideWidth; ++lane) taken |= static_cast<unsigned>(s.r[lane] > 0.0f) << lane;
+            taken &= mask;
+            scalar = taken;
+            return 0;
+        }
+    };
 };
 
 }  // namespace

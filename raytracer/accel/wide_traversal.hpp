@@ -113,9 +113,15 @@ inline void traverse_nearest(const WideBvh& tree, const collision::Ray& world, f
     }
 }
 
-// Any-hit traversal: leaf(ref) returns true to stop.
-template <class K, class Leaf>
-inline bool traverse_any(const WideBvh& tree, const collision::Ray& world, float tmin, float tmax, Leaf&& leaf) {
+struct NoAnyHook {
+    unsigned operator()(std::uint32_t, unsigned, bool&) const { return 0; }
+};
+
+// Any-hit traversal: leaf(ref) returns true to stop. any_hook(node index, hit children mask,
+// stop&) may finish some hit children at the node (returning their mask; stop = one is hit).
+template <class K, class Leaf, class AnyHook = NoAnyHook>
+inline bool traverse_any(const WideBvh& tree, const collision::Ray& world, float tmin, float tmax, Leaf&& leaf,
+                         AnyHook&& any_hook = {}) {
     if (wide_ref::is_leaf(tree.root)) return leaf(tree.root);
     const typename K::Boxes boxes{WideRay(world)};
     std::uint32_t stack[WideBvh::stack_size];
@@ -126,6 +132,9 @@ inline bool traverse_any(const WideBvh& tree, const collision::Ray& world, float
             alignas(32) float t_enter[kWideWidth];
             const WideNode& node = tree.nodes[ref];
             unsigned mask = boxes.test(node, tmin, tmax, t_enter);
+            bool stop = false;
+            mask &= ~any_hook(ref, mask, stop);
+            if (stop) return true;
             if (mask != 0) {
                 // No sorting, but the farthest box first: a shadow ray starts on a surface, and
                 // the boxes it enters first hold that surface, which cannot block it. Measured on
@@ -318,14 +327,32 @@ bool top_intersect(const TopLevelView& top, const collision::Ray& ray, SurfaceHi
     return found;
 }
 
+// Any hit over the objects. The sphere children of a node are decided together at the node
+// (K::Spheres: all at once, or each by the scalar candidate test), since any-hit has no order to
+// keep; measured on scenes/spheres-field.json, native / embree occluded 1.67 -> 1.72 (medians
+// of 5 runs, interleaved). The same at the nearest-hit traversal measured slower (1.46 -> 1.37): it tests
+// spheres a nearer hit would have culled.
 template <class K>
 bool top_occluded(const TopLevelView& top, const collision::Ray& ray) {
-    return traverse_any<K>(*top.tree, ray, ray.tmin, ray.tmax, [&](std::uint32_t ref) __attribute__((always_inline)) {
+    const typename K::Spheres spheres(ray);
+    auto leaf = [&](std::uint32_t ref) __attribute__((always_inline)) {
         const std::uint32_t first = wide_ref::first(ref), end = first + wide_ref::count(ref);
         for (std::uint32_t i = first; i < end; ++i)
             if (object_occluded<K>(top, i, ray)) return true;
         return false;
-    });
+    };
+    auto node = [&](std::uint32_t index, unsigned mask, bool& stop) __attribute__((always_inline)) {
+        LaneTimes times;
+        unsigned scalar = 0, taken = 0;
+        stop = spheres.test(top.child_spheres[index], mask, ray.tmin, ray.tmax, times, scalar, taken) != 0;
+        float t;
+        for (unsigned m = scalar; m != 0 && !stop; m &= m - 1) {
+            const std::uint32_t slot = wide_ref::first(top.tree->nodes[index].child[std::countr_zero(m)]);
+            stop = collision::intersect_sphere_candidate(ray, top.spheres[slot], t);
+        }
+        return taken;
+    };
+    return traverse_any<K>(*top.tree, ray, ray.tmin, ray.tmax, leaf, node);
 }
 
 template <class K>
