@@ -27,32 +27,18 @@
 //      good as t (bound above times |d|).
 //  normal: unit to gamma(6), outward (c -> point), also for rays starting inside.
 //  uv: not computed here (left 0): collision::surface_uv(shape, hit) gives it on request (surface_uv.hpp).
+// Split for a BVH's inner loop (decide, then finish the nearest): sphere_candidate.hpp.
 // Degenerate input: radius <= 0, NaN or infinite radius/centre/origin/direction, zero direction,
 // or coordinates so large that squares overflow float (beyond ~1e18) give false.
-#include <cmath>
-
-#include <glm/geometric.hpp>
-
-#include "collision/float_error.hpp"
 #include "collision/intersect.hpp"
-#include "collision/detail/ray_quadric.hpp"
+#include "collision/sphere_candidate.hpp"
 
 namespace collision {
 
 bool intersect(const Ray& ray, const Sphere& s, RayHit& hit) {
-    const float r = s.radius;
-    if (!(r > 0.0f) || !std::isfinite(r)) return false;
-    float t0, t1;
-    if (!detail::stable_roots(ray.origin - s.center, ray.dir, r, t0, t1)) return false;
     float t;
-    if (!detail::pick_root(t0, t1, ray, t)) return false;
-    glm::vec3 n, point, point_error;
-    if (!detail::reproject_on_sphere(ray.at(t), s.center, r, n, point, point_error)) return false;
-    hit.t = t;
-    hit.point = point;
-    hit.point_error = point_error;
-    hit.normal = n;
-    hit.uv = glm::vec2(0.0f);
+    if (!intersect_sphere_candidate(ray, s, t)) return false;
+    finish_sphere_hit(ray, s, t, hit);
     return true;
 }
 

@@ -63,16 +63,26 @@ struct TriangleRay {
     bool valid = false;  // false for zero, NaN or infinite direction / origin: every test misses
 };
 
+// Written without branches on the direction (table look-ups on comparison bits; the compiler
+// turns plain selects back into jumps): for incoherent rays every branch here would be a coin
+// toss, and this runs once per ray and mesh. kz is the largest |d| axis (the one
+// ad.x > ad.y ? (ad.x > ad.z ? 0 : 2) : (ad.y > ad.z ? 1 : 2) picks), kx, ky the next two
+// cyclically, swapped when d[kz] < 0.
 inline TriangleRay prepare_triangle_ray(const Ray& ray) {
+    // Index: bit 0 = ad.x > ad.y, bit 1 = ad.x > ad.z, bit 2 = ad.y > ad.z.
+    static constexpr signed char kMajor[8] = {2, 2, 2, 0, 1, 2, 1, 0};
+    // Index: 2 kz + (d[kz] < 0): {kx, ky}.
+    static constexpr signed char kMinor[6][2] = {{1, 2}, {2, 1}, {2, 0}, {0, 2}, {0, 1}, {1, 0}};
     TriangleRay tr;
     const glm::vec3 ad = glm::abs(ray.dir);
-    tr.kz = ad.x > ad.y ? (ad.x > ad.z ? 0 : 2) : (ad.y > ad.z ? 1 : 2);
-    tr.kx = tr.kz == 2 ? 0 : tr.kz + 1;
-    tr.ky = tr.kx == 2 ? 0 : tr.kx + 1;
-    // Keep the winding: a negative major component mirrors the projection.
-    if (ray.dir[tr.kz] < 0.0f) std::swap(tr.kx, tr.ky);
+    const int bits = int(ad.x > ad.y) | int(ad.x > ad.z) << 1 | int(ad.y > ad.z) << 2;
+    tr.kz = kMajor[bits];
     const float dz = ray.dir[tr.kz];
-    tr.valid = dz != 0.0f && finite(ad) && finite(ray.origin);
+    const int minor = 2 * tr.kz + int(dz < 0.0f);
+    tr.kx = kMinor[minor][0];
+    tr.ky = kMinor[minor][1];
+    tr.valid = (dz != 0.0f) & std::isfinite(ad.x) & std::isfinite(ad.y) & std::isfinite(ad.z) &
+               std::isfinite(ray.origin.x) & std::isfinite(ray.origin.y) & std::isfinite(ray.origin.z);
     if (!tr.valid) return tr;
     tr.sx = -ray.dir[tr.kx] / dz;
     tr.sy = -ray.dir[tr.ky] / dz;

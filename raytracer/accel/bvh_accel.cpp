@@ -49,12 +49,27 @@ BvhAccel::BvhAccel(const Scene& scene, SimdPath path)
         top_objects_.push_back(object_of[p]);
         top_spheres_.push_back(sphere && object.transform.identity ? *sphere : collision::Sphere{glm::vec3(0.0f), 0.0f});
     }
-    view_ = TopLevelView{&scene_, &top_, top_objects_.data(), top_spheres_.data(), mesh_views_.data()};
+    // Each node's children that are one-slot leaves with such a sphere, for the node-level test.
+    top_child_spheres_.assign(top_.nodes.size(), ChildSpheres{});
+    for (std::size_t n = 0; n < top_.nodes.size(); ++n)
+        for (int lane = 0; lane < kWideWidth; ++lane) {
+            const std::uint32_t ref = top_.nodes[n].child[lane];
+            if (!wide_ref::is_leaf(ref) || wide_ref::count(ref) != 1) continue;
+            const collision::Sphere& s = top_spheres_[wide_ref::first(ref)];
+            if (!(s.radius > 0.0f)) continue;
+            top_child_spheres_[n].x[lane] = s.center.x;
+            top_child_spheres_[n].y[lane] = s.center.y;
+            top_child_spheres_[n].z[lane] = s.center.z;
+            top_child_spheres_[n].r[lane] = s.radius;
+        }
+    view_ = TopLevelView{&scene_, &top_, top_objects_.data(), top_spheres_.data(), mesh_views_.data(),
+                         top_child_spheres_.data()};
 }
 
 std::size_t BvhAccel::memory_bytes() const {
     std::size_t bytes = sizeof(*this) + top_.memory_bytes() + top_objects_.capacity() * sizeof(std::uint32_t) +
                         top_spheres_.capacity() * sizeof(collision::Sphere) +
+                        top_child_spheres_.capacity() * sizeof(ChildSpheres) +
                         meshes_.capacity() * sizeof(meshes_[0]) + mesh_views_.capacity() * sizeof(WideMeshView);
     for (const auto& m : meshes_)
         if (m) bytes += sizeof(WideMeshBvh) + m->memory_bytes();

@@ -40,6 +40,7 @@ private:
     WideBvh top_;                                       // over the objects
     std::vector<std::uint32_t> top_objects_;            // top-level slot -> object index
     std::vector<collision::Sphere> top_spheres_;        // slot -> its untransformed sphere, or radius 0
+    std::vector<ChildSpheres> top_child_spheres_;       // per top node: its children's spheres
     std::vector<std::unique_ptr<WideMeshBvh>> meshes_;  // per Scene::meshes entry; null if no object uses it
     std::vector<WideMeshView> mesh_views_;              // the same, as the kernels read them
     TopLevelView view_;

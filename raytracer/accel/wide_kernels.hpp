@@ -28,12 +28,24 @@ struct WideMeshView {
 // entry its view (tree null when no object uses it). Spheres without a transform are copied
 // per slot (radius 0 in the other slots), so the most common analytic candidate is tested from
 // 16 contiguous bytes instead of its Object's few hundred.
+// Per top-level node, its children that are one-object leaves holding such a sphere, in SoA
+// form (radius 0 for every other child), so the traversal tests them together at the node.
+struct alignas(32) ChildSpheres {
+    float x[8], y[8], z[8], r[8];
+};
+
 struct TopLevelView {
     const Scene* scene = nullptr;
     const WideBvh* tree = nullptr;
     const std::uint32_t* objects = nullptr;
     const collision::Sphere* spheres = nullptr;
     const WideMeshView* meshes = nullptr;
+    const ChildSpheres* child_spheres = nullptr;  // per tree node
+};
+
+// Per lane of a node, a kernel's sphere test's t.
+struct alignas(32) LaneTimes {
+    float t[8];
 };
 
 struct WideKernels {
@@ -49,6 +61,15 @@ extern const WideKernels kScalarKernels;
 extern const WideKernels kAvx2Kernels;  // call only when cpu_has_avx2()
 
 inline const WideKernels& wide_kernels(SimdPath path) { return path == SimdPath::Avx2 ? kAvx2Kernels : kScalarKernels; }
+
+// A mesh leaf holds at most this many triangles: the AVX2 kernel tests a whole leaf in one step.
+inline constexpr std::uint32_t kMaxLeafTriangles = 8;
+
+// Per lane of a leaf, what a kernel's triangle test leaves for the traversal to finish a hit
+// with: t, the range test's ts and |det|, 1 / det and the three edge functions.
+struct alignas(32) LeafCandidates {
+    float t[8], ts[8], abs_det[8], inv_det[8], e0[8], e1[8], e2[8];
+};
 
 // Floats of padding after the last leaf: the widest load (8) may start at the last float.
 inline constexpr int kWideTrianglePadding = 8;

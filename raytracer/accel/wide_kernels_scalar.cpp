@@ -1,6 +1,5 @@
 // The wide BVH's kernels in plain C++ (the build's baseline ISA): every lane of the box test
-// one after the other, and no triangle pre-filter (every triangle of a leaf goes through the
-// scalar watertight test). The reference the AVX2 kernels must match bit for bit.
+// one after the other, and every triangle of a leaf through the scalar watertight test itself. The reference the AVX2 kernels must match bit for bit.
 #include "raytracer/accel/wide_traversal.hpp"
 
 namespace sweeptrace {
@@ -29,9 +28,26 @@ struct ScalarKernel {
         }
     };
 
-    struct Triangles {
+    struct Triangles {  // every triangle to the scalar test itself
+        static constexpr bool tests_lanes = false;
         Triangles(const collision::Ray&, const collision::TriangleRay&) {}
-        unsigned candidates(const float*, std::uint32_t count) const { return (1u << count) - 1u; }
+        unsigned test(const float*, std::uint32_t count, float, float, LeafCandidates&, unsigned& exact) const {
+            exact = (1u << count) - 1u;
+            return 0;
+        }
+    };
+
+    struct Spheres {  // every sphere child to collision::intersect_sphere_candidate itself
+        static constexpr bool tests_lanes = false;
+        explicit Spheres(const collision::Ray&) {}
+        unsigned test(const ChildSpheres& s, unsigned mask, float, float, LaneTimes&, unsigned& scalar,
+                      unsigned& taken) const {
+            taken = 0;
+            for (int lane = 0; lane < kWideWidth; ++lane) taken |= static_cast<unsigned>(s.r[lane] > 0.0f) << lane;
+            taken &= mask;
+            scalar = taken;
+            return 0;
+        }
     };
 };
 

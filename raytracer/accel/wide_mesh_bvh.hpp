@@ -3,7 +3,8 @@
 // (object) space, built once and shared by every object that instances it. Built from the
 // binary binned-SAH tree, collapsed; leaves hold up to 8 triangles stored in leaf
 // order, vertex coordinates in SoA form (wide_kernels.hpp), so a leaf's data is contiguous
-// and one SIMD load reads one coordinate of all its triangles.
+// and one SIMD load reads one coordinate of all its triangles. Triangles of zero area, which the
+// watertight test never hits, are left out (wide_mesh_bvh.cpp).
 #include <cstdint>
 #include <vector>
 
@@ -28,7 +29,8 @@ public:
     }
     bool occluded(const collision::Ray& ray) const { return kernels_->mesh_occluded(view(), ray); }
 
-    // Box of every vertex used by a triangle, in object space (empty for an empty mesh).
+    // Box of every vertex of a triangle that can be hit (not of zero area), in object space;
+    // empty when there is none.
     const collision::Bounds3& bounds() const { return bounds_; }
     std::size_t memory_bytes() const;
     double sah_cost() const { return sweeptrace::sah_cost(tree_); }

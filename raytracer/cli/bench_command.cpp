@@ -1,7 +1,7 @@
 // `sweeptrace bench SCENE [--rays N] [--threads N] [--spp N]`: the native BVH against Embree on
 // the same scene and the same rays, one single-threaded run each: build time, Mrays/s (primary
-// rays through the camera plus one random bounce from each primary hit), their ratio, bytes per
-// triangle; then samples/s of a short render at 1 and up to --threads threads. It prints
+// rays through the camera plus one random bounce from each primary hit; occluded() on shadow
+// rays from each primary hit to a key light), their ratio, bytes per triangle; then samples/s of a short render at 1 and up to --threads threads. It prints
 // figures; it asserts nothing. `sweeptrace bench --meshes DIR` does the same per OBJ file of DIR
 // (bench_meshes.hpp). Ray rates are per second of the tracing thread's CPU time (bench_rays.hpp).
 #include <cstdio>
@@ -65,9 +65,10 @@ void run_bench(const BenchArgs& args) {
         std::printf("%-8s %10.3f %12zu %14.1f\n", accel->name().c_str(), build, accel->memory_bytes(), per_tri);
     }
 
-    const std::vector<collision::Ray> rays = make_bench_rays(scene, native, args.rays, scene.seed);
-    warm_up(native, rays);
-    warm_up(*embree, rays);
+    const BenchRays bench = make_bench_rays(scene, native, args.rays, scene.seed);
+    const std::vector<collision::Ray>& rays = bench.rays;
+    warm_up(native, bench);
+    warm_up(*embree, bench);
     const TraceResult a = time_intersect(native, rays);
     const TraceResult b = time_intersect(*embree, rays);
     const double mrays = 1e-6 * static_cast<double>(rays.size());
@@ -77,13 +78,17 @@ void run_bench(const BenchArgs& args) {
     std::printf("%-8s %14.3f %15.3f %10zu\n", native.name().c_str(), mrays / a.cpu, mrays / a.wall, a.hits);
     std::printf("%-8s %14.3f %15.3f %10zu\n", embree->name().c_str(), mrays / b.cpu, mrays / b.wall, b.hits);
     std::printf("native / embree: %.2fx (cpu time), %.2fx (wall time)\n", b.cpu / a.cpu, b.wall / a.wall);
-    // The same rays as shadow rays (any hit within their tmax).
-    const TraceResult ao = time_occluded(native, rays);
-    const TraceResult bo = time_occluded(*embree, rays);
+    // Shadow rays (a segment from each primary hit to a key light): occluded(), and intersect()
+    // on the same segments for the any-hit traversal's gain.
+    const TraceResult ao = time_occluded(native, bench.shadow), bo = time_occluded(*embree, bench.shadow);
+    const TraceResult as = time_intersect(native, bench.shadow), bs = time_intersect(*embree, bench.shadow);
+    const double mshadow = 1e-6 * static_cast<double>(bench.shadow.size());
+    std::printf("%zu shadow rays (one per primary hit, to a key light), %zu / %zu occluded:\n", bench.shadow.size(),
+                ao.hits, bo.hits);
     std::printf("occluded: %s %.3f, %s %.3f Mrays/s (cpu); native / embree %.2fx; occluded / intersect: native %.2fx, "
                 "embree %.2fx\n",
-                native.name().c_str(), mrays / ao.cpu, embree->name().c_str(), mrays / bo.cpu, bo.cpu / ao.cpu,
-                a.cpu / ao.cpu, b.cpu / bo.cpu);
+                native.name().c_str(), mshadow / ao.cpu, embree->name().c_str(), mshadow / bo.cpu, bo.cpu / ao.cpu,
+                as.cpu / ao.cpu, bs.cpu / bo.cpu);
     // An Embree device made with "threads=1" caps TBB's parallelism for the whole process while
     // it lives, which would make the multi-threaded render below run on one core.
     embree.reset();

@@ -78,20 +78,24 @@ void bench_one(const std::filesystem::path& file, int primaries) {
     const auto embree = timed_build(embree_build, [&] { return make_embree_accel(scene, single_thread); });
     const EmbreeSah embree_sah = embree_builder_sah(scene.meshes[0].triangles);
 
-    const std::vector<collision::Ray> rays = make_bench_rays(scene, *native, primaries, scene.seed);
-    warm_up(*native, rays);
-    warm_up(*embree, rays);
+    const BenchRays bench = make_bench_rays(scene, *native, primaries, scene.seed);
+    const std::vector<collision::Ray>& rays = bench.rays;
+    warm_up(*native, bench);
+    warm_up(*embree, bench);
     const TraceResult ni = time_intersect(*native, rays), ei = time_intersect(*embree, rays);
-    const TraceResult no = time_occluded(*native, rays), eo = time_occluded(*embree, rays);
+    // Shadow rays: occluded() against intersect() on the same segments.
+    const TraceResult no = time_occluded(*native, bench.shadow), eo = time_occluded(*embree, bench.shadow);
+    const TraceResult ns = time_intersect(*native, bench.shadow), es = time_intersect(*embree, bench.shadow);
     const double mrays = 1e-6 * static_cast<double>(rays.size());
+    const double mshadow = 1e-6 * static_cast<double>(bench.shadow.size());
     const double tri = static_cast<double>(triangles);
-    std::printf("%-18s %7zu %6zu  build ms %7.1f %7.1f (%.2fx)  SAH %6.1f %6.1f  B/tri %5.1f %5.1f"
-                "  intersect %6.2f %6.2f (%.2fx)  occluded %6.2f %6.2f (%.2fx)  occl/isect %.2f %.2f\n",
-                file.filename().string().c_str(), triangles, rays.size(), 1e3 * native_build.cpu,
+    std::printf("%-18s %7zu %6zu %6zu  build ms %7.1f %7.1f (%.2fx)  SAH %6.1f %6.1f  B/tri %5.1f %5.1f"
+                "  intersect %6.2f %6.2f (%.2fx)  occluded %6.2f %6.2f (%.2fx)  occl/isect %.2f %.2f  blocked %4.1f%%\n",
+                file.filename().string().c_str(), triangles, rays.size(), bench.shadow.size(), 1e3 * native_build.cpu,
                 1e3 * embree_build.cpu, native_build.cpu / embree_build.cpu, native->mesh_sah_cost(0), embree_sah.cost,
                 static_cast<double>(native->memory_bytes()) / tri, static_cast<double>(embree->memory_bytes()) / tri,
-                mrays / ni.cpu, mrays / ei.cpu, ei.cpu / ni.cpu, mrays / no.cpu, mrays / eo.cpu, eo.cpu / no.cpu,
-                ni.cpu / no.cpu, ei.cpu / eo.cpu);
+                mrays / ni.cpu, mrays / ei.cpu, ei.cpu / ni.cpu, mshadow / no.cpu, mshadow / eo.cpu, eo.cpu / no.cpu,
+                ns.cpu / no.cpu, es.cpu / eo.cpu, 100.0 * static_cast<double>(no.hits) / static_cast<double>(bench.shadow.size()));
     if (ni.hits != ei.hits || no.hits != eo.hits)
         std::printf("%-18s note: hits differ, intersect %zu / %zu, occluded %zu / %zu (native / embree)\n", "",
                     ni.hits, ei.hits, no.hits, eo.hits);
@@ -104,9 +108,11 @@ void run_mesh_bench(const std::string& dir, int primaries) {
     std::printf("each mesh alone, 320x320, %d primary rays + one bounce per hit; single thread, CPU time of the thread\n",
                 primaries);
     std::printf("columns: native then embree; (x) = native / embree speed (build: native / embree time);\n"
+                "intersect on the rays, occluded on the shadow rays (one per primary hit, to a key light),\n"
+                "occl/isect = occluded against intersect on those same shadow rays, blocked = share of them occluded;\n"
                 "SAH = sum over nodes of area / root area (+1 per node visit, +1 per triangle in a leaf);\n"
                 "embree's SAH is that of its rtcBuildBVH builder (8 wide, leaves of <= 4), the build time that of rtcCommitScene\n");
-    std::printf("%-18s %7s %6s\n", "mesh", "tris", "rays");
+    std::printf("%-18s %7s %6s %6s\n", "mesh", "tris", "rays", "shadow");
     for (const auto& file : files) bench_one(file, primaries);
 }
 

@@ -22,25 +22,53 @@ double wall_seconds() {
     return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
 }
 
-std::vector<collision::Ray> make_bench_rays(const Scene& scene, const Accel& accel, int primaries, std::uint64_t seed) {
+namespace {
+
+// The key light of make_bench_rays: a square, centre and two half-side vectors.
+struct KeyLight {
+    glm::vec3 centre, half_u, half_v, normal;
+
+    explicit KeyLight(const Camera& camera) {
+        const glm::vec3 back = camera.position - camera.look_at;
+        const float distance = glm::length(back);
+        const glm::vec3 w = back / distance;
+        const glm::vec3 right = glm::normalize(glm::cross(camera.up, w));
+        const glm::vec3 up = glm::cross(w, right);
+        centre = camera.look_at + distance * glm::normalize(w + 0.8f * up + 0.6f * right);
+        normal = glm::normalize(camera.look_at - centre);
+        const glm::vec3 u = glm::normalize(glm::cross(normal, up));
+        half_u = 0.1f * distance * u;
+        half_v = 0.1f * distance * glm::cross(normal, u);
+    }
+
+    glm::vec3 point(float u1, float u2) const { return centre + (2.0f * u1 - 1.0f) * half_u + (2.0f * u2 - 1.0f) * half_v; }
+};
+
+}  // namespace
+
+BenchRays make_bench_rays(const Scene& scene, const Accel& accel, int primaries, std::uint64_t seed) {
     const CameraModel camera(scene.camera, scene.film.width, scene.film.height);
+    const KeyLight light(scene.camera);
     std::mt19937_64 rng(seed);
     std::uniform_real_distribution<float> u(0.0f, 1.0f);
     std::normal_distribution<float> gauss(0.0f, 1.0f);
-    std::vector<collision::Ray> rays;
-    rays.reserve(2 * static_cast<std::size_t>(primaries));
+    BenchRays out;
+    out.rays.reserve(2 * static_cast<std::size_t>(primaries));
+    out.shadow.reserve(static_cast<std::size_t>(primaries));
     for (int i = 0; i < primaries; ++i) {
         const collision::Ray primary = camera.generate(u(rng) * static_cast<float>(scene.film.width),
                                                       u(rng) * static_cast<float>(scene.film.height), u(rng), u(rng));
-        rays.push_back(primary);
+        out.rays.push_back(primary);
         SurfaceHit hit;
         if (!accel.intersect(primary, hit)) continue;
         glm::vec3 d(gauss(rng), gauss(rng), gauss(rng));
         if (glm::dot(d, d) == 0.0f) d = hit.normal;
         if (glm::dot(d, hit.normal) < 0.0f) d = -d;
-        rays.push_back(spawn_ray(hit, glm::normalize(d)));
+        out.rays.push_back(spawn_ray(hit, glm::normalize(d)));
+        const float u1 = u(rng), u2 = u(rng);
+        out.shadow.push_back(spawn_ray_to(hit, light.point(u1, u2), glm::vec3(0.0f), light.normal));
     }
-    return rays;
+    return out;
 }
 
 template <class Query>
@@ -64,10 +92,12 @@ TraceResult time_occluded(const Accel& accel, const std::vector<collision::Ray>&
     return time_pass(rays, [&](const collision::Ray& ray) { return accel.occluded(ray); });
 }
 
-void warm_up(const Accel& accel, const std::vector<collision::Ray>& rays) {
-    const std::vector<collision::Ray> slice(rays.begin(), rays.begin() + std::min<std::size_t>(rays.size(), 10000));
-    time_intersect(accel, slice);
-    time_occluded(accel, slice);
+void warm_up(const Accel& accel, const BenchRays& bench) {
+    for (const std::vector<collision::Ray>* rays : {&bench.rays, &bench.shadow}) {
+        const std::vector<collision::Ray> slice(rays->begin(), rays->begin() + std::min<std::size_t>(rays->size(), 10000));
+        time_intersect(accel, slice);
+        time_occluded(accel, slice);
+    }
 }
 
 }  // namespace sweeptrace

@@ -1,6 +1,7 @@
 #pragma once
 // What both bench modes share: the rays (primary rays through the camera, plus one bounce from
-// each primary hit) and timed single-threaded passes of intersect() and occluded() over them.
+// each primary hit), the shadow rays (from each primary hit, a segment to a point of a key light)
+// and timed single-threaded passes of intersect() and occluded() over them.
 //
 // Ray rates are per second of the tracing thread's CPU time (wall time beside it): on a shared
 // machine CPU time is the figure that does not depend on what else runs.
@@ -17,9 +18,19 @@ namespace sweeptrace {
 double thread_cpu_seconds();
 double wall_seconds();
 
+struct BenchRays {
+    std::vector<collision::Ray> rays;    // primary, then the bounce of each primary that hits
+    std::vector<collision::Ray> shadow;  // one per primary hit: the segment to the key light
+};
+
 // Primary rays through uniformly random film points, and from each primary hit (found with
-// `accel`) one ray leaving it in a uniformly random direction of the normal's hemisphere.
-std::vector<collision::Ray> make_bench_rays(const Scene& scene, const Accel& accel, int primaries, std::uint64_t seed);
+// `accel`) one ray leaving it in a uniformly random direction of the normal's hemisphere, and
+// one shadow ray: spawn_ray_to (as next event estimation makes them, ending short of the light)
+// toward a uniformly random point of a square key light. The scene's own lights are not used
+// (the framed meshes have none, the spheres field only a sky): the light is placed from the
+// camera, above and to its right at its distance from look_at, facing look_at, its side a fifth
+// of that distance, so the segments cross the scene the way a key light's shadow rays do.
+BenchRays make_bench_rays(const Scene& scene, const Accel& accel, int primaries, std::uint64_t seed);
 
 struct TraceResult {
     double cpu = 0.0, wall = 0.0;
@@ -30,6 +41,6 @@ TraceResult time_intersect(const Accel& accel, const std::vector<collision::Ray>
 TraceResult time_occluded(const Accel& accel, const std::vector<collision::Ray>& rays);
 
 // An untimed pass over a slice of the rays, so no structure pays for first-touch page faults.
-void warm_up(const Accel& accel, const std::vector<collision::Ray>& rays);
+void warm_up(const Accel& accel, const BenchRays& bench);
 
 }  // namespace sweeptrace
