@@ -218,3 +218,52 @@ TEST_CASE("guiding: guided and unguided renders of smallpt agree within the vari
     INFO(t.summary());
     CHECK(t.pass());
 }
+
+TEST_CASE("guiding: iterations double in paths, whole passes on a large image", "[render][guiding]") {
+    GuidingSdTree small;
+    small.set_paths_per_pass(128 * 96);  // up to kIterationPaths pixels: 2^k passes, as PPG
+    for (int k = 0; k < GuidingSdTree::kTrainingIterations; ++k) CHECK(small.passes_of_iteration(k) == (1ll << k));
+    GuidingSdTree large;
+    large.set_paths_per_pass(1024 * 768);  // 2^k * 16384 paths, rounded up to passes of 786432
+    const long long expected[] = {1, 1, 1, 1, 1, 1, 2, 3};
+    for (int k = 0; k < GuidingSdTree::kTrainingIterations; ++k) CHECK(large.passes_of_iteration(k) == expected[k]);
+    // end_pass follows it: iteration 6 takes passes 7 and 8 (a record a pass, from no light
+    // sample, keeps guiding on).
+    const std::vector<GuideRecord> record{{glm::vec3(0.5f), glm::vec3(0.0f, 0.0f, 1.0f), 1.0f}};
+    for (int pass = 1; pass <= 7; ++pass) {
+        large.add({record});
+        large.end_pass(pass);
+    }
+    CHECK(large.iterations_done() == 6);
+    large.add({record});
+    large.end_pass(8);
+    CHECK(large.iterations_done() == 7);
+    CHECK(large.active());
+}
+
+TEST_CASE("guiding: switches itself off where next event estimation finds the light", "[render][guiding]") {
+    // Each pass: vertex records everywhere, and light samples that find the light (lit) or not.
+    const auto train = [](bool lit) {
+        GuidingSdTree sd;
+        Rng rng(3, 3, 3);
+        int passes = 0;
+        while (sd.training() && passes < 40) {
+            std::vector<GuideRecord> records;
+            for (int i = 0; i < 3000; ++i) {
+                const glm::vec3 p(rng.uniform(), rng.uniform(), rng.uniform());
+                records.push_back({p, glm::vec3(0.0f, 0.0f, 1.0f), 1.0f});
+                records.push_back({p, glm::vec3(0.0f, 1.0f, 0.0f), lit ? 1.0f : 0.0f, 0, true});
+            }
+            for (GuideRecord& r : records) r.leaf = sd.leaf_of(r.point);
+            sd.add({records});
+            sd.end_pass(++passes);
+        }
+        return std::make_pair(sd.active(), passes);
+    };
+    const auto [lit_active, lit_passes] = train(true);
+    CHECK_FALSE(lit_active);
+    CHECK(lit_passes == 15);  // decided at the end of iteration 3, training stopped there
+    const auto [dark_active, dark_passes] = train(false);
+    CHECK(dark_active);
+    CHECK(dark_passes == 40);
+}
