@@ -267,3 +267,19 @@ TEST_CASE("guiding: switches itself off where next event estimation finds the li
     CHECK(dark_active);
     CHECK(dark_passes == 40);
 }
+
+TEST_CASE("guiding: a large image's shorter iterations are the same bit for bit on 1 and 2 threads", "[render][guiding]") {
+    // 256x192 = 49152 pixels: iterations of 1, 1, 2, 3 passes, so 5 passes rebuild the guide
+    // three times (after passes 1, 2 and 4) and use it.
+    const Scene s = smallpt(256, 192);
+    const DoublePrecisionAccel accel(s);
+    RenderOptions o;
+    o.spp = 5;
+    o.max_depth = 4;
+    o.seed = 13;
+    o.guiding = true;
+    o.threads = 1;
+    const RenderResult one = render(s, accel, o);
+    o.threads = 2;
+    CHECK(same_bits(one.image, render(s, accel, o).image));
+}
