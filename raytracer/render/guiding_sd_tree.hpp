@@ -63,12 +63,14 @@ public:
     // grazing angles and carry almost nothing. Measured, 128x96 1024 spp: per-sample error
     // 0.97x, CPU time 1.07x; not worth it.)
     static constexpr double kNeeMissShare = 0.5;
-    // At the end of iteration kDecisionIteration (15 passes on a small image), guiding switches
+    // At the end of iteration kDecisionIteration (3 passes on a small image), guiding switches
     // itself off for the rest of the render when fewer than kMinGuidedShare of the iteration's
     // records fell in leaves that would guide: recording and looking up leaves cost every path
-    // vertex, and pay only at the guided ones. Measured shares: smallpt 0.97, default 0.18,
-    // cornell-box 0.06 (96x72).
-    static constexpr int kDecisionIteration = 3;
+    // vertex, and pay only at the guided ones. Measured shares at iterations 1 / 3 / 5 (96x72):
+    // smallpt 1.00 / 0.97 / 0.91, default 0.18 / 0.18 / 0.33, cornell-box 0.10 / 0.06 / 0.11.
+    // Decided early: the passes before it, guided by a guide learned from one or two passes, were
+    // what still cost cornell-box up to 6% at equal time when the decision came after iteration 3.
+    static constexpr int kDecisionIteration = 1;
     static constexpr double kMinGuidedShare = 0.5;
 
     // Adds one pass's records, batch by batch in order, to the building quadtrees (the first

@@ -262,7 +262,8 @@ TEST_CASE("guiding: switches itself off where next event estimation finds the li
     };
     const auto [lit_active, lit_passes] = train(true);
     CHECK_FALSE(lit_active);
-    CHECK(lit_passes == 15);  // decided at the end of iteration 3, training stopped there
+    // Decided at the end of iteration kDecisionIteration (2^(k+1) - 1 passes), training stopped there.
+    CHECK(lit_passes == (2 << GuidingSdTree::kDecisionIteration) - 1);
     const auto [dark_active, dark_passes] = train(false);
     CHECK(dark_active);
     CHECK(dark_passes == 40);
