@@ -72,6 +72,16 @@ Scene smallpt(int width, int height) {
     return s;
 }
 
+// Guiding on, with the spp, depth and seed a test needs.
+RenderOptions guided_options(int spp, int max_depth, std::uint64_t seed) {
+    RenderOptions o;
+    o.spp = spp;
+    o.max_depth = max_depth;
+    o.seed = seed;
+    o.guiding = true;
+    return o;
+}
+
 bool same_bits(const Image& a, const Image& b) {
     return a.width == b.width && a.height == b.height &&
            std::memcmp(a.pixels.data(), b.pixels.data(), a.pixels.size() * sizeof(glm::vec3)) == 0;
@@ -199,11 +209,7 @@ TEST_CASE("guiding: a guided render is the same bit for bit on 1, 2 and 3 thread
 TEST_CASE("guiding: guided and unguided renders of smallpt agree within the variance bound", "[render][guiding]") {
     const Scene scene = smallpt(32, 24);
     const DoublePrecisionAccel accel(scene);
-    RenderOptions o;
-    o.spp = 128;
-    o.max_depth = 6;
-    o.seed = 31;
-    o.guiding = true;
+    RenderOptions o = guided_options(128, 6, 31);
     const RenderResult guided = render(scene, accel, o);
     o.guiding = false;
     o.seed = 32;
@@ -274,11 +280,7 @@ TEST_CASE("guiding: a large image's shorter iterations are the same bit for bit 
     // three times (after passes 1, 2 and 4) and use it.
     const Scene s = smallpt(256, 192);
     const DoublePrecisionAccel accel(s);
-    RenderOptions o;
-    o.spp = 5;
-    o.max_depth = 4;
-    o.seed = 13;
-    o.guiding = true;
+    RenderOptions o = guided_options(5, 4, 13);
     o.threads = 1;
     const RenderResult one = render(s, accel, o);
     o.threads = 2;
