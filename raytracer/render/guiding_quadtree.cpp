@@ -76,8 +76,9 @@ void DirectionalQuadtree::freeze() {
     }
 }
 
-glm::vec3 DirectionalQuadtree::sample(float u1, float u2) const {
+glm::vec3 DirectionalQuadtree::sample(float u1, float u2, float* density) const {
     float ux = u1, uy = u2;
+    float d = 1.0f / (4.0f * kPi);  // as pdf() multiplies it
     float ox = 0.0f, oy = 0.0f, size = 1.0f;  // the cell: powers of two, exact in float
     std::uint32_t node = 0;
     for (;;) {
@@ -86,6 +87,7 @@ glm::vec3 DirectionalQuadtree::sample(float u1, float u2) const {
         // share exactly 0, so it is never picked (and pick_upper never divides by zero).
         const int xb = pick_upper(ux, n.low_x) ? 1 : 0;
         const int yb = pick_upper(uy, n.low_y[xb]) ? 1 : 0;
+        d *= factor(n, xb, yb);
         size *= 0.5f;
         ox += float(xb) * size;
         oy += float(yb) * size;
@@ -93,6 +95,7 @@ glm::vec3 DirectionalQuadtree::sample(float u1, float u2) const {
         if (next == 0) break;
         node = next;
     }
+    if (density != nullptr) *density = d;
     return square_to_direction(glm::vec2(ox + ux * size, oy + uy * size));
 }
 

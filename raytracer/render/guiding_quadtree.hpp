@@ -35,8 +35,10 @@ public:
     // Computes the ratios sample() and pdf() read from the energies; call once recording is done.
     void freeze();
     // A direction drawn from the tree's distribution, from two uniforms in [0, 1).
-    // Requires total() > 0 and freeze().
-    glm::vec3 sample(float u1, float u2) const;
+    // Requires total() > 0 and freeze(). With `density`, also its solid-angle density, the
+    // product of the descent's factors: what pdf() of the direction gives (the same factors of
+    // the same cells), without mapping it back (an atan2 and a second descent).
+    glm::vec3 sample(float u1, float u2, float* density = nullptr) const;
     // Solid-angle density of sample() producing `dir`. Requires total() > 0 and freeze().
     float pdf(const glm::vec3& dir) const;
 
