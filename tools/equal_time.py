@@ -62,15 +62,21 @@ def reference(args, name, w, h, ref_spp):
         halves.append(read_pfm(path))
     a, b = halves
     ref = 0.5 * (a + b)
-    ref_var = float(np.mean((a - b) ** 2) / 4.0)  # mean per-pixel variance of the reference
+    # Mean per-pixel variance of the reference, linear and in display space (the latter an
+    # approximation: the display map is not linear, but is smooth away from the clamp).
+    ref_var = (float(np.mean((a - b) ** 2) / 4.0), float(np.mean((display(a) - display(b)) ** 2) / 4.0))
     return ref, ref_var, halves
+
+
+def display(x):
+    return np.clip(x, 0.0, 1.0) ** (1.0 / 2.2)
 
 
 def errors(img, ref, ref_var):
     mse = float(np.mean((img - ref) ** 2))
-    disp = lambda x: np.clip(x, 0.0, 1.0) ** (1.0 / 2.2)
-    return {"rmse": mse ** 0.5, "rmse_net": max(mse - ref_var, 0.0) ** 0.5,
-            "rmse_display": float(np.mean((disp(img) - disp(ref)) ** 2)) ** 0.5}
+    mse_d = float(np.mean((display(img) - display(ref)) ** 2))
+    return {"rmse": mse ** 0.5, "rmse_net": max(mse - ref_var[0], 0.0) ** 0.5,
+            "rmse_display": mse_d ** 0.5, "rmse_display_net": max(mse_d - ref_var[1], 0.0) ** 0.5}
 
 
 def z_test(g1, g2, r1, r2, block=8, false_alarm=1e-4):
@@ -98,6 +104,56 @@ def z_test(g1, g2, r1, r2, block=8, false_alarm=1e-4):
             f"{int((z > limit).any(axis=2).sum())} of {hb * wb} blocks over")
 
 
+def outliers(img, factor=4.0, floor=0.5):
+    """Pixels whose luminance exceeds `factor` times the median of their 5x5 neighbourhood and
+    that median by more than `floor` (linear radiance): isolated bright pixels."""
+    lum = img @ np.array([0.2126, 0.7152, 0.0722])
+    h, w = lum.shape
+    pad = np.pad(lum, 2, mode="edge")
+    stack = np.stack([pad[dy:dy + h, dx:dx + w] for dy in range(5) for dx in range(5)])
+    med = np.median(stack, axis=0)
+    return (lum > factor * med) & (lum > med + floor)
+
+
+def fireflies(a, b):
+    """Fireflies of two renders with different seeds, counted without a reference (so the README's
+    full-size showcase can be judged at its own spp): outlier pixels of either image that are not
+    outliers of the other (a small bright light or a highlight is an outlier in both)."""
+    oa, ob = outliers(a), outliers(b)
+    return int(np.count_nonzero(oa & ~ob)) + int(np.count_nonzero(ob & ~oa))
+
+
+def bright_share(img, ref):
+    """The pixels that see a light (reference luminance channel above 1) and their 8 neighbours:
+    their share of the pixels, and of the image's linear squared error."""
+    bright = ref.max(axis=2) > 1.0
+    near = bright.copy()
+    for dy in (-1, 0, 1):
+        for dx in (-1, 0, 1):
+            near |= np.roll(np.roll(bright, dy, 0), dx, 1)
+    se = ((img - ref) ** 2).sum(axis=2)
+    return float(near.mean()), float(se[near].sum() / se.sum())
+
+
+def firefly_lines(args):
+    """scenes/default.json at its own size and spp (the README's image), guiding off and on,
+    seeds 7 and 8: the firefly count of each."""
+    work = os.path.join(args.build, "equal-time")
+    lines = []
+    for mode in ("off", "on"):
+        images = []
+        for seed in (7, 8):
+            out = os.path.join(work, f"fireflies-default-{mode}-{seed}.pfm")
+            if not (args.reuse and os.path.exists(out)):
+                cmd = [args.binary, "render", "scenes/default.json", "-o", out, "--guiding", mode, "--seed", str(seed),
+                       "--threads", str(args.threads), "--quiet"]
+                if subprocess.run(cmd).returncode != 0:
+                    raise SystemExit(f"equal_time: {' '.join(cmd)} failed")
+            images.append(read_pfm(out))
+        lines.append(f"- guiding {mode}: {fireflies(*images)} firefly pixels in two renders (seeds 7, 8)")
+    return lines
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--build", default="build")
@@ -105,20 +161,30 @@ def main():
     ap.add_argument("--threads", type=int, default=2)
     ap.add_argument("--scenes", default=",".join(s[0] for s in SCENES))
     ap.add_argument("--docs", default="docs")
+    ap.add_argument("--size", help="WxH for every scene instead of the reduced sizes (e.g. 1024x768)")
+    ap.add_argument("--ref-spp", type=int, help="reference spp (both halves) instead of the table's")
+    ap.add_argument("--no-z-test", action="store_true", help="skip the unbiasedness test (one more render per scene)")
     ap.add_argument("--reuse", action="store_true",
                     help="reuse timed renders already in BUILD/equal-time (same binary only: the spp is re-read)")
+    ap.add_argument("--fireflies", action="store_true",
+                    help="also count fireflies in scenes/default.json at its own size and spp, guiding off and on")
     args = ap.parse_args()
     args.binary = os.path.join(args.build, "sweeptrace")
     times = [float(t) for t in args.times.split(",")]
     work = os.path.join(args.build, "equal-time")
-    rows, z_lines = [], []
+    rows, z_lines, bright_lines = [], [], []
+    args.scene_table = []
     for name, w, h, ref_spp in SCENES:
         if name not in args.scenes.split(","):
             continue
+        if args.size:
+            w, h = (int(v) for v in args.size.split("x"))
+        ref_spp = args.ref_spp or ref_spp
+        args.scene_table.append((name, w, h, ref_spp))
         ref, ref_var, halves = reference(args, name, w, h, ref_spp)
         for t in times:
             for mode in ("off", "on"):
-                out = os.path.join(work, f"{name}-{mode}-{t:g}.pfm")
+                out = os.path.join(work, f"{name}-{w}x{h}-{mode}-{t:g}.pfm")
                 spp_file = out + ".spp"
                 if args.reuse and os.path.exists(out) and os.path.exists(spp_file):
                     spp = int(open(spp_file).read())
@@ -131,14 +197,22 @@ def main():
                 e = errors(read_pfm(out), ref, ref_var)
                 rows.append(dict(scene=name, size=f"{w}x{h}", ref_spp=ref_spp, t=t, guiding=mode, spp=spp, **e))
                 print(f"{name} T={t:g} guiding {mode}: {spp} spp, RMSE {e['rmse']:.5f} "
-                      f"(net {e['rmse_net']:.5f}), display {e['rmse_display']:.5f}", file=sys.stderr)
+                      f"(net {e['rmse_net']:.5f}), display {e['rmse_display']:.5f} "
+                      f"(net {e['rmse_display_net']:.5f})", file=sys.stderr)
+        for mode in ("off", "on"):
+            px, err = bright_share(read_pfm(os.path.join(work, f"{name}-{w}x{h}-{mode}-{times[-1]:g}.pfm")), ref)
+            bright_lines.append(f"- {name}, guiding {mode}: {100 * px:.1f}% of the pixels, {100 * err:.1f}% of the squared error")
+        if args.no_z_test:
+            continue
         t = times[-1]
-        second = os.path.join(work, f"{name}-on-{t:g}-seed8.pfm")
+        second = os.path.join(work, f"{name}-{w}x{h}-on-{t:g}-seed8.pfm")
         if not (args.reuse and os.path.exists(second)):
             render(args.binary, f"scenes/{name}.json", w, h, second,
                    ["--time", str(t), "--time-clock", "cpu", "--guiding", "on", "--seed", "8",
                     "--threads", str(args.threads), "--quiet"])
-        z_lines.append((name, z_test(read_pfm(os.path.join(work, f"{name}-on-{t:g}.pfm")), read_pfm(second), *halves)))
+        z_lines.append((name, z_test(read_pfm(os.path.join(work, f"{name}-{w}x{h}-on-{t:g}.pfm")), read_pfm(second), *halves)))
+    args.firefly_lines = firefly_lines(args) if args.fireflies else []
+    args.bright_lines = bright_lines
     write_docs(args, rows, z_lines, times)
 
 
@@ -163,8 +237,8 @@ def write_docs(args, rows, z_lines, times):
           "RMSE linear: against the reference; net: with the reference's own noise subtracted; "
           "display: clamp to [0, 1], gamma 1/2.2. Ratio = guided / unguided at the same T.", "",
           "| scene | size | T (CPU s) | spp off | spp on | RMSE off | RMSE on | ratio | net off | net on | net ratio "
-          "| display off | display on | display ratio |",
-          "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
+          "| display off | display on | display ratio | display net ratio |",
+          "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
     for s in scenes:
         for t in times:
             off = next(r for r in rows if r["scene"] == s and r["t"] == t and r["guiding"] == "off")
@@ -173,13 +247,22 @@ def write_docs(args, rows, z_lines, times):
             md.append(f"| {s} | {off['size']} | {t:g} | {off['spp']} | {on['spp']} | {off['rmse']:.4g} | "
                       f"{on['rmse']:.4g} | {ratio('rmse'):.3f} | {off['rmse_net']:.4g} | {on['rmse_net']:.4g} | "
                       f"{ratio('rmse_net'):.3f} | {off['rmse_display']:.4g} | {on['rmse_display']:.4g} | "
-                      f"{ratio('rmse_display'):.3f} |")
-    md += ["", "References: " + ", ".join(f"{s[0]} {s[1]}x{s[2]} {s[3]} spp" for s in SCENES if s[0] in scenes) + ".",
-           "", f"Unbiasedness: block z-test (8x8 blocks, linear) of the mean of two guided T = {times[-1]:g} renders "
+                      f"{ratio('rmse_display'):.3f} | {ratio('rmse_display_net'):.3f} |")
+    md += ["", "References: " + ", ".join(f"{s[0]} {s[1]}x{s[2]} {s[3]} spp" for s in args.scene_table) + ".",
+           "Display net: display MSE minus the reference's display-space noise (from its halves), an approximation.", ""]
+    if z_lines:
+        md += [f"Unbiasedness: block z-test (8x8 blocks, linear) of the mean of two guided T = {times[-1]:g} renders "
            "(seeds 7 and 8) against the reference (its two halves), each side's noise estimated from its two "
            "independent halves, limit by Bonferroni at family-wise false alarm 1e-4:", ""]
     md += [f"- {s}: {line}" for s, line in z_lines]
-    with open(os.path.join(args.docs, "equal-time.md"), "w") as f:
+    md += ["", f"Where the error is, at T = {times[-1]:g}: the pixels that see a light (reference above 1 in a "
+           "channel) and their 8 neighbours (`bright_share()` in the tool):", ""] + args.bright_lines
+    if args.firefly_lines:
+        md += ["", "Fireflies (item 5): scenes/default.json at its own 640x360, 64 spp; a firefly is a pixel whose "
+               "luminance is over 4x the median of its 5x5 neighbourhood and over that median + 0.5, in one of "
+               "two renders (seeds 7 and 8) but not at the same pixel of the other (`fireflies()` in the tool):", ""] + args.firefly_lines
+    stem = "equal-time" + (f"-{args.size}" if args.size else "")
+    with open(os.path.join(args.docs, stem + ".md"), "w") as f:
         f.write("\n".join(md) + "\n")
 
     fig, axes = plt.subplots(2, len(scenes), figsize=(4.2 * len(scenes), 7), squeeze=False)
@@ -195,7 +278,7 @@ def write_docs(args, rows, z_lines, times):
             ax.grid(True, which="both", alpha=0.3)
             ax.legend()
     fig.tight_layout()
-    fig.savefig(os.path.join(args.docs, "equal-time.png"), dpi=100)
+    fig.savefig(os.path.join(args.docs, stem + ".png"), dpi=100)
 
 
 if __name__ == "__main__":

@@ -65,21 +65,29 @@ void DirectionalQuadtree::freeze() {
     for (std::size_t i = 0; i < nodes_.size(); ++i) {
         const double sum = energy_[i].sum();
         if (!(sum > 0.0)) continue;  // never reached: its parent's quadrant has no energy
-        for (int q = 0; q < 4; ++q) nodes_[i].factor[q] = static_cast<float>(4.0 * energy_[i].e[q] / sum);
+        const double* e = energy_[i].e;
+        Node& n = nodes_[i];
+        n.low_x = static_cast<float>((e[0] + e[2]) / sum);
+        for (int xb = 0; xb < 2; ++xb) {
+            const double column = e[xb] + e[xb + 2];
+            // A column with no energy is never picked; any split keeps its density 0.
+            n.low_y[xb] = column > 0.0 ? static_cast<float>(e[xb] / column) : 0.5f;
+        }
     }
 }
 
-glm::vec3 DirectionalQuadtree::sample(float u1, float u2) const {
+glm::vec3 DirectionalQuadtree::sample(float u1, float u2, float* density) const {
     float ux = u1, uy = u2;
+    float d = 1.0f / (4.0f * kPi);  // as pdf() multiplies it
     float ox = 0.0f, oy = 0.0f, size = 1.0f;  // the cell: powers of two, exact in float
     std::uint32_t node = 0;
     for (;;) {
         const Node& n = nodes_[node];
         // The column by its share, then the quadrant within it; a column with no energy has
-        // share exactly 0, so it is never picked (and never divides by zero below).
-        const float left = n.factor[0] + n.factor[2], right = n.factor[1] + n.factor[3];
-        const int xb = pick_upper(ux, left / (left + right)) ? 1 : 0;
-        const int yb = pick_upper(uy, n.factor[xb] / (n.factor[xb] + n.factor[xb + 2])) ? 1 : 0;
+        // share exactly 0, so it is never picked (and pick_upper never divides by zero).
+        const int xb = pick_upper(ux, n.low_x) ? 1 : 0;
+        const int yb = pick_upper(uy, n.low_y[xb]) ? 1 : 0;
+        d *= factor(n, xb, yb);
         size *= 0.5f;
         ox += float(xb) * size;
         oy += float(yb) * size;
@@ -87,6 +95,7 @@ glm::vec3 DirectionalQuadtree::sample(float u1, float u2) const {
         if (next == 0) break;
         node = next;
     }
+    if (density != nullptr) *density = d;
     return square_to_direction(glm::vec2(ox + ux * size, oy + uy * size));
 }
 
@@ -99,7 +108,7 @@ float DirectionalQuadtree::pdf(const glm::vec3& dir) const {
         const Node& n = nodes_[node];
         const int xb = x >= 0.5f ? 1 : 0, yb = y >= 0.5f ? 1 : 0;
         const int q = xb + 2 * yb;
-        density *= n.factor[q];
+        density *= factor(n, xb, yb);
         if (n.child[q] == 0 || density == 0.0f) return density;
         x = 2.0f * x - float(xb);  // exact in float too
         y = 2.0f * y - float(yb);

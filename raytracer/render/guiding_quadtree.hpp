@@ -7,7 +7,7 @@
 // the density on the sphere. Each node holds the recorded energy of its four quadrants; a
 // quadrant is either a leaf or another node. Sampling descends choosing quadrants in proportion
 // to their energy and ends uniform inside a leaf; pdf() follows the same descent, so the density
-// it returns is the one sample() draws with (both read the same per-quadrant factors, which
+// it returns is the one sample() draws with (both read the same per-node probabilities, which
 // freeze() computes once in float: equal up to float rounding).
 //
 // Quadrant order: index = x_bit + 2 y_bit, x_bit = (u >= mid), y_bit = (v >= mid).
@@ -35,8 +35,10 @@ public:
     // Computes the ratios sample() and pdf() read from the energies; call once recording is done.
     void freeze();
     // A direction drawn from the tree's distribution, from two uniforms in [0, 1).
-    // Requires total() > 0 and freeze().
-    glm::vec3 sample(float u1, float u2) const;
+    // Requires total() > 0 and freeze(). With `density`, also its solid-angle density, the
+    // product of the descent's factors: what pdf() of the direction gives (the same factors of
+    // the same cells), without mapping it back (an atan2 and a second descent).
+    glm::vec3 sample(float u1, float u2, float* density = nullptr) const;
     // Solid-angle density of sample() producing `dir`. Requires total() > 0 and freeze().
     float pdf(const glm::vec3& dir) const;
 
@@ -51,10 +53,22 @@ public:
 private:
     // Hot and cold halves apart: a descent reads 32 bytes per level (half a cache line), and the
     // energies are read only when recording and rebuilding.
+    // freeze() stores the descent's choices as probabilities (sample() divides by nothing but
+    // them; the divisions per level were a fifth of a guided sample's quadtree time): the lower
+    // column's, and each column's lower quadrant's. pdf() multiplies the same numbers, so the two
+    // agree by construction.
     struct Node {
         std::uint32_t child[4] = {0, 0, 0, 0};  // 0: the quadrant is a leaf (node 0 is the root)
-        float factor[4] = {0.0f, 0.0f, 0.0f, 0.0f};  // from freeze(): 4 e_q / sum, the density factor
+        float low_x = 0.5f;                     // P(x_bit = 0)
+        float low_y[2] = {0.5f, 0.5f};          // P(y_bit = 0 | x_bit)
+        float pad = 0.0f;
     };
+    // 4 P(quadrant): the density factor of one level (the quadrant is a quarter of the cell).
+    static float factor(const Node& n, int xb, int yb) {
+        const float px = xb ? 1.0f - n.low_x : n.low_x;
+        const float py = yb ? 1.0f - n.low_y[xb] : n.low_y[xb];
+        return 4.0f * px * py;
+    }
     struct Energy {
         double e[4] = {0.0, 0.0, 0.0, 0.0};
         double sum() const { return e[0] + e[1] + e[2] + e[3]; }

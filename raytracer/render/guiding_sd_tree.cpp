@@ -55,13 +55,19 @@ void GuidingSdTree::add(const std::vector<std::vector<GuideRecord>>& batches) {
         }
 }
 
+long long GuidingSdTree::passes_of_iteration(int k) const {
+    const double passes = std::ldexp(1.0, k);
+    if (double(paths_per_pass_) <= kIterationPaths) return static_cast<long long>(passes);
+    return std::max(1ll, static_cast<long long>(std::ceil(passes * kIterationPaths / double(paths_per_pass_))));
+}
+
 void GuidingSdTree::end_pass(int completed_passes) {
     if (!training()) return;
-    // Iteration k ends when 2^(k+1) - 1 passes are done.
-    const long long end = (2ll << iterations_done_) - 1;
-    if (completed_passes < end) return;
+    if (iteration_end_ == 0) iteration_end_ = passes_of_iteration(0);
+    if (completed_passes < iteration_end_) return;
     end_iteration(iterations_done_);
     ++iterations_done_;
+    iteration_end_ += passes_of_iteration(iterations_done_);
 }
 
 void GuidingSdTree::split(std::uint32_t node, double threshold) {
@@ -83,15 +89,28 @@ void GuidingSdTree::split(std::uint32_t node, double threshold) {
     split(first + 1, threshold);
 }
 
+double GuidingSdTree::guided_record_share() const {
+    double all = 0.0, guided = 0.0;
+    for (const Leaf& leaf : leaves_) {
+        all += double(leaf.records);
+        if (misses_nee(leaf)) guided += double(leaf.records);
+    }
+    return all > 0.0 ? guided / all : 0.0;
+}
+
 void GuidingSdTree::end_iteration(int iteration) {
     const double threshold = kSplitRecords * std::sqrt(std::ldexp(1.0, iteration));
     const std::size_t nodes = nodes_.size();
     for (std::uint32_t n = 0; n < nodes; ++n) split(n, threshold);
+    if (iteration == kDecisionIteration && guided_record_share() < kMinGuidedShare) {
+        off_ = true;
+        for (Leaf& leaf : leaves_) leaf.usable = false;
+        return;
+    }
     for (Leaf& leaf : leaves_) {
         leaf.sampling = std::move(leaf.building);
         leaf.sampling.freeze();
-        leaf.learning =
-            leaf.light_samples == 0 || double(leaf.light_misses) > kNeeMissShare * double(leaf.light_samples);
+        leaf.learning = misses_nee(leaf);
         leaf.usable = leaf.learning && leaf.sampling.total() > 0.0;
         leaf.light_samples = leaf.light_misses = 0;
         leaf.building = leaf.sampling.refined(kQuadtreeThreshold, kQuadtreeMaxDepth);

@@ -6,7 +6,10 @@
 //
 // Training (§3.4) runs in iterations of doubling length: iteration k spans 2^k passes of one
 // sample per pixel (passes 2^k - 1 .. 2^(k+1) - 2), for kTrainingIterations iterations; later
-// passes sample the last guide without recording. At its end, building becomes sampling; a
+// passes sample the last guide without recording. What doubles is the number of paths: on an
+// image of more than kIterationPaths pixels, iteration k spans 2^k kIterationPaths paths,
+// rounded up to whole passes (at least one), so a large image learns the guide as well in fewer
+// passes and spends the rest of its time guided and not recording. At its end, building becomes sampling; a
 // leaf that received more than kSplitRecords * sqrt(2^k) records splits (repeatedly, assuming its
 // records spread evenly) and its children start from copies of its quadtrees; each new building
 // quadtree takes the structure its sampling tree's energy asks for (quadrants holding more than
@@ -15,6 +18,8 @@
 // (kNeeMissShare): a choice of where to guide, so any rule keeps the estimator unbiased. Leaves
 // where NEE found the light only count records in the next iteration (no quadtree updates), so
 // they learn again, one iteration late, if that changes.
+// Where few leaves would guide (kMinGuidedShare), guiding switches itself off after
+// kDecisionIteration: a scene whose lights next event estimation finds pays almost nothing for it.
 //
 // Determinism: the tree changes only between passes, from records merged in a fixed order (the
 // renderer adds each tile's records in tile order, each tile's in pixel order), so the guide a
@@ -50,10 +55,23 @@ public:
     // about as much as the guide saves on scenes next event estimation already handles, and the
     // guide gains little from more records once its cells are fine.
     static constexpr int kTrainingIterations = 8;
+    static constexpr double kIterationPaths = 16384.0;  // the paths of iteration 0 (at most)
     // A leaf guides only where next event estimation fails more often than this (its light
     // samples blocked or on the wrong side): where NEE finds the light, BSDF sampling is
-    // already the right partner for it and the guide would only add its cost.
+    // already the right partner for it and the guide would only add its cost. (Judged by
+    // energy instead, smallpt's ceiling would be guided too: its light samples reach the cap at
+    // grazing angles and carry almost nothing. Measured, 128x96 1024 spp: per-sample error
+    // 0.97x, CPU time 1.07x; not worth it.)
     static constexpr double kNeeMissShare = 0.5;
+    // At the end of iteration kDecisionIteration (3 passes on a small image), guiding switches
+    // itself off for the rest of the render when fewer than kMinGuidedShare of the iteration's
+    // records fell in leaves that would guide: recording and looking up leaves cost every path
+    // vertex, and pay only at the guided ones. Measured shares at iterations 1 / 3 / 5 (96x72):
+    // smallpt 1.00 / 0.97 / 0.91, default 0.18 / 0.18 / 0.33, cornell-box 0.10 / 0.06 / 0.11.
+    // Decided early: the passes before it, guided by a guide learned from one or two passes, were
+    // what still cost cornell-box up to 6% at equal time when the decision came after iteration 3.
+    static constexpr int kDecisionIteration = 1;
+    static constexpr double kMinGuidedShare = 0.5;
 
     // Adds one pass's records, batch by batch in order, to the building quadtrees (the first
     // pass with records also fixes the box).
@@ -61,6 +79,10 @@ public:
     // Call after each completed pass with the number of passes completed so far: at the end of
     // an iteration, the building distribution becomes the sampling one and the tree is refined.
     void end_pass(int completed_passes);
+    // The paths one pass traces (the image's pixels); before the first end_pass. 0: 2^k passes.
+    void set_paths_per_pass(std::uint64_t paths) { paths_per_pass_ = paths; }
+    // The passes iteration k spans.
+    long long passes_of_iteration(int k) const;
 
     // The leaf holding `point` (valid until the next end_pass).
     std::uint32_t leaf_of(const glm::vec3& point) const;
@@ -70,7 +92,9 @@ public:
     }
     const DirectionalQuadtree* guide(const glm::vec3& point) const { return guide_at(leaf_of(point)); }
 
-    bool training() const { return iterations_done_ < kTrainingIterations; }
+    bool training() const { return !off_ && iterations_done_ < kTrainingIterations; }
+    // False once guiding switched itself off (kMinGuidedShare): no leaf guides any more.
+    bool active() const { return !off_; }
     std::size_t leaf_count() const { return leaves_.size(); }
     int iterations_done() const { return iterations_done_; }
 
@@ -89,12 +113,21 @@ private:
     void set_box(const std::vector<std::vector<GuideRecord>>& batches);
     void end_iteration(int iteration);
     void split(std::uint32_t node, double threshold);
+    // NEE missed in more than kNeeMissShare of the leaf's light samples (or took none): it learns.
+    static bool misses_nee(const Leaf& leaf) {
+        return leaf.light_samples == 0 || double(leaf.light_misses) > kNeeMissShare * double(leaf.light_samples);
+    }
+    // The share of this iteration's records in leaves that learn.
+    double guided_record_share() const;
 
     glm::vec3 lo_{0.0f}, size_{0.0f};
     bool has_box_ = false;
     std::vector<Node> nodes_{Node{}};
     std::vector<Leaf> leaves_{Leaf{}};
     int iterations_done_ = 0;
+    bool off_ = false;
+    std::uint64_t paths_per_pass_ = 0;
+    long long iteration_end_ = 0;  // completed passes at which the current iteration ends (0: not yet set)
 };
 
 }  // namespace sweeptrace

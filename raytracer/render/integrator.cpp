@@ -94,7 +94,7 @@ glm::vec3 PathIntegrator::radiance(collision::Ray ray, PixelSampler& sampler, st
         const bool delta = is_delta(mat);
         const bool learn = recorder.on() && is_guided(mat);
         const DirectionalQuadtree* guide = nullptr;
-        if (guide_ != nullptr && is_guided(mat)) {
+        if (guide_ != nullptr && guide_->active() && is_guided(mat)) {
             const std::uint32_t leaf = guide_->leaf_of(hit.point);
             guide = guide_->guide_at(leaf);
             recorder.at_leaf(leaf);

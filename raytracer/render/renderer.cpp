@@ -56,6 +56,7 @@ public:
         if (opt.guiding) {
             tile_records_.resize(static_cast<std::size_t>(tiles_x_) * tiles_y_);
             integrator_.set_guide(&guide_);
+            guide_.set_paths_per_pass(sum_.size());
         }
     }
 

@@ -72,6 +72,16 @@ Scene smallpt(int width, int height) {
     return s;
 }
 
+// Guiding on, with the spp, depth and seed a test needs.
+RenderOptions guided_options(int spp, int max_depth, std::uint64_t seed) {
+    RenderOptions o;
+    o.spp = spp;
+    o.max_depth = max_depth;
+    o.seed = seed;
+    o.guiding = true;
+    return o;
+}
+
 bool same_bits(const Image& a, const Image& b) {
     return a.width == b.width && a.height == b.height &&
            std::memcmp(a.pixels.data(), b.pixels.data(), a.pixels.size() * sizeof(glm::vec3)) == 0;
@@ -101,8 +111,11 @@ TEST_CASE("guiding: the quadtree samples the density pdf() states (chi-square on
     std::vector<int> count(p.size(), 0);
     Rng rng(9, 9, 9);
     double mc_integral = 0.0;  // E[1 / pdf] over samples = the measure of the support = 4 pi
+    int density_differs = 0;   // the descent's density is pdf()'s but where the map's rounding changes cell
     for (int s = 0; s < kSamples; ++s) {
-        const glm::vec3 d = tree.sample(rng.uniform(), rng.uniform());
+        float descent = 0.0f;
+        const glm::vec3 d = tree.sample(rng.uniform(), rng.uniform(), &descent);
+        if (descent != Approx(tree.pdf(d)).epsilon(1e-5)) ++density_differs;
         const glm::vec2 q = direction_to_square(d);
         ++count[static_cast<std::size_t>(int(q.y * kGrid)) * kGrid + int(q.x * kGrid)];
         mc_integral += 1.0 / tree.pdf(d);
@@ -122,6 +135,8 @@ TEST_CASE("guiding: the quadtree samples the density pdf() states (chi-square on
     CHECK(impossible == 0);
     CHECK(chi2 < dof + 6.0 * std::sqrt(2.0 * dof));  // about 6 sigma of the chi-square distribution
     CHECK(mc_integral / kSamples == Approx(4.0 * M_PI).epsilon(0.02));
+    INFO(density_differs << " samples of " << kSamples << " whose descent density differs from pdf()");
+    CHECK(density_differs < kSamples / 1000);
 }
 
 TEST_CASE("guiding: mixture samples weigh f cos / (the mixture's density): E[weight] = albedo", "[render][guiding]") {
@@ -199,11 +214,7 @@ TEST_CASE("guiding: a guided render is the same bit for bit on 1, 2 and 3 thread
 TEST_CASE("guiding: guided and unguided renders of smallpt agree within the variance bound", "[render][guiding]") {
     const Scene scene = smallpt(32, 24);
     const DoublePrecisionAccel accel(scene);
-    RenderOptions o;
-    o.spp = 128;
-    o.max_depth = 6;
-    o.seed = 31;
-    o.guiding = true;
+    RenderOptions o = guided_options(128, 6, 31);
     const RenderResult guided = render(scene, accel, o);
     o.guiding = false;
     o.seed = 32;
@@ -217,4 +228,66 @@ TEST_CASE("guiding: guided and unguided renders of smallpt agree within the vari
     const BlockTestResult t = block_test(plain.image, guided.image, variance, options);
     INFO(t.summary());
     CHECK(t.pass());
+}
+
+TEST_CASE("guiding: iterations double in paths, whole passes on a large image", "[render][guiding]") {
+    GuidingSdTree small;
+    small.set_paths_per_pass(128 * 96);  // up to kIterationPaths pixels: 2^k passes, as PPG
+    for (int k = 0; k < GuidingSdTree::kTrainingIterations; ++k) CHECK(small.passes_of_iteration(k) == (1ll << k));
+    GuidingSdTree large;
+    large.set_paths_per_pass(1024 * 768);  // 2^k * 16384 paths, rounded up to passes of 786432
+    const long long expected[] = {1, 1, 1, 1, 1, 1, 2, 3};
+    for (int k = 0; k < GuidingSdTree::kTrainingIterations; ++k) CHECK(large.passes_of_iteration(k) == expected[k]);
+    // end_pass follows it: iteration 6 takes passes 7 and 8 (a record a pass, from no light
+    // sample, keeps guiding on).
+    const std::vector<GuideRecord> record{{glm::vec3(0.5f), glm::vec3(0.0f, 0.0f, 1.0f), 1.0f}};
+    for (int pass = 1; pass <= 7; ++pass) {
+        large.add({record});
+        large.end_pass(pass);
+    }
+    CHECK(large.iterations_done() == 6);
+    large.add({record});
+    large.end_pass(8);
+    CHECK(large.iterations_done() == 7);
+    CHECK(large.active());
+}
+
+TEST_CASE("guiding: switches itself off where next event estimation finds the light", "[render][guiding]") {
+    // Each pass: vertex records everywhere, and light samples that find the light (lit) or not.
+    const auto train = [](bool lit) {
+        GuidingSdTree sd;
+        Rng rng(3, 3, 3);
+        int passes = 0;
+        while (sd.training() && passes < 40) {
+            std::vector<GuideRecord> records;
+            for (int i = 0; i < 3000; ++i) {
+                const glm::vec3 p(rng.uniform(), rng.uniform(), rng.uniform());
+                records.push_back({p, glm::vec3(0.0f, 0.0f, 1.0f), 1.0f});
+                records.push_back({p, glm::vec3(0.0f, 1.0f, 0.0f), lit ? 1.0f : 0.0f, 0, true});
+            }
+            for (GuideRecord& r : records) r.leaf = sd.leaf_of(r.point);
+            sd.add({records});
+            sd.end_pass(++passes);
+        }
+        return std::make_pair(sd.active(), passes);
+    };
+    const auto [lit_active, lit_passes] = train(true);
+    CHECK_FALSE(lit_active);
+    // Decided at the end of iteration kDecisionIteration (2^(k+1) - 1 passes), training stopped there.
+    CHECK(lit_passes == (2 << GuidingSdTree::kDecisionIteration) - 1);
+    const auto [dark_active, dark_passes] = train(false);
+    CHECK(dark_active);
+    CHECK(dark_passes == 40);
+}
+
+TEST_CASE("guiding: a large image's shorter iterations are the same bit for bit on 1 and 2 threads", "[render][guiding]") {
+    // 256x192 = 49152 pixels: iterations of 1, 1, 2, 3 passes, so 5 passes rebuild the guide
+    // three times (after passes 1, 2 and 4) and use it.
+    const Scene s = smallpt(256, 192);
+    const DoublePrecisionAccel accel(s);
+    RenderOptions o = guided_options(5, 4, 13);
+    o.threads = 1;
+    const RenderResult one = render(s, accel, o);
+    o.threads = 2;
+    CHECK(same_bits(one.image, render(s, accel, o).image));
 }
