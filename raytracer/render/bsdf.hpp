@@ -18,6 +18,21 @@
 //   chosen with probability F (total internal reflection when no refracted direction exists),
 //   inside/outside decided by the geometric normal. Refraction is tinted by albedo and scales
 //   radiance by 1/eta^2 (radiance is not conserved across a refractive boundary, pbrt §16.1).
+// - Rough dielectric: GGX microfacet reflection and refraction (Walter et al. 2007), the
+//   microfacet normal drawn from wo's visible normals like the metal, reflection or refraction
+//   about it chosen with its exact Fresnel reflectance; alpha = roughness^2 clamped like the
+//   metal's, refraction tinted by albedo and scaled by 1/eta^2 like the smooth dielectric.
+//   Single scattering (rough glass loses energy; the furnace tests state how much).
+//   roughness == 0 is the smooth dielectric, a delta lobe (render/bsdf_rough_dielectric.cpp).
+// - Coated diffuse ("plastic"): a smooth dielectric coating of index ior over a Lambertian base
+//   of albedo rho, the layer thin and clear. An analytic layered model, exact under those
+//   assumptions (render/bsdf_coated_diffuse.cpp derives it): a mirror lobe of weight F(cos_o)
+//   (delta, sampled but never evaluated) plus a diffuse lobe
+//     f = rho (1 - F(cos_i)) (1 - F(cos_o)) / (pi eta^2 (1 - rho Fint)),
+//   Fint = 1 - (1 - Fext) / eta^2 the interface's cosine-weighted mean reflectance seen from
+//   inside, Fext = int_0^1 2 mu F(mu) dmu from outside. Symmetric in wi and wo (reciprocal); its
+//   directional albedo is F_o + (1 - F_o) rho (1 - Fint) / (1 - rho Fint) <= 1, exactly 1 when
+//   rho = 1. The coating's roughness is not modelled (a smooth coat only).
 // - Emissive: a pure emitter, black (absorbs everything it does not emit).
 // Emission itself is not part of the BSDF; see emitted_radiance().
 #include <glm/vec3.hpp>
@@ -85,5 +100,15 @@ float fresnel_dielectric(float cos_i, float eta, float& cos_t);
 // delta in both lobes.
 float thin_dielectric_reflectance(float cos_i, float ior);
 bool sample_thin_dielectric(const Material& m, const ShadingContext& ctx, float u0, BsdfSample& out);
+
+// The rough dielectric (roughness > 0) and the coated diffuse; eval_bsdf / sample_bsdf dispatch here.
+BsdfEval eval_rough_dielectric(const Material& m, const ShadingContext& ctx, const glm::vec3& wi);
+bool sample_rough_dielectric(const Material& m, const ShadingContext& ctx, float u0, float u1, float u2,
+                             BsdfSample& out);
+BsdfEval eval_coated_diffuse(const Material& m, const ShadingContext& ctx, const glm::vec3& wi);
+bool sample_coated_diffuse(const Material& m, const ShadingContext& ctx, float u0, float u1, float u2,
+                           BsdfSample& out);
+// Fext above: the cosine-weighted hemispherical mean of fresnel_dielectric(mu, eta), eta >= 1.
+float fresnel_diffuse_reflectance(float eta);
 
 }  // namespace sweeptrace

@@ -1,0 +1,126 @@
+// The coated diffuse material (render/bsdf_coated_diffuse.cpp): its hemispherical Fresnel mean
+// against a long-double integral, reciprocity, its directional albedo against the closed form
+// (never above 1, exactly 1 for a white base), and a white coated sphere invisible in a white
+// furnace. Its pdf consistency is in test_render_bsdf_chi_square.cpp.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+
+#include "convergence_harness.hpp"
+#include "raytracer/render/bsdf.hpp"
+#include "raytracer/render/random.hpp"
+#include "render_test_stats.hpp"
+
+using namespace sweeptrace;
+using namespace sweeptrace::testing;
+using sweeptrace::test::Estimate;
+using sweeptrace::test::z_bound;
+
+namespace {
+
+SurfaceHit flat_hit() {
+    SurfaceHit h;
+    h.normal = {0.0f, 0.0f, 1.0f};
+    h.shading_normal = h.normal;
+    return h;
+}
+
+Material plastic(const glm::vec3& rho, float ior = 1.5f) {
+    Material m;
+    m.type = Material::Type::CoatedDiffuse;
+    m.albedo = rho;
+    m.ior = ior;
+    return m;
+}
+
+long double fresnel_ld(long double c, long double eta) {
+    const long double s2 = (1 - c * c) / (eta * eta);
+    if (s2 >= 1) return 1;
+    const long double t = std::sqrt(1 - s2);
+    const long double rs = (c - eta * t) / (c + eta * t), rp = (eta * c - t) / (eta * c + t);
+    return (rs * rs + rp * rp) / 2;
+}
+
+}  // namespace
+
+TEST_CASE("coated diffuse: the hemispherical mean of Fresnel matches a long-double integral", "[render][bsdf]") {
+    for (float eta : {1.0f, 1.1f, 1.33f, 1.5f, 2.0f, 3.0f}) {
+        long double ref = 0;  // midpoint rule, 200000 intervals: error far below 1e-9
+        constexpr int n = 200000;
+        for (int k = 0; k < n; ++k) {
+            const long double mu = (k + 0.5L) / n;
+            ref += 2 * mu * fresnel_ld(mu, eta) / n;
+        }
+        INFO("eta " << eta);
+        CHECK(std::abs(fresnel_diffuse_reflectance(eta) - static_cast<double>(ref)) < 2e-7);
+    }
+    CHECK(fresnel_diffuse_reflectance(1.5f) == Approx(0.0918).margin(5e-4));  // the textbook value ~0.092
+}
+
+TEST_CASE("coated diffuse: f(wo, wi) = f(wi, wo)", "[render][bsdf]") {
+    Rng rng(4, 0, 0);
+    const Material m = plastic({0.7f, 0.4f, 0.1f});
+    int checked = 0;
+    for (int i = 0; i < 4000; ++i) {
+        const glm::vec3 a = cosine_hemisphere(rng.uniform(), rng.uniform());
+        const glm::vec3 b = cosine_hemisphere(rng.uniform(), rng.uniform());
+        const BsdfEval ab = eval_bsdf(m, make_shading_context(flat_hit(), a), b);
+        const BsdfEval ba = eval_bsdf(m, make_shading_context(flat_hit(), b), a);
+        for (int c = 0; c < 3; ++c) {
+            if (b.z <= 0.0f || a.z <= 0.0f) continue;
+            REQUIRE(ab.f_cos[c] / b.z == Approx(ba.f_cos[c] / a.z).epsilon(1e-5));
+        }
+        checked += ab.pdf > 0.0f;
+    }
+    CHECK(checked > 3900);
+}
+
+TEST_CASE("coated diffuse: directional albedo is F + (1 - F) rho (1 - Fint) / (1 - rho Fint) <= 1", "[render][bsdf][furnace]") {
+    // Per incident angle, E[weight] over sampling (mirror lobe included) against the closed form;
+    // with rho = 1 it is 1: the model loses nothing, only the base's absorption is lost.
+    std::uint64_t seed = 1;
+    for (float rho : {0.0f, 0.3f, 0.8f, 1.0f})
+        for (float ior : {1.2f, 1.5f, 2.2f})
+            for (float theta : {0.0f, 0.6f, 1.2f, 1.5f}) {
+                const Material m = plastic(glm::vec3(rho), ior);
+                const glm::vec3 wo(std::sin(theta), 0.0f, std::cos(theta));
+                const ShadingContext ctx = make_shading_context(flat_hit(), wo);
+                Rng rng(++seed, 0, 0);
+                Estimate e;
+                for (int i = 0; i < 20000; ++i) {
+                    BsdfSample s;
+                    e.add(sample_bsdf(m, ctx, rng.uniform(), rng.uniform(), rng.uniform(), s) ? s.weight.g : 0.0);
+                }
+                float cos_t = 0.0f;
+                const double f = fresnel_dielectric(wo.z, ior, cos_t);
+                const double f_int = 1.0 - (1.0 - fresnel_diffuse_reflectance(ior)) / (ior * ior);
+                const double truth = f + (1.0 - f) * rho * (1.0 - f_int) / (1.0 - rho * f_int);
+                INFO("rho " << rho << " ior " << ior << " theta " << theta << ": " << e.mean << " +- " << e.standard_error()
+                            << ", closed form " << truth);
+                CHECK(truth <= 1.0 + 1e-6);
+                CHECK(std::abs(e.mean - truth) <= z_bound(100) * e.standard_error() + 1e-5);
+            }
+}
+
+TEST_CASE("coated diffuse: a white coated sphere in a white furnace is invisible", "[render][furnace]") {
+    // The sphere is convex: each path scatters once and escapes. With a white base the mirror
+    // and diffuse lobes together return all the light, so every pixel reads L (z-test per
+    // block against the exact image; 1e-5 relative covers Fext's quadrature error, < 2e-7).
+    constexpr int size = 32;
+    Scene scene = empty_scene(size, size);
+    scene.background.color = glm::vec3(0.6f, 0.8f, 1.0f);
+    scene.camera.position = {0.0f, 0.0f, 3.2f};
+    scene.camera.look_at = glm::vec3(0.0f);
+    scene.camera.vfov_degrees = 40.0f;
+    add_object(scene, collision::Sphere{glm::vec3(0.0f), 1.0f}, add_material(scene, plastic(glm::vec3(1.0f))),
+               glm::mat4(1.0f), "plastic");
+    Image truth(size, size);
+    for (auto& p : truth.pixels) p = scene.background.color;
+    for (AccelKind accel : {AccelKind::Bvh, AccelKind::Embree}) {
+        const RenderResult r = render_with(scene, accel, 16, 8, 9);
+        const BlockTestResult t = test_against_truth(truth, r, 4, 1e-5, nullptr);
+        INFO(t.summary());
+        CHECK(t.pass());
+        CHECK(r.stats.nonfinite_samples == 0);
+    }
+}
