@@ -6,7 +6,7 @@
 
 #include <cmath>
 
-#include "convergence_harness.hpp"
+#include "furnace_sphere.hpp"
 #include "raytracer/render/bsdf.hpp"
 #include "raytracer/render/random.hpp"
 #include "render_test_stats.hpp"
@@ -17,13 +17,6 @@ using sweeptrace::test::Estimate;
 using sweeptrace::test::z_bound;
 
 namespace {
-
-SurfaceHit flat_hit() {
-    SurfaceHit h;
-    h.normal = {0.0f, 0.0f, 1.0f};
-    h.shading_normal = h.normal;
-    return h;
-}
 
 Material plastic(const glm::vec3& rho, float ior = 1.5f) {
     Material m;
@@ -64,8 +57,8 @@ TEST_CASE("coated diffuse: f(wo, wi) = f(wi, wo)", "[render][bsdf]") {
     for (int i = 0; i < 4000; ++i) {
         const glm::vec3 a = cosine_hemisphere(rng.uniform(), rng.uniform());
         const glm::vec3 b = cosine_hemisphere(rng.uniform(), rng.uniform());
-        const BsdfEval ab = eval_bsdf(m, make_shading_context(flat_hit(), a), b);
-        const BsdfEval ba = eval_bsdf(m, make_shading_context(flat_hit(), b), a);
+        const BsdfEval ab = eval_bsdf(m, make_shading_context(flat_z_hit(), a), b);
+        const BsdfEval ba = eval_bsdf(m, make_shading_context(flat_z_hit(), b), a);
         for (int c = 0; c < 3; ++c) {
             if (b.z <= 0.0f || a.z <= 0.0f) continue;
             REQUIRE(ab.f_cos[c] / b.z == Approx(ba.f_cos[c] / a.z).epsilon(1e-5));
@@ -84,7 +77,7 @@ TEST_CASE("coated diffuse: directional albedo is F + (1 - F) rho (1 - Fint) / (1
             for (float theta : {0.0f, 0.6f, 1.2f, 1.5f}) {
                 const Material m = plastic(glm::vec3(rho), ior);
                 const glm::vec3 wo(std::sin(theta), 0.0f, std::cos(theta));
-                const ShadingContext ctx = make_shading_context(flat_hit(), wo);
+                const ShadingContext ctx = make_shading_context(flat_z_hit(), wo);
                 Rng rng(++seed, 0, 0);
                 Estimate e;
                 for (int i = 0; i < 20000; ++i) {
@@ -106,15 +99,8 @@ TEST_CASE("coated diffuse: a white coated sphere in a white furnace is invisible
     // The sphere is convex: each path scatters once and escapes. With a white base the mirror
     // and diffuse lobes together return all the light, so every pixel reads L (z-test per
     // block against the exact image; 1e-5 relative covers Fext's quadrature error, < 2e-7).
-    constexpr int size = 32;
-    Scene scene = empty_scene(size, size);
-    scene.background.color = glm::vec3(0.6f, 0.8f, 1.0f);
-    scene.camera.position = {0.0f, 0.0f, 3.2f};
-    scene.camera.look_at = glm::vec3(0.0f);
-    scene.camera.vfov_degrees = 40.0f;
-    add_object(scene, collision::Sphere{glm::vec3(0.0f), 1.0f}, add_material(scene, plastic(glm::vec3(1.0f))),
-               glm::mat4(1.0f), "plastic");
-    Image truth(size, size);
+    const Scene scene = sphere_furnace(plastic(glm::vec3(1.0f)), glm::vec3(0.6f, 0.8f, 1.0f));
+    Image truth(kFurnaceSize, kFurnaceSize);
     for (auto& p : truth.pixels) p = scene.background.color;
     for (AccelKind accel : {AccelKind::Bvh, AccelKind::Embree}) {
         const RenderResult r = render_with(scene, accel, 16, 8, 9);
