@@ -26,15 +26,21 @@
 //   metal's, refraction tinted by albedo and scaled by 1/eta^2 like the smooth dielectric.
 //   Single scattering (rough glass loses energy; the furnace tests state how much).
 //   roughness == 0 is the smooth dielectric, a delta lobe (render/bsdf_rough_dielectric.cpp).
-// - Coated diffuse ("plastic"): a smooth dielectric coating of index ior over a Lambertian base
-//   of albedo rho, the layer thin and clear. An analytic layered model, exact under those
-//   assumptions (render/bsdf_coated_diffuse.cpp derives it): a mirror lobe of weight F(cos_o)
-//   (delta, sampled but never evaluated) plus a diffuse lobe
-//     f = rho (1 - F(cos_i)) (1 - F(cos_o)) / (pi eta^2 (1 - rho Fint)),
+// - Coated diffuse ("plastic"): a dielectric coat of index ior over a Lambertian base of albedo
+//   rho, the layer thin and clear. An analytic layered model (render/bsdf_coated_diffuse.cpp
+//   derives it): the coat's own reflection lobe plus a diffuse lobe
+//     f_d = rho (1 - Fint) (1 - e(cos_i)) (1 - e(cos_o)) / (pi (1 - e_mean) (1 - rho Fint)),
+//   e(cos) the coat's directional reflectance, e_mean = int_0^1 2 mu e(mu) dmu its mean, and
 //   Fint = 1 - (1 - Fext) / eta^2 the interface's cosine-weighted mean reflectance seen from
-//   inside, Fext = int_0^1 2 mu F(mu) dmu from outside. Symmetric in wi and wo (reciprocal); its
-//   directional albedo is F_o + (1 - F_o) rho (1 - Fint) / (1 - rho Fint) <= 1, exactly 1 when
-//   rho = 1. The coating's roughness is not modelled (a smooth coat only).
+//   inside (Fext = int_0^1 2 mu F(mu) dmu from outside). Smooth coat (roughness 0): e = F, the
+//   coat lobe a mirror of weight F(cos_o) (delta, sampled but never evaluated), and f_d is then
+//   exact for a thin clear layer: rho (1 - F_i)(1 - F_o) / (pi eta^2 (1 - rho Fint)). Rough coat:
+//   the coat lobe is GGX reflection with exact Fresnel (alpha = roughness^2, as the metal's) and
+//   e its tabulated albedo (render/coat_albedo.hpp), in the manner of Kelemen and Szirmay-Kalos
+//   (2001); Fint keeps the smooth interface's value, an approximation that only shades how much
+//   a dark base darkens. Either way f is symmetric in wi and wo (reciprocal), and its directional
+//   albedo is e_o + (1 - e_o) rho (1 - Fint) / (1 - rho Fint) <= 1 (the coat lobe's true albedo
+//   in place of e_o: the table errs only upward), 1 when rho = 1 and the coat is smooth.
 // - Emissive: a pure emitter, black (absorbs everything it does not emit).
 // Emission itself is not part of the BSDF; see emitted_radiance().
 #include <glm/vec3.hpp>

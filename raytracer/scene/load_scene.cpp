@@ -133,9 +133,10 @@ Material read_material(const Node& node, const std::string& name, std::vector<Te
         m.roughness = node.at("roughness").number_in(0.0f, 1.0f);
         if (auto ior = node.find("ior")) m.ior = ior->number_at_least(0.0f, false);
     } else if (type == "coated_diffuse") {
-        node.require_object({"type", "albedo", "ior", "emission", "two_sided"});
+        node.require_object({"type", "albedo", "ior", "roughness", "emission", "two_sided"});
         m.type = Material::Type::CoatedDiffuse;
         if (auto ior = node.find("ior")) m.ior = ior->number_at_least(1.0f, true);
+        if (auto r = node.find("roughness")) m.roughness = r->number_in(0.0f, 1.0f);
     } else if (type == "emissive") {
         node.require_object({"type", "emission", "two_sided"});
         m.type = Material::Type::Emissive;

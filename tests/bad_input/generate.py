@@ -147,8 +147,8 @@ render_case("material-rough-dielectric-roughness-2", E + r"scene\.json: material
             scene(materials={"m": {"type": "rough_dielectric", "roughness": 2}}))
 render_case("material-coated-ior-below-1", E + r"scene\.json: materials\.m\.ior: must be",
             scene(materials={"m": {"type": "coated_diffuse", "ior": 0.8}}))
-render_case("material-coated-roughness", E + r"scene\.json: materials\.m\.roughness: ",
-            scene(materials={"m": {"type": "coated_diffuse", "roughness": 0.2}}))
+render_case("material-coated-roughness-negative", E + r"scene\.json: materials\.m\.roughness: must be in \[0, 1\]",
+            scene(materials={"m": {"type": "coated_diffuse", "roughness": -0.2}}))
 render_case("material-empty-name", E + r"scene\.json: materials\[\"\"\]: a material name must not be empty",
             scene(materials={"": {"type": "diffuse"}, "m": {"type": "diffuse"}}))
 render_case("objects-not-array", E + r"scene\.json: objects: must be an array", scene(objects={}))
