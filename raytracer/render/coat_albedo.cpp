@@ -31,36 +31,17 @@ float grid_mu(int i) {
 }
 float grid_roughness(int j) { return static_cast<float>(j) / (kRough - 1); }
 
-// E(mu) by visible-normal sampling on a stratified grid: each sample's weight is F G2 / G1 (the
-// metal's estimator with the dielectric's Fresnel), directions below the surface count 0.
-float lobe_albedo(float eta, float alpha, float mu) {
-    const glm::vec3 wo(std::sqrt(std::max(0.0f, 1.0f - mu * mu)), 0.0f, mu);
-    const float lo = ggx_lambda(wo, alpha);
-    double sum = 0.0;
-    for (int a = 0; a < kStrata; ++a)
-        for (int b = 0; b < kStrata; ++b) {
-            const glm::vec3 h = sample_ggx_vndf(wo, alpha, (a + 0.5f) / kStrata, (b + 0.5f) / kStrata);
-            const float wo_h = glm::dot(wo, h);
-            const glm::vec3 wi = 2.0f * wo_h * h - wo;
-            if (wi.z <= 0.0f || wo_h <= 0.0f) continue;
-            float cos_t = 0.0f;
-            const float f = fresnel_dielectric(std::min(wo_h, 1.0f), eta, cos_t);
-            sum += f * (1.0f + lo) / (1.0f + lo + ggx_lambda(wi, alpha));
-        }
-    return static_cast<float>(sum / (kStrata * kStrata));
-}
-
 std::unique_ptr<Table> build(float eta) {
     auto t = std::make_unique<Table>();
     for (int j = 0; j < kRough; ++j) {
         const float alpha = coat_alpha(grid_roughness(j));
         double mean = 0.0;  // trapezoid rule in mu
         for (int i = 0; i < kMu; ++i) {
-            const float e = std::min(1.0f, lobe_albedo(eta, alpha, grid_mu(i)) + kCoatAlbedoMargin);
+            const float e = std::min(1.0f, coat_lobe_albedo(eta, alpha, grid_mu(i), kStrata) + kCoatAlbedoMargin);
             t->albedo[static_cast<std::size_t>(j * kMu + i)] = e;
             // 2 int E mu dmu = int E 4 t^3 dt on the t grid (trapezoid rule).
-            const double t = static_cast<double>(i) / (kMu - 1), w = (i == 0 || i == kMu - 1) ? 0.5 : 1.0;
-            mean += w * 4.0 * e * t * t * t / (kMu - 1);
+            const double tg = static_cast<double>(i) / (kMu - 1), w = (i == 0 || i == kMu - 1) ? 0.5 : 1.0;
+            mean += w * 4.0 * e * tg * tg * tg / (kMu - 1);
         }
         t->mean[static_cast<std::size_t>(j)] = static_cast<float>(mean);
     }
@@ -82,6 +63,25 @@ const Table& table_for(float eta) {
 }
 
 }  // namespace
+
+// E(mu) by visible-normal sampling on a stratified grid: each sample's weight is F G2 / G1 (the
+// metal's estimator with the dielectric's Fresnel), directions below the surface count 0.
+float coat_lobe_albedo(float eta, float alpha, float mu, int strata) {
+    const glm::vec3 wo(std::sqrt(std::max(0.0f, 1.0f - mu * mu)), 0.0f, mu);
+    const float lo = ggx_lambda(wo, alpha);
+    double sum = 0.0;
+    for (int a = 0; a < strata; ++a)
+        for (int b = 0; b < strata; ++b) {
+            const glm::vec3 h = sample_ggx_vndf(wo, alpha, (a + 0.5f) / strata, (b + 0.5f) / strata);
+            const float wo_h = glm::dot(wo, h);
+            const glm::vec3 wi = 2.0f * wo_h * h - wo;
+            if (wi.z <= 0.0f || wo_h <= 0.0f) continue;
+            float cos_t = 0.0f;
+            const float f = fresnel_dielectric(std::min(wo_h, 1.0f), eta, cos_t);
+            sum += f * (1.0f + lo) / (1.0f + lo + ggx_lambda(wi, alpha));
+        }
+    return static_cast<float>(sum / (strata * strata));
+}
 
 float coat_alpha(float roughness) { return std::max(roughness * roughness, kMinMetalAlpha); }
 

@@ -27,6 +27,9 @@ struct CoatAlbedo {
 
 CoatAlbedo coat_albedo(float eta, float roughness, float mu);
 
+// The same albedo computed directly on a strata x strata grid (the table's entries use 32).
+float coat_lobe_albedo(float eta, float alpha, float mu, int strata);
+
 // GGX alpha for a coat of this roughness: roughness^2 clamped below like the metal's.
 float coat_alpha(float roughness);
 
