@@ -17,7 +17,8 @@ ShadingContext make_shading_context(const SurfaceHit& hit, const glm::vec3& wo) 
 
 bool is_delta(const Material& m) {
     return m.type == Material::Type::Dielectric || m.type == Material::Type::ThinDielectric ||
-           ((m.type == Material::Type::Metal || m.type == Material::Type::RoughDielectric) && m.roughness == 0.0f);
+           (m.type == Material::Type::Metal && m.roughness == 0.0f) ||
+           (m.type == Material::Type::RoughDielectric && rough_dielectric_is_smooth(m));
 }
 
 float fresnel_dielectric(float cos_i, float eta, float& cos_t) {
@@ -96,7 +97,7 @@ BsdfEval eval_bsdf(const Material& m, const ShadingContext& ctx, const glm::vec3
             return e;
         }
         case Material::Type::RoughDielectric:
-            return m.roughness == 0.0f ? e : eval_rough_dielectric(m, ctx, wi);
+            return rough_dielectric_is_smooth(m) ? e : eval_rough_dielectric(m, ctx, wi);
         case Material::Type::CoatedDiffuse:
             return eval_coated_diffuse(m, ctx, wi);
         case Material::Type::Dielectric:
@@ -143,8 +144,8 @@ bool sample_bsdf(const Material& m, const ShadingContext& ctx, float u0, float u
         case Material::Type::ThinDielectric:
             return sample_thin_dielectric(m, ctx, u0, out);
         case Material::Type::RoughDielectric:
-            return m.roughness == 0.0f ? sample_smooth_dielectric(m, ctx, u0, out)
-                                       : sample_rough_dielectric(m, ctx, u0, u1, u2, out);
+            return rough_dielectric_is_smooth(m) ? sample_smooth_dielectric(m, ctx, u0, out)
+                                                 : sample_rough_dielectric(m, ctx, u0, u1, u2, out);
         case Material::Type::CoatedDiffuse:
             return sample_coated_diffuse(m, ctx, u0, u1, u2, out);
         case Material::Type::Emissive:

@@ -25,7 +25,8 @@
 //   about it chosen with its exact Fresnel reflectance; alpha = roughness^2 clamped like the
 //   metal's, refraction tinted by albedo and scaled by 1/eta^2 like the smooth dielectric.
 //   Single scattering (rough glass loses energy; the furnace tests state how much).
-//   roughness == 0 is the smooth dielectric, a delta lobe (render/bsdf_rough_dielectric.cpp).
+//   roughness == 0 (or ior == 1) is the smooth dielectric, a delta lobe
+//   (render/bsdf_rough_dielectric.cpp).
 // - Coated diffuse ("plastic"): a dielectric coat of index ior over a Lambertian base of albedo
 //   rho, the layer thin and clear. An analytic layered model (render/bsdf_coated_diffuse.cpp
 //   derives it): the coat's own reflection lobe plus a diffuse lobe
@@ -109,7 +110,12 @@ float fresnel_dielectric(float cos_i, float eta, float& cos_t);
 float thin_dielectric_reflectance(float cos_i, float ior);
 bool sample_thin_dielectric(const Material& m, const ShadingContext& ctx, float u0, BsdfSample& out);
 
-// The rough dielectric (roughness > 0) and the coated diffuse; eval_bsdf / sample_bsdf dispatch here.
+// A rough dielectric of roughness 0 is the smooth one; so is one of ior 1, an index-matched
+// interface that bends nothing (every microfacet passes light straight on: a delta lobe, where
+// the microfacet transmission's Jacobian would divide by zero).
+inline bool rough_dielectric_is_smooth(const Material& m) { return m.roughness == 0.0f || m.ior == 1.0f; }
+
+// The rough dielectric (not smooth, above) and the coated diffuse; eval_bsdf / sample_bsdf dispatch here.
 BsdfEval eval_rough_dielectric(const Material& m, const ShadingContext& ctx, const glm::vec3& wi);
 bool sample_rough_dielectric(const Material& m, const ShadingContext& ctx, float u0, float u1, float u2,
                              BsdfSample& out);

@@ -5,7 +5,8 @@
 // for light arriving at cos theta = mu; and its cosine-weighted mean 2 int E(mu) mu dmu.
 //
 // Tabulated per eta on first use (64 x 64: mu = t^2 on a uniform t grid, and roughness, every
-// entry a 32 x 32 stratified visible-normal quadrature; ~0.2 s per eta), then read bilinearly.
+// entry a 32 x 32 stratified visible-normal quadrature; 16 kB and ~0.2 s per distinct eta in a
+// scene, kept for the process's life), then read bilinearly.
 // Tables are shared by all threads (built once under a lock; a thread remembers its last one)
 // and depend on nothing but eta, so images stay deterministic.
 //

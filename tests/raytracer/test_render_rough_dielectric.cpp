@@ -144,6 +144,16 @@ TEST_CASE("rough dielectric: as roughness -> 0 it becomes the smooth dielectric"
     // directions. Roughness exactly 0 is the smooth dielectric itself.
     REQUIRE(is_delta(rough_glass(0.0f)));
     REQUIRE_FALSE(is_delta(rough_glass(0.01f)));
+    // ior 1, an index-matched interface, is the smooth dielectric's straight pass too (the
+    // microfacet transmission's Jacobian would divide by zero there).
+    REQUIRE(is_delta(rough_glass(0.5f, 1.0f)));
+    {
+        const ShadingContext ctx = make_shading_context(flat_z_hit(), dir_at(0.6f, 0.4f));
+        BsdfSample s;
+        REQUIRE(sample_bsdf(rough_glass(0.5f, 1.0f), ctx, 0.5f, 0.3f, 0.7f, s));
+        CHECK(glm::length(s.wi + dir_at(0.6f, 0.4f)) < 1e-5f);
+        CHECK(s.weight.g == Approx(1.0f));
+    }
     Material smooth = rough_glass(0.0f);
     smooth.type = Material::Type::Dielectric;
     for (float side : {1.0f, -1.0f})
