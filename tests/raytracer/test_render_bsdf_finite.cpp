@@ -23,13 +23,13 @@ bool finite(const glm::vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y
 TEST_CASE("bsdf: rough glass, coated diffuse and metal stay finite on random and edge inputs", "[render][bsdf]") {
     Rng rng(99, 0, 0);
     const Material::Type types[] = {Material::Type::RoughDielectric, Material::Type::CoatedDiffuse, Material::Type::Metal};
-    const float iors[] = {1.0f, 1.0001f, 1.33f, 1.5f, 2.9f};  // few: the coat builds a table per ior
+    const float iors[] = {1.0f, 1.0001f, 1.5f};  // few: the coat builds a table per ior (~0.2 s)
     for (int i = 0; i < 100000; ++i) {
         Material m;
         m.type = types[i % 3];
         const int k = i % 7;
         m.roughness = k == 0 ? 0.0f : k == 1 ? 1e-4f : k == 2 ? 1.0f : rng.uniform();
-        m.ior = iors[i % 5];
+        m.ior = iors[(i / 3) % 3];  // every type meets every ior
         m.albedo = glm::vec3(rng.uniform(), rng.uniform(), i % 4 == 0 ? 1.0f : rng.uniform());
         SurfaceHit h;
         h.normal = uniform_sphere(rng.uniform(), rng.uniform());
