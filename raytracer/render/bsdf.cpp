@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "raytracer/render/microfacet.hpp"
+
 namespace sweeptrace {
 
 ShadingContext make_shading_context(const SurfaceHit& hit, const glm::vec3& wo) {
@@ -15,7 +17,8 @@ ShadingContext make_shading_context(const SurfaceHit& hit, const glm::vec3& wo) 
 
 bool is_delta(const Material& m) {
     return m.type == Material::Type::Dielectric || m.type == Material::Type::ThinDielectric ||
-           (m.type == Material::Type::Metal && m.roughness == 0.0f);
+           (m.type == Material::Type::Metal && m.roughness == 0.0f) ||
+           (m.type == Material::Type::RoughDielectric && rough_dielectric_is_smooth(m));
 }
 
 float fresnel_dielectric(float cos_i, float eta, float& cos_t) {
@@ -40,41 +43,30 @@ glm::vec3 schlick(const glm::vec3& f0, float cos_d) {
 
 float metal_alpha(const Material& m) { return std::max(m.roughness * m.roughness, kMinMetalAlpha); }
 
-// GGX normal distribution for a unit half vector h in the local frame, written with
-// sin^2/alpha^2 + cos^2 (not 1 + cos^2 (alpha^2 - 1)) to avoid cancellation at small alpha.
-float ggx_d(const glm::vec3& h, float alpha) {
-    const float a2 = alpha * alpha;
-    const float e = (h.x * h.x + h.y * h.y) / a2 + h.z * h.z;
-    return 1.0f / (kPi * a2 * e * e);
-}
-
-// Smith Lambda for GGX; infinite at grazing (so G1 = 0 there).
-float ggx_lambda(const glm::vec3& w, float alpha) {
-    const float z2 = w.z * w.z;
-    if (z2 == 0.0f) return INFINITY;
-    const float a2t2 = alpha * alpha * (w.x * w.x + w.y * w.y) / z2;
-    return 0.5f * (std::sqrt(1.0f + a2t2) - 1.0f);
-}
-
-// Heitz 2018, "Sampling the GGX Distribution of Visible Normals": a microfacet normal with
-// density D_wo(h) = G1(wo) max(0, wo.h) D(h) / wo.z.
-glm::vec3 sample_ggx_vndf(const glm::vec3& wo, float alpha, float u1, float u2) {
-    const glm::vec3 vh = glm::normalize(glm::vec3(alpha * wo.x, alpha * wo.y, wo.z));
-    const float lensq = vh.x * vh.x + vh.y * vh.y;
-    const glm::vec3 t1 = lensq > 0.0f ? glm::vec3(-vh.y, vh.x, 0.0f) / std::sqrt(lensq) : glm::vec3(1.0f, 0.0f, 0.0f);
-    const glm::vec3 t2 = glm::cross(vh, t1);
-    const float r = std::sqrt(u1);
-    const float phi = 2.0f * kPi * u2;
-    const float p1 = r * std::cos(phi);
-    const float s = 0.5f * (1.0f + vh.z);
-    const float p2 = (1.0f - s) * std::sqrt(std::max(0.0f, 1.0f - p1 * p1)) + s * r * std::sin(phi);
-    const glm::vec3 nh = p1 * t1 + p2 * t2 + std::sqrt(std::max(0.0f, 1.0f - p1 * p1 - p2 * p2)) * vh;
-    return glm::normalize(glm::vec3(alpha * nh.x, alpha * nh.y, std::max(0.0f, nh.z)));
-}
-
 // Reflection must stay on wo's side of both the shading and the geometric normal.
 bool valid_reflection(const ShadingContext& ctx, const glm::vec3& wi_local, const glm::vec3& wi) {
     return ctx.wo_local.z > 0.0f && wi_local.z > 0.0f && glm::dot(wi, ctx.ng) > 0.0f;
+}
+
+bool sample_smooth_dielectric(const Material& m, const ShadingContext& ctx, float u0, BsdfSample& out) {
+    const glm::vec3& wo = ctx.wo_local;
+    if (wo.z <= 0.0f) return false;
+    // eta = n_transmitted / n_incident: entering from the front means going into the medium.
+    const float eta = ctx.front ? m.ior : 1.0f / m.ior;
+    float cos_t = 0.0f;
+    const float f = fresnel_dielectric(std::min(wo.z, 1.0f), eta, cos_t);
+    if (u0 < f) {
+        const glm::vec3 wl(-wo.x, -wo.y, wo.z);
+        const glm::vec3 wi = ctx.frame.to_world(wl);
+        if (glm::dot(wi, ctx.ng) <= 0.0f) return false;
+        out = BsdfSample{wi, glm::vec3(1.0f), f, true};
+        return true;
+    }
+    const glm::vec3 wl(-wo.x / eta, -wo.y / eta, -cos_t);
+    const glm::vec3 wi = glm::normalize(ctx.frame.to_world(wl));
+    if (glm::dot(wi, ctx.ng) >= 0.0f) return false;
+    out = BsdfSample{wi, m.albedo / (eta * eta), 1.0f - f, true};
+    return true;
 }
 
 }  // namespace
@@ -104,6 +96,10 @@ BsdfEval eval_bsdf(const Material& m, const ShadingContext& ctx, const glm::vec3
             e.pdf = d * g1 / (4.0f * wo.z);
             return e;
         }
+        case Material::Type::RoughDielectric:
+            return rough_dielectric_is_smooth(m) ? e : eval_rough_dielectric(m, ctx, wi);
+        case Material::Type::CoatedDiffuse:
+            return eval_coated_diffuse(m, ctx, wi);
         case Material::Type::Dielectric:
         case Material::Type::ThinDielectric:
         case Material::Type::Emissive:
@@ -143,27 +139,15 @@ bool sample_bsdf(const Material& m, const ShadingContext& ctx, float u0, float u
             out = BsdfSample{wi, schlick(m.albedo, wo_h) * g_ratio, ggx_d(h, alpha) / (4.0f * wo.z * (1.0f + lo)), false};
             return out.pdf > 0.0f;
         }
-        case Material::Type::Dielectric: {
-            if (wo.z <= 0.0f) return false;
-            // eta = n_transmitted / n_incident: entering from the front means going into the medium.
-            const float eta = ctx.front ? m.ior : 1.0f / m.ior;
-            float cos_t = 0.0f;
-            const float f = fresnel_dielectric(std::min(wo.z, 1.0f), eta, cos_t);
-            if (u0 < f) {
-                const glm::vec3 wl(-wo.x, -wo.y, wo.z);
-                const glm::vec3 wi = ctx.frame.to_world(wl);
-                if (glm::dot(wi, ctx.ng) <= 0.0f) return false;
-                out = BsdfSample{wi, glm::vec3(1.0f), f, true};
-                return true;
-            }
-            const glm::vec3 wl(-wo.x / eta, -wo.y / eta, -cos_t);
-            const glm::vec3 wi = glm::normalize(ctx.frame.to_world(wl));
-            if (glm::dot(wi, ctx.ng) >= 0.0f) return false;
-            out = BsdfSample{wi, m.albedo / (eta * eta), 1.0f - f, true};
-            return true;
-        }
+        case Material::Type::Dielectric:
+            return sample_smooth_dielectric(m, ctx, u0, out);
         case Material::Type::ThinDielectric:
             return sample_thin_dielectric(m, ctx, u0, out);
+        case Material::Type::RoughDielectric:
+            return rough_dielectric_is_smooth(m) ? sample_smooth_dielectric(m, ctx, u0, out)
+                                                 : sample_rough_dielectric(m, ctx, u0, u1, u2, out);
+        case Material::Type::CoatedDiffuse:
+            return sample_coated_diffuse(m, ctx, u0, u1, u2, out);
         case Material::Type::Emissive:
             return false;
     }

@@ -136,7 +136,8 @@ glm::vec3 PathIntegrator::radiance(collision::Ray ray, PixelSampler& sampler, st
         prev_point = hit.point;
         prev_object = hit.object;
 
-        if (mat.type == Material::Type::Dielectric && glm::dot(bs.wi, ctx.ng) < 0.0f) {
+        const bool refracting = mat.type == Material::Type::Dielectric || mat.type == Material::Type::RoughDielectric;
+        if (refracting && glm::dot(bs.wi, ctx.ng) < 0.0f) {
             const float eta = ctx.front ? mat.ior : 1.0f / mat.ior;  // refracted: weight had 1/eta^2
             eta_scale *= eta * eta;
         }

@@ -130,12 +130,23 @@ Material read_material(const Node& node, const std::string& name, std::vector<Te
         m.type = Material::Type::ThinDielectric;
         m.albedo = glm::vec3(1.0f);  // clear unless tinted
         if (auto ior = node.find("ior")) m.ior = ior->number_at_least(0.0f, false);
+    } else if (type == "rough_dielectric") {
+        node.require_object({"type", "ior", "roughness", "albedo", "emission", "two_sided"});
+        m.type = Material::Type::RoughDielectric;
+        m.albedo = glm::vec3(1.0f);  // clear unless tinted
+        m.roughness = node.at("roughness").number_in(0.0f, 1.0f);
+        if (auto ior = node.find("ior")) m.ior = ior->number_at_least(0.0f, false);
+    } else if (type == "coated_diffuse") {
+        node.require_object({"type", "albedo", "ior", "roughness", "emission", "two_sided"});
+        m.type = Material::Type::CoatedDiffuse;
+        if (auto ior = node.find("ior")) m.ior = ior->number_at_least(1.0f, true);
+        if (auto r = node.find("roughness")) m.roughness = r->number_in(0.0f, 1.0f);
     } else if (type == "emissive") {
         node.require_object({"type", "emission", "two_sided"});
         m.type = Material::Type::Emissive;
         m.albedo = glm::vec3(0.0f);  // a light absorbs what reaches it
     } else {
-        type_node.fail("unknown material type \"" + type + "\" (known: diffuse, metal, dielectric, thin_dielectric, emissive)");
+        type_node.fail("unknown material type \"" + type + "\" (known: diffuse, metal, dielectric, thin_dielectric, rough_dielectric, coated_diffuse, emissive)");
     }
     if (auto albedo = node.find("albedo")) {
         if (albedo->value().is_object()) {

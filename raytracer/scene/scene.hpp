@@ -87,7 +87,10 @@ struct Texture {
 };
 
 struct Material {
-    enum class Type { Diffuse, Metal, Dielectric, Emissive, ThinDielectric };
+    enum class Type { Diffuse, Metal, Dielectric, Emissive, ThinDielectric, RoughDielectric, CoatedDiffuse };
+    // RoughDielectric reads roughness, ior and albedo (the transmission tint) like Metal and
+    // Dielectric; CoatedDiffuse reads albedo (the base under the coating), ior and roughness (the
+    // coating's; 0 = a smooth coat).
     Type type = Type::Diffuse;
     glm::vec3 albedo{0.8f};    // Diffuse reflectance / Metal tint / (Thin)Dielectric transmission tint
     int albedo_texture = -1;   // index into Scene::textures replacing `albedo` at each hit, or -1

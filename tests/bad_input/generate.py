@@ -141,6 +141,14 @@ render_case("material-albedo-over-1", E + r"scene\.json: materials\.m\.albedo\[1
             scene(materials={"m": {"type": "diffuse", "albedo": [0.5, 1.5, 0.5]}}))
 render_case("material-emissive-black", E + r"scene\.json: materials\.m\.emission: an emissive material must emit",
             scene(materials={"m": {"type": "emissive", "emission": [0, 0, 0]}}))
+render_case("material-rough-dielectric-no-roughness", E + r"scene\.json: materials\.m\.roughness: missing",
+            scene(materials={"m": {"type": "rough_dielectric", "ior": 1.5}}))
+render_case("material-rough-dielectric-roughness-2", E + r"scene\.json: materials\.m\.roughness: must be in \[0, 1\]",
+            scene(materials={"m": {"type": "rough_dielectric", "roughness": 2}}))
+render_case("material-coated-ior-below-1", E + r"scene\.json: materials\.m\.ior: must be",
+            scene(materials={"m": {"type": "coated_diffuse", "ior": 0.8}}))
+render_case("material-coated-roughness-negative", E + r"scene\.json: materials\.m\.roughness: must be in \[0, 1\]",
+            scene(materials={"m": {"type": "coated_diffuse", "roughness": -0.2}}))
 render_case("material-empty-name", E + r"scene\.json: materials\[\"\"\]: a material name must not be empty",
             scene(materials={"": {"type": "diffuse"}, "m": {"type": "diffuse"}}))
 render_case("objects-not-array", E + r"scene\.json: objects: must be an array", scene(objects={}))

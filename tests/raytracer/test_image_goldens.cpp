@@ -74,6 +74,7 @@ GOLDEN_TEST("smallpt", smallpt)
 GOLDEN_TEST("primitives", primitives)
 GOLDEN_TEST("mesh", mesh)
 GOLDEN_TEST("default", default)
+GOLDEN_TEST("showcase", showcase)
 
 TEST_CASE("golden mutation: another seed is accepted", "[image][golden][mutation]") {
     const GoldenSpec& spec = golden_spec("cornell-box");

@@ -223,3 +223,17 @@ TEST_CASE("scenes: the showcase uses glass, metal, diffuse, a light and the mesh
     CHECK(scene.meshes.size() == 1);
     CHECK(scene.background.kind == sweeptrace::Background::Kind::Sky);
 }
+
+TEST_CASE("scenes: the material showcase uses rough glass, plastic, a textured mesh and an environment", "[scene]") {
+    const Scene scene = load_scene(kScenes / "showcase.json");
+    for (auto type : {Material::Type::RoughDielectric, Material::Type::CoatedDiffuse, Material::Type::Metal})
+        CHECK(uses_material_type(scene, type));
+    CHECK(scene.background.kind == sweeptrace::Background::Kind::Environment);
+    REQUIRE(scene.meshes.size() == 1);
+    CHECK(scene.meshes[0].vertex_uvs.size() == scene.meshes[0].triangles.vertices.size());
+    CHECK(scene.meshes[0].vertex_normals.size() == scene.meshes[0].triangles.vertices.size());
+    bool textured_mesh = false;
+    for (const auto& o : scene.objects)
+        textured_mesh = textured_mesh || (std::holds_alternative<sweeptrace::MeshInstance>(o.shape) && scene.materials[o.material].albedo_texture >= 0);
+    CHECK(textured_mesh);
+}
