@@ -110,16 +110,18 @@ Material read_material(const Node& node, const std::string& name, std::vector<Te
     const std::string type = type_node.string();
     Material m;
     m.name = name;
+    // A roughness in [0, 1], or a texture of it (a data map: render/texture.hpp).
+    auto read_roughness = [&](const Node& r) {
+        if (r.value().is_object()) m.roughness_texture = add_texture(r, TextureUse::Roughness, textures);
+        else m.roughness = r.number_in(0.0f, 1.0f);
+    };
     if (type == "diffuse") {
         node.require_object({"type", "albedo", "emission", "two_sided", "normal_map"});
         m.type = Material::Type::Diffuse;
     } else if (type == "metal") {
         node.require_object({"type", "albedo", "roughness", "emission", "two_sided", "normal_map"});
         m.type = Material::Type::Metal;
-        if (auto r = node.find("roughness")) {
-            if (r->value().is_object()) m.roughness_texture = add_texture(*r, TextureUse::Roughness, textures);
-            else m.roughness = r->number_in(0.0f, 1.0f);
-        }
+        if (auto r = node.find("roughness")) read_roughness(*r);
     } else if (type == "dielectric") {
         node.require_object({"type", "ior", "albedo", "emission", "two_sided", "normal_map"});
         m.type = Material::Type::Dielectric;
@@ -131,16 +133,16 @@ Material read_material(const Node& node, const std::string& name, std::vector<Te
         m.albedo = glm::vec3(1.0f);  // clear unless tinted
         if (auto ior = node.find("ior")) m.ior = ior->number_at_least(0.0f, false);
     } else if (type == "rough_dielectric") {
-        node.require_object({"type", "ior", "roughness", "albedo", "emission", "two_sided"});
+        node.require_object({"type", "ior", "roughness", "albedo", "emission", "two_sided", "normal_map"});
         m.type = Material::Type::RoughDielectric;
         m.albedo = glm::vec3(1.0f);  // clear unless tinted
-        m.roughness = node.at("roughness").number_in(0.0f, 1.0f);
+        read_roughness(node.at("roughness"));
         if (auto ior = node.find("ior")) m.ior = ior->number_at_least(0.0f, false);
     } else if (type == "coated_diffuse") {
-        node.require_object({"type", "albedo", "ior", "roughness", "emission", "two_sided"});
+        node.require_object({"type", "albedo", "ior", "roughness", "emission", "two_sided", "normal_map"});
         m.type = Material::Type::CoatedDiffuse;
         if (auto ior = node.find("ior")) m.ior = ior->number_at_least(1.0f, true);
-        if (auto r = node.find("roughness")) m.roughness = r->number_in(0.0f, 1.0f);
+        if (auto r = node.find("roughness")) read_roughness(*r);
     } else if (type == "emissive") {
         node.require_object({"type", "emission", "two_sided"});
         m.type = Material::Type::Emissive;

@@ -38,6 +38,10 @@ std::vector<const ObjOutline::Statement*> triangle_usemtl(const ObjOutline& outl
     return out;
 }
 
+// Phong exponent to GGX: alpha = sqrt(2 / (Ns + 2)) (Walter et al. 2007's match), and the
+// renderer's roughness is sqrt(alpha).
+float phong_to_roughness(float ns) { return static_cast<float>(std::pow(2.0 / (static_cast<double>(ns) + 2.0), 0.25)); }
+
 }  // namespace
 
 Material material_from_mtl(const MtlMaterial& m, const std::filesystem::path& mtl, bool has_uv, Scene& scene) {
@@ -52,12 +56,19 @@ Material material_from_mtl(const MtlMaterial& m, const std::filesystem::path& mt
     } else if (metal) {
         out.type = Material::Type::Metal;
         out.albedo = m.ks;
-        // Phong exponent to GGX: alpha = sqrt(2 / (Ns + 2)) (Walter et al. 2007), roughness = sqrt(alpha).
-        out.roughness = static_cast<float>(std::pow(2.0 / (static_cast<double>(m.ns) + 2.0), 0.25));
+        out.roughness = phong_to_roughness(m.ns);
         if (!m.map_ks.file.empty()) out.albedo_texture = map_texture(m.map_ks, "map_Ks", TextureUse::Albedo, mtl, has_uv, scene);
     } else {
-        out.type = Material::Type::Diffuse;
+        // A diffuse colour with a specular one is a coated (plastic-like) surface: a dielectric
+        // coat whose reflection is Fresnel's (so Ks's strength and colour are not used, only
+        // that there is one) over the Kd base.
+        const bool coated = max3(m.ks) > 0.0f;
+        out.type = coated ? Material::Type::CoatedDiffuse : Material::Type::Diffuse;
         out.albedo = m.kd;
+        if (coated) {
+            out.ior = m.ni > 1.0f ? m.ni : 1.5f;  // Ni 1 (or unset) on an opaque material: a typical coat
+            out.roughness = phong_to_roughness(m.ns);
+        }
         if (!m.map_kd.file.empty()) out.albedo_texture = map_texture(m.map_kd, "map_Kd", TextureUse::Albedo, mtl, has_uv, scene);
     }
     out.emission = m.ke;

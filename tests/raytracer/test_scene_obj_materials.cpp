@@ -60,8 +60,10 @@ TEST_CASE("obj materials: the mtl table", "[scene][obj_materials]") {
     const Scene s = load_scene(dir.write("s.json", scene_with(R"({ "type": "mesh", "file": "all.obj", "name": "m" })")));
     REQUIRE(s.objects.size() == 6);  // the faces before any usemtl, and one per material
     const Material& clay = named(s, "all.mtl/clay");
-    CHECK(clay.type == Material::Type::Diffuse);
+    CHECK(clay.type == Material::Type::CoatedDiffuse);  // Kd and Ks: a coat over a diffuse base
     CHECK(clay.albedo == glm::vec3(0.5f, 0.4f, 0.3f));
+    CHECK(clay.ior == 1.5f);  // no Ni
+    CHECK(clay.roughness == Approx(std::pow(2.0 / 12.0, 0.25)));
     const Material& steel = named(s, "all.mtl/steel");
     CHECK(steel.type == Material::Type::Metal);
     CHECK(steel.albedo == glm::vec3(0.9f, 0.8f, 0.7f));
@@ -70,6 +72,7 @@ TEST_CASE("obj materials: the mtl table", "[scene][obj_materials]") {
     CHECK(glass.type == Material::Type::Dielectric);
     CHECK(glass.ior == 1.33f);
     CHECK(named(s, "all.mtl/lamp").emission == glm::vec3(5.0f, 4.0f, 3.0f));
+    CHECK(named(s, "all.mtl/lamp").type == Material::Type::Diffuse);  // no Ks
     const Material& wood = named(s, "all.mtl/wood");
     REQUIRE(wood.albedo_texture >= 0);
     REQUIRE(wood.normal_texture >= 0);
