@@ -11,8 +11,9 @@
 namespace sweeptrace {
 
 // FNV-1a 64 over the scene file's bytes and, in load order, the bytes of every mesh file it
-// loaded (Mesh::source): the same content hashes the same wherever the files live (another
-// machine, another folder); a change to any of them changes the hash. Not cryptographic.
+// loaded (Mesh::source) and of every material library those named, then every texture and
+// environment image as loaded: the same content hashes the same wherever the files live
+// (another machine, another folder); a change to any of them changes the hash. Not cryptographic.
 // Throws InputError when a file cannot be read.
 std::string scene_content_hash(const Scene& scene, const std::filesystem::path& scene_file);
 

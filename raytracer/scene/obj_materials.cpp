@@ -103,6 +103,7 @@ const std::vector<std::uint32_t>& ObjMaterials::triangle_materials(std::uint32_t
                 throw InputError(obj + ": line " + std::to_string(lib.line) + ": mtllib \"" + excerpt(name, 80) +
                                  "\" not found (looked for " + file.string() + ")");
             libraries.push_back({file, load_mtl(file)});
+            scene.material_libraries.push_back(file);
             start = end + 1;
         }
     }

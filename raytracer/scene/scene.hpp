@@ -122,6 +122,9 @@ struct Scene {
     std::vector<SceneLight> lights;  // the "lights" key: point, spot, directional
     std::uint64_t seed = 0;
     std::filesystem::path source;  // the scene file, for messages
+    // The material libraries (.mtl) the meshes named, read for their materials: with the scene
+    // file, the meshes' files and the images, what a farm part's identity hashes.
+    std::vector<std::filesystem::path> material_libraries;
 };
 
 }  // namespace sweeptrace
