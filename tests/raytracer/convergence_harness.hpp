@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include <glm/geometric.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "raytracer/accel/accel.hpp"
@@ -42,6 +43,23 @@ inline void add_object(Scene& scene, Shape shape, std::uint32_t material, const 
     o.name = std::move(name);
     scene.objects.push_back(std::move(o));
 }
+
+// render/camera.hpp's pinhole model in double, for analytic truths: the direction (not
+// normalised; its component along the view axis is 1) through film position (fx, fy), in
+// pixels from the top-left corner of a width x height image.
+struct PinholeRays {
+    glm::dvec3 eye, forward, right, up;
+    double half_height, half_width;  // in this order: half_width is made from half_height
+    int width, height;
+    PinholeRays(const Camera& c, int w, int h)
+        : eye(c.position), forward(glm::normalize(glm::dvec3(c.look_at) - eye)),
+          right(glm::normalize(glm::cross(forward, glm::dvec3(c.up)))), up(glm::cross(right, forward)),
+          half_height(std::tan(0.5 * glm::radians(static_cast<double>(c.vfov_degrees)))),
+          half_width(half_height * w / h), width(w), height(h) {}
+    glm::dvec3 direction(double fx, double fy) const {
+        return forward + (2.0 * fx / width - 1.0) * half_width * right + (1.0 - 2.0 * fy / height) * half_height * up;
+    }
+};
 
 // A convex closed mesh: the icosahedron subdivided `levels` times, vertices pushed onto the unit
 // sphere, counter-clockwise seen from outside (outward normals).

@@ -39,10 +39,7 @@ TEST_CASE("sphere light over a diffuse plane: pixels read rho/pi * pi L (R/d)^2 
     // it) by a sub x sub midpoint rule, with the camera model of render/camera.hpp. Pixels whose
     // footprint comes near the light's silhouette (within 1.5 R of its centre line) are left out.
     const Camera& c = scene.camera;
-    const glm::vec3 forward = glm::normalize(c.look_at - c.position);
-    const glm::vec3 right = glm::normalize(glm::cross(forward, c.up));
-    const glm::vec3 up = glm::cross(right, forward);
-    const double half = std::tan(0.5 * glm::radians(static_cast<double>(c.vfov_degrees)));
+    const PinholeRays camera(c, size, size);
     Image truth(size, size);
     std::vector<std::uint8_t> mask(truth.pixels.size(), 1);
     for (int y = 0; y < size; ++y)
@@ -51,8 +48,7 @@ TEST_CASE("sphere light over a diffuse plane: pixels read rho/pi * pi L (R/d)^2 
             for (int j = 0; j < sub; ++j)
                 for (int i = 0; i < sub; ++i) {
                     const double fx = x + (i + 0.5) / sub, fy = y + (j + 0.5) / sub;
-                    const glm::dvec3 dir = glm::normalize(glm::dvec3(forward) + (2.0 * fx / size - 1.0) * half * glm::dvec3(right) +
-                                                          (1.0 - 2.0 * fy / size) * half * glm::dvec3(up));
+                    const glm::dvec3 dir = glm::normalize(camera.direction(fx, fy));
                     const glm::dvec3 to_centre = glm::dvec3(centre) - glm::dvec3(c.position);
                     if (glm::length(to_centre - glm::dot(to_centre, dir) * dir) < 1.5 * R) mask[y * size + x] = 0;
                     const glm::dvec3 p = glm::dvec3(c.position) + (c.position.y / -dir.y) * dir;

@@ -60,12 +60,8 @@ TEST_CASE("quad light: direct light on the Cornell box's back wall reads rho/pi 
     // to y >= 350 on the wall clears them), so nothing shadows the light or hides the wall, and
     // below the light's plane (y = 554), where the wall sees the light's front at emission
     // cosines from about 0.7 (y = 350) down to below 0.02 (y = 550).
-    const Camera& cam = scene.camera;
-    const glm::dvec3 eye(cam.position);
-    const glm::dvec3 forward = glm::normalize(glm::dvec3(cam.look_at) - eye);
-    const glm::dvec3 right = glm::normalize(glm::cross(forward, glm::dvec3(cam.up)));
-    const glm::dvec3 up = glm::cross(right, forward);
-    const double half = std::tan(0.5 * glm::radians(static_cast<double>(cam.vfov_degrees)));
+    const PinholeRays camera(scene.camera, size, size);
+    const glm::dvec3 eye = camera.eye;
     Image truth(size, size);
     std::vector<std::uint8_t> mask(truth.pixels.size(), 1);
     for (int y = 0; y < size; ++y)
@@ -74,7 +70,7 @@ TEST_CASE("quad light: direct light on the Cornell box's back wall reads rho/pi 
             for (int j = 0; j < sub; ++j)
                 for (int i = 0; i < sub; ++i) {
                     const double fx = x + (i + 0.5) / sub, fy = y + (j + 0.5) / sub;
-                    const glm::dvec3 dir = forward + (2.0 * fx / size - 1.0) * half * right + (1.0 - 2.0 * fy / size) * half * up;
+                    const glm::dvec3 dir = camera.direction(fx, fy);
                     const glm::dvec3 p = eye + ((wall_z - eye.z) / dir.z) * dir;
                     if (p.y < 350.0 || p.y > 550.0 || p.x < 0.0 || p.x > 555.0) mask[y * size + x] = 0;
                     sum += polygon_irradiance(corners, p, {0.0, 0.0, -1.0});

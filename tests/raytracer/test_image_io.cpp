@@ -33,6 +33,16 @@ bool bitwise_equal(const Image& a, const Image& b) {
     return true;
 }
 
+// What read_image says of a file it refuses ("no error" if it reads it).
+std::string message_of(const std::filesystem::path& p) {
+    try {
+        read_image(p);
+    } catch (const InputError& e) {
+        return std::string(e.what());
+    }
+    return std::string("no error");
+}
+
 std::string float_bytes(float v, bool little) {
     const auto bits = std::bit_cast<std::uint32_t>(v);
     std::string s(4, '\0');
@@ -146,14 +156,6 @@ TEST_CASE("JPEG reader: 8-bit sRGB decoded to linear, a wrong signature and a cu
     write_image(image, dir / "png.png");
     std::filesystem::copy_file(dir / "png.png", dir / "png.jpeg");
     using Catch::Matchers::Contains;
-    auto message_of = [](const std::filesystem::path& p) {
-        try {
-            read_image(p);
-        } catch (const InputError& e) {
-            return std::string(e.what());
-        }
-        return std::string("no error");
-    };
     CHECK_THAT(message_of(dir / "png.jpeg"), Contains("png.jpeg") && Contains("no JPEG start-of-image marker"));
     const auto bytes = testing::read_file_text(file);
     testing::write_file_text(dir / "cut.jpg", bytes.substr(0, bytes.size() / 3));
@@ -164,14 +166,6 @@ TEST_CASE("JPEG reader: 8-bit sRGB decoded to linear, a wrong signature and a cu
 
 TEST_CASE("read errors name the file and what is wrong", "[image][errors]") {
     ScratchDir dir("read-errors");
-    auto message_of = [](const std::filesystem::path& p) {
-        try {
-            read_image(p);
-        } catch (const InputError& e) {
-            return std::string(e.what());
-        }
-        return std::string("no error");
-    };
     using Catch::Matchers::Contains;
     CHECK_THAT(message_of(dir / "missing.png"), Contains("missing.png") && Contains("no such file"));
     CHECK_THAT(message_of(dir / "missing.exr"), Contains("missing.exr") && Contains("no such file"));
