@@ -4,6 +4,7 @@
 // the format is small: header lines, a resolution line, then scanlines, each either flat RGBE
 // or new-style run-length encoded per channel. Every count and length is checked against the
 // bytes left and the pixels left, so a file decodes to exactly the image it describes or fails.
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -30,8 +31,6 @@ public:
     // A header line without its '\n'; header lines are short, so a long one is an error.
     std::string line() {
         std::string s;
-        if (at_ == 0 && (bytes_.size() < 2 || bytes_[0] != '#' || bytes_[1] != '?'))
-            throw InputError("cannot read '" + path_.string() + "': not a Radiance HDR file (no '#?RADIANCE' first line)");
         while (true) {
             if (at_ >= bytes_.size()) fail("header ends without a resolution line");
             const char c = static_cast<char>(bytes_[at_++]);
@@ -50,10 +49,16 @@ private:
 // The header up to and including the resolution line; returns width and height. Only the
 // standard orientation (-Y H +X W: top row first, left to right) is read, as by every tool
 // that writes .hdr for environment maps.
-void read_header(Reader& in, const std::filesystem::path& path, int& w, int& h) {
-    const std::string magic = in.line();
-    if (magic != "#?RADIANCE" && magic != "#?RGBE")
+void read_header(Reader& in, const std::vector<unsigned char>& bytes, const std::filesystem::path& path, int& w,
+                 int& h) {
+    // The magic line is compared before anything is read as a line: a binary file of another
+    // format has no newline to end its "first line".
+    const auto starts = [&](const std::string& magic) {
+        return bytes.size() >= magic.size() && std::equal(magic.begin(), magic.end(), bytes.begin());
+    };
+    if (!starts("#?RADIANCE\n") && !starts("#?RGBE\n"))
         throw InputError("cannot read '" + path.string() + "': not a Radiance HDR file (no '#?RADIANCE' first line)");
+    in.line();
     bool rgbe = false;
     for (std::string l = in.line(); !l.empty(); l = in.line()) {
         if (l.rfind("FORMAT=", 0) == 0) {
@@ -106,7 +111,7 @@ Image read_hdr(const std::filesystem::path& path) {
     const std::vector<unsigned char> bytes = read_bytes(path);
     Reader in(bytes, path);
     int w = 0, h = 0;
-    read_header(in, path, w, h);
+    read_header(in, bytes, path, w, h);
     // Each scanline takes at least 4 + 8 ceil(w / 127) bytes (RLE: a header and per channel runs
     // of at most 127 in 2 bytes; narrower than 8, 4 per pixel): checked before w x h floats are
     // allocated, so a 100-byte file cannot claim 8000 x 8000 pixels.
