@@ -65,8 +65,7 @@ std::string decode(const std::vector<unsigned char>& bytes, const std::filesyste
     image.pixels.assign(static_cast<std::size_t>(image.width) * image.height, glm::vec3(0.0f));
     JSAMPARRAY row = (*info.mem->alloc_sarray)(reinterpret_cast<j_common_ptr>(&info), JPOOL_IMAGE,
                                                info.output_width * 3, 1);
-    float table[256];
-    for (int v = 0; v < 256; ++v) table[v] = srgb_decode(v / 255.0f);
+    const std::array<float, 256>& table = srgb_decode_table();  // a reference: nothing a longjmp skips
     while (info.output_scanline < info.output_height) {
         const int y = static_cast<int>(info.output_scanline);
         jpeg_read_scanlines(&info, row, 1);

@@ -94,8 +94,7 @@ Image read_png(const std::filesystem::path& path) {
     } else {
         std::unique_ptr<stbi_uc, StbFree> px(stbi_load_from_memory(data, size, &w, &h, &channels, 3));
         if (!px) throw InputError("cannot read '" + path.string() + "': not a valid PNG (" + reason_or(stbi_failure_reason(), "decoding failed") + ")");
-        std::array<float, 256> table;
-        for (int v = 0; v < 256; ++v) table[v] = srgb_decode(v / 255.0f);
+        const std::array<float, 256>& table = srgb_decode_table();
         image = Image(w, h);
         for (std::size_t i = 0; i < image.pixels.size(); ++i)
             for (int c = 0; c < 3; ++c) image.pixels[i][c] = table[px.get()[3 * i + c]];

@@ -3,6 +3,7 @@
 // Error bound: both directions are evaluated in double and rounded once to float, so the
 // result is within 1 ulp of the float nearest the true value (std::pow is within 1 ulp in
 // double; the final rounding dominates).
+#include <array>
 #include <cmath>
 
 namespace sweeptrace {
@@ -27,6 +28,17 @@ inline float srgb_decode(float encoded) {
 // Nearest 8-bit code of an encoded value (round half up; the encoded value is already in [0, 1]).
 inline unsigned char to_byte(float encoded) {
     return static_cast<unsigned char>(std::lround(static_cast<double>(encoded) * 255.0));
+}
+
+// Linear values of the 256 8-bit codes, for the 8-bit readers (PNG, JPEG): one decode per code,
+// not per texel.
+inline const std::array<float, 256>& srgb_decode_table() {
+    static const std::array<float, 256> table = [] {
+        std::array<float, 256> t{};
+        for (int v = 0; v < 256; ++v) t[v] = srgb_decode(v / 255.0f);
+        return t;
+    }();
+    return table;
 }
 
 }  // namespace sweeptrace
