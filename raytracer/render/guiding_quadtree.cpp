@@ -11,6 +11,9 @@ namespace {
 
 constexpr float kBelowOne = 0x1.fffffep-1f;  // the largest float below 1
 
+// A probability in units of 1/65535.
+std::uint16_t quantize(double p) { return static_cast<std::uint16_t>(std::lround(std::clamp(p, 0.0, 1.0) * 65535.0)); }
+
 // Picks the half of [0, 1) holding `u` when the lower half has probability `p_low`, and
 // stretches u back over [0, 1) inside it (about one bit of u used per level, as a 2D warp does;
 // 24-bit uniforms leave ~17 bits inside a leaf at depth 7, far finer than any pixel resolves).
@@ -67,11 +70,11 @@ void DirectionalQuadtree::freeze() {
         if (!(sum > 0.0)) continue;  // never reached: its parent's quadrant has no energy
         const double* e = energy_[i].e;
         Node& n = nodes_[i];
-        n.low_x = static_cast<float>((e[0] + e[2]) / sum);
+        n.low_x = quantize((e[0] + e[2]) / sum);
         for (int xb = 0; xb < 2; ++xb) {
             const double column = e[xb] + e[xb + 2];
             // A column with no energy is never picked; any split keeps its density 0.
-            n.low_y[xb] = column > 0.0 ? static_cast<float>(e[xb] / column) : 0.5f;
+            n.low_y[xb] = column > 0.0 ? quantize(e[xb] / column) : kHalf;
         }
     }
 }
@@ -85,8 +88,8 @@ glm::vec3 DirectionalQuadtree::sample(float u1, float u2, float* density) const 
         const Node& n = nodes_[node];
         // The column by its share, then the quadrant within it; a column with no energy has
         // share exactly 0, so it is never picked (and pick_upper never divides by zero).
-        const int xb = pick_upper(ux, n.low_x) ? 1 : 0;
-        const int yb = pick_upper(uy, n.low_y[xb]) ? 1 : 0;
+        const int xb = pick_upper(ux, float(n.low_x) * kUnit) ? 1 : 0;
+        const int yb = pick_upper(uy, float(n.low_y[xb]) * kUnit) ? 1 : 0;
         d *= factor(n, xb, yb);
         size *= 0.5f;
         ox += float(xb) * size;
@@ -126,8 +129,9 @@ void DirectionalQuadtree::refine_into(DirectionalQuadtree& out, std::uint32_t ou
                                       const double* energy, double total, double threshold, int depth,
                                       int max_depth) const {
     for (int q = 0; q < 4; ++q) {
-        if (!(total > 0.0) || energy[q] / total <= threshold || depth >= max_depth) continue;
-        const auto child = static_cast<std::uint32_t>(out.nodes_.size());
+        if (!(total > 0.0) || energy[q] / total <= threshold || depth >= max_depth || out.nodes_.size() >= kMaxNodes)
+            continue;
+        const auto child = static_cast<std::uint16_t>(out.nodes_.size());
         out.nodes_.emplace_back();
         out.energy_.emplace_back();
         out.nodes_[out_node].child[q] = child;

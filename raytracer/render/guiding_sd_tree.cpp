@@ -19,24 +19,47 @@ void GuidingSdTree::set_box(const std::vector<std::vector<GuideRecord>>& batches
     // A cube, so that splitting x, y, z in turn keeps leaves near cubes; 1% margin so that the
     // extreme records are not on the boundary.
     const float side = std::max(1e-3f, 1.01f * std::max(hi.x - lo.x, std::max(hi.y - lo.y, hi.z - lo.z)));
-    size_ = glm::vec3(side);
-    lo_ = 0.5f * (lo + hi) - 0.5f * size_;
+    lo_ = 0.5f * (lo + hi) - glm::vec3(0.5f * side);
+    coord_scale_ = std::ldexp(1.0f, kCoordBits) / side;
     has_box_ = true;
 }
 
-std::uint32_t GuidingSdTree::leaf_of(const glm::vec3& point) const {
-    if (nodes_[0].child[0] == 0) return 0;  // one leaf (and perhaps no box yet)
-    glm::vec3 lo = lo_, size = size_;
-    std::uint32_t node = 0;
-    for (int depth = 0;; ++depth) {
+std::uint32_t GuidingSdTree::descend(std::uint32_t node, std::uint32_t depth, const std::uint32_t q[3]) const {
+    for (;; ++depth) {
         const Node& n = nodes_[node];
-        if (n.child[0] == 0) return n.leaf;
-        const int axis = depth % 3;
-        size[axis] *= 0.5f;
-        const float mid = lo[axis] + size[axis];
-        const int side = point[axis] >= mid ? 1 : 0;
-        if (side) lo[axis] = mid;
-        node = n.child[side];
+        if (n.child[0] == 0) return node;
+        const std::uint32_t bit = kCoordBits - 1 - depth / 3;
+        node = n.child[(q[depth % 3] >> bit) & 1u];
+    }
+}
+
+std::uint32_t GuidingSdTree::leaf_of(const glm::vec3& point) const {
+    if (grid_.empty()) return 0;  // one leaf (and perhaps no box yet)
+    constexpr std::uint32_t kLast = (1u << kCoordBits) - 1;
+    std::uint32_t q[3];
+    for (int a = 0; a < 3; ++a) {
+        // Outside the box (or NaN) clamps to the nearest cell: the nearest leaf.
+        const float f = (point[a] - lo_[a]) * coord_scale_;
+        q[a] = f >= 0.0f ? (f < float(kLast) ? static_cast<std::uint32_t>(f) : kLast) : 0u;
+    }
+    constexpr int kShift = kCoordBits - kGridBits;
+    const std::uint32_t cell = (q[0] >> kShift) | ((q[1] >> kShift) << kGridBits) | ((q[2] >> kShift) << (2 * kGridBits));
+    const std::uint32_t start = grid_[cell];
+    return nodes_[descend(start, nodes_[start].depth, q)].leaf;
+}
+
+void GuidingSdTree::rebuild_grid() {
+    constexpr std::uint32_t kCells = 1u << kGridBits;
+    constexpr std::uint32_t kGridDepth = 3 * kGridBits;
+    grid_.assign(std::size_t(kCells) * kCells * kCells, 0);
+    for (std::uint32_t cell = 0; cell < grid_.size(); ++cell) {
+        const std::uint32_t q[3] = {(cell & (kCells - 1)) << (kCoordBits - kGridBits),
+                                    ((cell >> kGridBits) & (kCells - 1)) << (kCoordBits - kGridBits),
+                                    (cell >> (2 * kGridBits)) << (kCoordBits - kGridBits)};
+        std::uint32_t node = 0;
+        for (std::uint32_t depth = 0; depth < kGridDepth && nodes_[node].child[0] != 0; ++depth)
+            node = nodes_[node].child[(q[depth % 3] >> (kCoordBits - 1 - depth / 3)) & 1u];
+        grid_[cell] = node;
     }
 }
 
@@ -72,7 +95,8 @@ void GuidingSdTree::end_pass(int completed_passes) {
 
 void GuidingSdTree::split(std::uint32_t node, double threshold) {
     const std::uint32_t leaf = nodes_[node].leaf;
-    if (nodes_[node].child[0] != 0 || double(leaves_[leaf].records) <= threshold) return;
+    if (nodes_[node].child[0] != 0 || nodes_[node].depth >= kMaxDepth || double(leaves_[leaf].records) <= threshold)
+        return;
     // The records are assumed to spread evenly over the two halves (PPG §3.4).
     leaves_[leaf].records /= 2;
     leaves_[leaf].light_samples /= 2;
@@ -81,8 +105,9 @@ void GuidingSdTree::split(std::uint32_t node, double threshold) {
     leaves_.push_back(std::move(copy));
     const auto other = static_cast<std::uint32_t>(leaves_.size() - 1);
     const auto first = static_cast<std::uint32_t>(nodes_.size());
-    nodes_.push_back(Node{{0, 0}, leaf});
-    nodes_.push_back(Node{{0, 0}, other});
+    const std::uint32_t depth = nodes_[node].depth + 1;
+    nodes_.push_back(Node{{0, 0}, leaf, depth});
+    nodes_.push_back(Node{{0, 0}, other, depth});
     nodes_[node].child[0] = first;
     nodes_[node].child[1] = first + 1;
     split(first, threshold);
@@ -102,6 +127,7 @@ void GuidingSdTree::end_iteration(int iteration) {
     const double threshold = kSplitRecords * std::sqrt(std::ldexp(1.0, iteration));
     const std::size_t nodes = nodes_.size();
     for (std::uint32_t n = 0; n < nodes; ++n) split(n, threshold);
+    if (nodes_.size() > 1) rebuild_grid();
     if (iteration == kDecisionIteration && guided_record_share() < kMinGuidedShare) {
         off_ = true;
         for (Leaf& leaf : leaves_) leaf.usable = false;
