@@ -33,19 +33,30 @@ std::uint32_t GuidingSdTree::descend(std::uint32_t node, std::uint32_t depth, co
     }
 }
 
-std::uint32_t GuidingSdTree::leaf_of(const glm::vec3& point) const {
-    if (grid_.empty()) return 0;  // one leaf (and perhaps no box yet)
+void GuidingSdTree::quantize(const glm::vec3& point, std::uint32_t q[3]) const {
     constexpr std::uint32_t kLast = (1u << kCoordBits) - 1;
-    std::uint32_t q[3];
     for (int a = 0; a < 3; ++a) {
         // Outside the box (or NaN) clamps to the nearest cell: the nearest leaf.
         const float f = (point[a] - lo_[a]) * coord_scale_;
         q[a] = f >= 0.0f ? (f < float(kLast) ? static_cast<std::uint32_t>(f) : kLast) : 0u;
     }
+}
+
+std::uint32_t GuidingSdTree::leaf_of(const glm::vec3& point) const {
+    if (grid_.empty()) return 0;  // one leaf (and perhaps no box yet)
+    std::uint32_t q[3];
+    quantize(point, q);
     constexpr int kShift = kCoordBits - kGridBits;
     const std::uint32_t cell = (q[0] >> kShift) | ((q[1] >> kShift) << kGridBits) | ((q[2] >> kShift) << (2 * kGridBits));
     const std::uint32_t start = grid_[cell];
     return nodes_[descend(start, nodes_[start].depth, q)].leaf;
+}
+
+std::uint32_t GuidingSdTree::leaf_of_from_root(const glm::vec3& point) const {
+    if (nodes_[0].child[0] == 0) return 0;
+    std::uint32_t q[3];
+    quantize(point, q);
+    return nodes_[descend(0, 0, q)].leaf;
 }
 
 void GuidingSdTree::rebuild_grid() {

@@ -86,6 +86,8 @@ public:
 
     // The leaf holding `point` (valid until the next end_pass).
     std::uint32_t leaf_of(const glm::vec3& point) const;
+    // The same leaf by the descent from the root, without the grid: what leaf_of is tested against.
+    std::uint32_t leaf_of_from_root(const glm::vec3& point) const;
     // The learned distribution of a leaf, or nullptr where nothing was learned yet.
     const DirectionalQuadtree* guide_at(std::uint32_t leaf) const {
         return leaves_[leaf].usable ? &leaves_[leaf].sampling : nullptr;
@@ -115,6 +117,7 @@ private:
     // first levels were a chain of dependent loads that missed the cache (5% of a guided render).
     static constexpr int kGridBits = 5;
     void rebuild_grid();
+    void quantize(const glm::vec3& point, std::uint32_t q[3]) const;
     std::uint32_t descend(std::uint32_t node, std::uint32_t depth, const std::uint32_t q[3]) const;
     struct Leaf {
         DirectionalQuadtree sampling, building;

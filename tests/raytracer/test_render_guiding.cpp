@@ -2,6 +2,7 @@
 // draws with (exact sum and chi-square), the BSDF + guide mixture's weights are f cos / (the
 // density it sampled with), and guided renders are unbiased (they agree with unguided ones by the
 // block z-test) and the same bit for bit at any thread count.
+#include <set>
 #include <catch2/catch.hpp>
 
 #include <cmath>
@@ -163,6 +164,38 @@ TEST_CASE("guiding: mixture samples weigh f cos / (the mixture's density): E[wei
     INFO("mean weight " << weight.mean << " +- " << weight.standard_error());
     CHECK(std::abs(weight.mean - 0.6) < z_bound(1) * weight.standard_error());
     CHECK(guided_share.mean > 0.1);  // the guide's samples took part (some fall below the surface)
+}
+
+TEST_CASE("guiding: every spatial leaf is reached, deep below the lookup grid, and outside points find the nearest", "[render][guiding]") {
+    // 60000 records crowded into a cube of side 1/1024 in a corner of the unit box split the tree
+    // some 30 levels deep there, below the 15 levels the lookup grid covers.
+    GuidingSdTree sd;
+    std::vector<GuideRecord> records;
+    Rng rng(3, 3, 3);
+    const float side = 1.0f / 1024.0f;
+    for (int i = 0; i < 60000; ++i)
+        records.push_back({glm::vec3(rng.uniform(), rng.uniform(), rng.uniform()) * side, glm::vec3(0.0f, 0.0f, 1.0f), 1.0f});
+    records.push_back({glm::vec3(1.0f), glm::vec3(0.0f, 0.0f, 1.0f), 1.0f});  // the far corner of the box
+    sd.add({records});
+    sd.end_pass(1);
+    REQUIRE(sd.leaf_count() >= 8);
+    std::set<std::uint32_t> reached;
+    for (int i = 0; i < 200000; ++i) {
+        const glm::vec3 u(rng.uniform(), rng.uniform(), rng.uniform());
+        const glm::vec3 p = i % 2 ? u * (2.0f * side) : u;
+        reached.insert(sd.leaf_of(p));
+        if (i % 10 == 0) CHECK(sd.leaf_of(p) == sd.leaf_of_from_root(p));  // the grid only shortens the descent
+    }
+    CHECK(reached.size() == sd.leaf_count());
+    for (std::uint32_t leaf : reached) CHECK(leaf < sd.leaf_count());
+    // Outside the box, and NaN, a point belongs to the leaf nearest along each axis.
+    for (int i = 0; i < 1000; ++i) {
+        const glm::vec3 p = glm::vec3(rng.uniform(), rng.uniform(), rng.uniform()) * side;
+        CHECK(sd.leaf_of(glm::vec3(-100.0f, p.y, p.z)) == sd.leaf_of(glm::vec3(0.0f, p.y, p.z)));
+        CHECK(sd.leaf_of(glm::vec3(p.x, -1e30f, p.z)) == sd.leaf_of(glm::vec3(p.x, 0.0f, p.z)));
+        CHECK(sd.leaf_of(glm::vec3(p.x, p.y, NAN)) == sd.leaf_of(glm::vec3(p.x, p.y, -1.0f)));
+    }
+    CHECK(sd.leaf_of(glm::vec3(1e30f)) == sd.leaf_of(glm::vec3(1.0f)));
 }
 
 TEST_CASE("guiding: the spatial tree learns only between passes and splits where records crowd", "[render][guiding]") {
