@@ -6,7 +6,7 @@
 // AVX2, and no AVX2 copy of a function may be picked by the linker for the scalar path.
 //
 // Box test: the conservative slab test of bvh_traversal.hpp (far distance enlarged by
-// 1 + 2 gamma(3), NaN never shrinks the interval), lane by lane the same float operations in
+// 1 + 2 gamma(3), folded into the far planes' inverse direction, NaN never shrinks the interval), lane by lane the same float operations in
 // the same order whatever the kernel, so every kernel visits the same nodes in the same order.
 // Closest hit visits children nearest entry first (a stack sorted per node) and skips a popped
 // box entered beyond the current tmax; occluded() is any-hit: no sorting (the farthest box of a
@@ -43,12 +43,17 @@ namespace {  // NOLINT: internal linkage on purpose, see above
 struct WideRay {
     float origin[3];
     float inv_dir[3];
+    // inv_dir enlarged for the far planes: (b - o) * (inv_dir * scale) rounds as often as
+    // ((b - o) * inv_dir) * scale, 4 roundings, so the slab test's bound (bvh_traversal.hpp)
+    // holds unchanged, and a node costs three multiplies less.
+    float inv_dir_far[3];
     std::uint32_t near_offset[3], far_offset[3];
 
     explicit WideRay(const collision::Ray& ray) {
         for (int a = 0; a < 3; ++a) {
             origin[a] = ray.origin[a];
             inv_dir[a] = 1.0f / ray.dir[a];
+            inv_dir_far[a] = inv_dir[a] * kSlabFarScale;
             const std::uint32_t lo = static_cast<std::uint32_t>(sizeof(float)) * kWideWidth * (2 * a);
             const std::uint32_t hi = lo + static_cast<std::uint32_t>(sizeof(float)) * kWideWidth;
             near_offset[a] = ray.dir[a] < 0.0f ? hi : lo;
@@ -84,6 +89,14 @@ inline void traverse_nearest(const WideBvh& tree, const collision::Ray& world, f
             unsigned mask = boxes.test(node, tmin, tmax, t_enter);
             if (mask != 0 && (mask & (mask - 1)) == 0) {  // one box: no stack traffic
                 ref = node.child[std::countr_zero(mask)];
+                continue;
+            }
+            const unsigned rest = mask & (mask - 1);
+            if (mask != 0 && (rest & (rest - 1)) == 0) {  // two boxes, the common case: the loop below, unrolled
+                const int a = std::countr_zero(mask), b = std::countr_zero(rest);
+                const bool a_nearer = t_enter[a] < t_enter[b];  // equal: the later lane first, as below
+                stack[top++] = StackEntry{node.child[a_nearer ? b : a], t_enter[a_nearer ? b : a]};
+                ref = node.child[a_nearer ? a : b];
                 continue;
             }
             if (mask != 0) {
