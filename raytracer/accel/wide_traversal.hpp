@@ -347,13 +347,14 @@ bool top_intersect(const TopLevelView& top, const collision::Ray& ray, SurfaceHi
 // spheres a nearer hit would have culled.
 template <class K>
 bool top_occluded(const TopLevelView& top, const collision::Ray& ray) {
-    const typename K::Spheres spheres(ray);
     auto leaf = [&](std::uint32_t ref) __attribute__((always_inline)) {
         const std::uint32_t first = wide_ref::first(ref), end = first + wide_ref::count(ref);
         for (std::uint32_t i = first; i < end; ++i)
             if (object_occluded<K>(top, i, ray)) return true;
         return false;
     };
+    if (wide_ref::is_leaf(top.tree->root)) return leaf(top.tree->root);  // one object: no node, no sphere set-up
+    const typename K::Spheres spheres(ray);
     auto node = [&](std::uint32_t index, unsigned mask, bool& stop) __attribute__((always_inline)) {
         LaneTimes times;
         unsigned scalar = 0, taken = 0;
