@@ -27,6 +27,7 @@
 // compiles the scalar test with VEX encodings but still without FMA.
 #include <bit>
 #include <cstdint>
+#include <utility>
 
 #include "collision/sphere_candidate.hpp"
 #include "collision/triangle_watertight.hpp"
@@ -97,6 +98,20 @@ inline void traverse_nearest(const WideBvh& tree, const collision::Ray& world, f
                 const bool a_nearer = t_enter[a] < t_enter[b];  // equal: the later lane first, as below
                 stack[top++] = StackEntry{node.child[a_nearer ? b : a], t_enter[a_nearer ? b : a]};
                 ref = node.child[a_nearer ? a : b];
+                continue;
+            }
+            const unsigned rest2 = rest & (rest - 1);
+            if (mask != 0 && (rest2 & (rest2 - 1)) == 0) {
+                // three boxes: a sorting network with the insertion loop's order (nearer entry
+                // first, equal entries: the later lane first)
+                int l0 = std::countr_zero(mask), l1 = std::countr_zero(rest), l2 = std::countr_zero(rest2);
+                auto before = [&](int x, int y) { return t_enter[x] < t_enter[y] || (t_enter[x] == t_enter[y] && x > y); };
+                if (before(l1, l0)) std::swap(l0, l1);
+                if (before(l2, l1)) std::swap(l1, l2);
+                if (before(l1, l0)) std::swap(l0, l1);
+                stack[top++] = StackEntry{node.child[l2], t_enter[l2]};
+                stack[top++] = StackEntry{node.child[l1], t_enter[l1]};
+                ref = node.child[l0];
                 continue;
             }
             if (mask != 0) {
