@@ -72,6 +72,31 @@ struct StackEntry {
     float t_enter;
 };
 
+// A node with two or three entered boxes (of >= 2), the common cases, without the insertion
+// loop of traverse_nearest: the same order (nearer entry first; equal entries, the later lane
+// first, as the loop leaves them). Returns false for more boxes.
+inline bool enter_two_or_three(const WideNode& node, unsigned mask, const float* t_enter, StackEntry* stack, int& top,
+                               std::uint32_t& ref) {
+    const unsigned rest = mask & (mask - 1), rest2 = rest & (rest - 1);
+    if (rest2 == 0) {
+        const int a = std::countr_zero(mask), b = std::countr_zero(rest);
+        const bool a_nearer = t_enter[a] < t_enter[b];
+        stack[top++] = StackEntry{node.child[a_nearer ? b : a], t_enter[a_nearer ? b : a]};
+        ref = node.child[a_nearer ? a : b];
+        return true;
+    }
+    if ((rest2 & (rest2 - 1)) != 0) return false;
+    int l0 = std::countr_zero(mask), l1 = std::countr_zero(rest), l2 = std::countr_zero(rest2);
+    auto before = [&](int x, int y) { return t_enter[x] < t_enter[y] || (t_enter[x] == t_enter[y] && x > y); };
+    if (before(l1, l0)) std::swap(l0, l1);  // a three-comparator sorting network
+    if (before(l2, l1)) std::swap(l1, l2);
+    if (before(l1, l0)) std::swap(l0, l1);
+    stack[top++] = StackEntry{node.child[l2], t_enter[l2]};
+    stack[top++] = StackEntry{node.child[l1], t_enter[l1]};
+    ref = node.child[l0];
+    return true;
+}
+
 // Nearest-first traversal; leaf(ref, tmax&) may lower tmax.
 template <class K, class Leaf>
 inline void traverse_nearest(const WideBvh& tree, const collision::Ray& world, float tmin, float& tmax, Leaf&& leaf) {
@@ -92,28 +117,7 @@ inline void traverse_nearest(const WideBvh& tree, const collision::Ray& world, f
                 ref = node.child[std::countr_zero(mask)];
                 continue;
             }
-            const unsigned rest = mask & (mask - 1);
-            if (mask != 0 && (rest & (rest - 1)) == 0) {  // two boxes, the common case: the loop below, unrolled
-                const int a = std::countr_zero(mask), b = std::countr_zero(rest);
-                const bool a_nearer = t_enter[a] < t_enter[b];  // equal: the later lane first, as below
-                stack[top++] = StackEntry{node.child[a_nearer ? b : a], t_enter[a_nearer ? b : a]};
-                ref = node.child[a_nearer ? a : b];
-                continue;
-            }
-            const unsigned rest2 = rest & (rest - 1);
-            if (mask != 0 && (rest2 & (rest2 - 1)) == 0) {
-                // three boxes: a sorting network with the insertion loop's order (nearer entry
-                // first, equal entries: the later lane first)
-                int l0 = std::countr_zero(mask), l1 = std::countr_zero(rest), l2 = std::countr_zero(rest2);
-                auto before = [&](int x, int y) { return t_enter[x] < t_enter[y] || (t_enter[x] == t_enter[y] && x > y); };
-                if (before(l1, l0)) std::swap(l0, l1);
-                if (before(l2, l1)) std::swap(l1, l2);
-                if (before(l1, l0)) std::swap(l0, l1);
-                stack[top++] = StackEntry{node.child[l2], t_enter[l2]};
-                stack[top++] = StackEntry{node.child[l1], t_enter[l1]};
-                ref = node.child[l0];
-                continue;
-            }
+            if (mask != 0 && enter_two_or_three(node, mask, t_enter, stack, top, ref)) continue;
             if (mask != 0) {
                 const int base = top;
                 do {  // insert sorted: the nearest box ends on top of the stack
