@@ -1,7 +1,10 @@
 #include "raytracer/accel/wide_bvh.hpp"
 
+#include <algorithm>
 #include <limits>
 #include <stdexcept>
+
+#include <glm/common.hpp>
 
 #include "raytracer/accel/sah_cost.hpp"
 
@@ -33,8 +36,10 @@ public:
         }
         std::uint32_t children[kWideWidth];
         const int n = open_children(b, children);
+        const std::uint8_t axis = sort_children(children, n);
         const std::uint32_t index = static_cast<std::uint32_t>(out_.nodes.size());
         out_.nodes.emplace_back();
+        out_.axis.push_back(axis);
         out_.depth = depth > out_.depth ? depth : out_.depth;
         for (int slot = 0; slot < kWideWidth; ++slot) {
             const bool used = slot < n;
@@ -53,6 +58,24 @@ private:
     static constexpr float kInf = std::numeric_limits<float>::infinity();
 
     bool openable(std::uint32_t b) const { return !bvh_.nodes[b].is_leaf() && count_[b] > max_leaf_; }
+
+    // Children in the order of their box centres along the axis where those centres spread
+    // most (ties: the binary tree's order); returns that axis (WideBvh::axis).
+    std::uint8_t sort_children(std::uint32_t* children, int n) const {
+        glm::vec3 lo(kInf), hi(-kInf);
+        for (int i = 0; i < n; ++i) {
+            const glm::vec3 c = centre(children[i]);
+            lo = glm::min(lo, c);
+            hi = glm::max(hi, c);
+        }
+        const glm::vec3 spread = hi - lo;
+        const int axis = spread.x >= spread.y ? (spread.x >= spread.z ? 0 : 2) : (spread.y >= spread.z ? 1 : 2);
+        std::stable_sort(children, children + n,
+                         [&](std::uint32_t p, std::uint32_t q) { return centre(p)[axis] < centre(q)[axis]; });
+        return static_cast<std::uint8_t>(axis);
+    }
+
+    glm::vec3 centre(std::uint32_t b) const { return 0.5f * (bvh_.nodes[b].lo + bvh_.nodes[b].hi); }
 
     // The binary node's children, opened largest-area first until kWideWidth of them.
     int open_children(std::uint32_t b, std::uint32_t* children) const {

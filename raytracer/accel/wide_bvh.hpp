@@ -42,12 +42,15 @@ static_assert(sizeof(WideNode) == 224, "a wide node is 7 AVX vectors: 6 box plan
 struct WideBvh {
     std::vector<WideNode> nodes;             // nodes[0] is the root when `root` is not a leaf
     std::uint32_t root = wide_ref::empty;    // a leaf when the whole tree is one leaf
+    // Per node, the axis its children are sorted along (by box centre, lowest first): the
+    // any-hit traversal takes the last child along the ray first without comparing distances.
+    std::vector<std::uint8_t> axis;
     int depth = 0;                           // levels of wide nodes, <= collision::Bvh::max_depth
 
     // Entries a traversal stack needs: each level pushes at most kWideWidth - 1 and one is popped.
     static constexpr int stack_size = kWideWidth * (collision::Bvh::max_depth + 1);
 
-    std::size_t memory_bytes() const { return nodes.capacity() * sizeof(WideNode); }
+    std::size_t memory_bytes() const { return nodes.capacity() * sizeof(WideNode) + axis.capacity(); }
 };
 
 // Throws std::length_error when a slot index would not fit a reference (2^27 primitives);

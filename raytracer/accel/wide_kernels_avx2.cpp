@@ -29,26 +29,23 @@ namespace {
 
 struct Avx2Kernel {
     struct Boxes {
-        __m256 ox, oy, oz, ix, iy, iz;
+        __m256 ox, oy, oz, ix, iy, iz, fx, fy, fz;
         std::uint32_t near_offset[3], far_offset[3];
 
         explicit Boxes(const WideRay& r)
             : ox(_mm256_set1_ps(r.origin[0])), oy(_mm256_set1_ps(r.origin[1])), oz(_mm256_set1_ps(r.origin[2])),
               ix(_mm256_set1_ps(r.inv_dir[0])), iy(_mm256_set1_ps(r.inv_dir[1])), iz(_mm256_set1_ps(r.inv_dir[2])),
+              fx(_mm256_set1_ps(r.inv_dir_far[0])), fy(_mm256_set1_ps(r.inv_dir_far[1])), fz(_mm256_set1_ps(r.inv_dir_far[2])),
               near_offset{r.near_offset[0], r.near_offset[1], r.near_offset[2]},
               far_offset{r.far_offset[0], r.far_offset[1], r.far_offset[2]} {}
 
         unsigned test(const WideNode& node, float tmin, float tmax, float* t_enter) const {
-            const __m256 scale = _mm256_set1_ps(kSlabFarScale);
             const __m256 tx0 = _mm256_mul_ps(_mm256_sub_ps(_mm256_load_ps(node_plane(node, near_offset[0])), ox), ix);
             const __m256 ty0 = _mm256_mul_ps(_mm256_sub_ps(_mm256_load_ps(node_plane(node, near_offset[1])), oy), iy);
             const __m256 tz0 = _mm256_mul_ps(_mm256_sub_ps(_mm256_load_ps(node_plane(node, near_offset[2])), oz), iz);
-            const __m256 tx1 =
-                _mm256_mul_ps(_mm256_mul_ps(_mm256_sub_ps(_mm256_load_ps(node_plane(node, far_offset[0])), ox), ix), scale);
-            const __m256 ty1 =
-                _mm256_mul_ps(_mm256_mul_ps(_mm256_sub_ps(_mm256_load_ps(node_plane(node, far_offset[1])), oy), iy), scale);
-            const __m256 tz1 =
-                _mm256_mul_ps(_mm256_mul_ps(_mm256_sub_ps(_mm256_load_ps(node_plane(node, far_offset[2])), oz), iz), scale);
+            const __m256 tx1 = _mm256_mul_ps(_mm256_sub_ps(_mm256_load_ps(node_plane(node, far_offset[0])), ox), fx);
+            const __m256 ty1 = _mm256_mul_ps(_mm256_sub_ps(_mm256_load_ps(node_plane(node, far_offset[1])), oy), fy);
+            const __m256 tz1 = _mm256_mul_ps(_mm256_sub_ps(_mm256_load_ps(node_plane(node, far_offset[2])), oz), fz);
             // vmaxps(a, b) = a > b ? a : b and vminps(a, b) = a < b ? a : b: b when a is NaN,
             // exactly the scalar kernel's selects.
             __m256 t0 = _mm256_max_ps(tx0, _mm256_set1_ps(tmin));
@@ -120,6 +117,9 @@ struct Avx2Kernel {
             const __m256 vtmin = _mm256_set1_ps(tmin), vtmax = _mm256_set1_ps(tmax);
             ok = _mm256_and_ps(ok, _mm256_cmp_ps(ts, mul(vtmin, abs_det), _CMP_GT_OQ));
             ok = _mm256_and_ps(ok, _mm256_cmp_ps(ts, mul(vtmax, abs_det), _CMP_LT_OQ));
+            // A ray leaving a surface meets its own triangle's plane behind the origin: the range
+            // test fails, and the division and the error bound would be wasted on that lane.
+            if ((bits(ok) & inside) == 0) return 0;
             const __m256 inv_det = _mm256_div_ps(_mm256_set1_ps(1.0f), det);
             const __m256 t = mul(t_scaled, inv_det);
             ok = _mm256_and_ps(ok, _mm256_and_ps(_mm256_cmp_ps(t, vtmin, _CMP_GT_OQ), _mm256_cmp_ps(t, vtmax, _CMP_LT_OQ)));

@@ -17,11 +17,11 @@ struct ScalarKernel {
             unsigned mask = 0;
             for (int i = 0; i < kWideWidth; ++i) {
                 const float tx0 = (nx[i] - r.origin[0]) * r.inv_dir[0];
-                const float tx1 = (fx[i] - r.origin[0]) * r.inv_dir[0] * kSlabFarScale;
+                const float tx1 = (fx[i] - r.origin[0]) * r.inv_dir_far[0];
                 const float ty0 = (ny[i] - r.origin[1]) * r.inv_dir[1];
-                const float ty1 = (fy[i] - r.origin[1]) * r.inv_dir[1] * kSlabFarScale;
+                const float ty1 = (fy[i] - r.origin[1]) * r.inv_dir_far[1];
                 const float tz0 = (nz[i] - r.origin[2]) * r.inv_dir[2];
-                const float tz1 = (fz[i] - r.origin[2]) * r.inv_dir[2] * kSlabFarScale;
+                const float tz1 = (fz[i] - r.origin[2]) * r.inv_dir_far[2];
                 mask |= static_cast<unsigned>(slab_interval(tx0, tx1, ty0, ty1, tz0, tz1, tmin, tmax, t_enter[i])) << i;
             }
             return mask;

@@ -6,11 +6,11 @@
 // AVX2, and no AVX2 copy of a function may be picked by the linker for the scalar path.
 //
 // Box test: the conservative slab test of bvh_traversal.hpp (far distance enlarged by
-// 1 + 2 gamma(3), NaN never shrinks the interval), lane by lane the same float operations in
+// 1 + 2 gamma(3), folded into the far planes' inverse direction, NaN never shrinks the interval), lane by lane the same float operations in
 // the same order whatever the kernel, so every kernel visits the same nodes in the same order.
 // Closest hit visits children nearest entry first (a stack sorted per node) and skips a popped
-// box entered beyond the current tmax; occluded() is any-hit: no sorting (the farthest box of a
-// node first), stops at the first.
+// box entered beyond the current tmax; occluded() is any-hit: no sorting (the node's last child
+// along the ray, in the build's order, first), stops at the first.
 //
 // Triangle test: the watertight test of collision/triangle_watertight.hpp, unchanged, so its
 // stated error bound holds. The AVX2 kernel runs it on the up to 8 triangles of a leaf at once
@@ -27,6 +27,7 @@
 // compiles the scalar test with VEX encodings but still without FMA.
 #include <bit>
 #include <cstdint>
+#include <utility>
 
 #include "collision/sphere_candidate.hpp"
 #include "collision/triangle_watertight.hpp"
@@ -43,12 +44,17 @@ namespace {  // NOLINT: internal linkage on purpose, see above
 struct WideRay {
     float origin[3];
     float inv_dir[3];
+    // inv_dir enlarged for the far planes: (b - o) * (inv_dir * scale) rounds as often as
+    // ((b - o) * inv_dir) * scale, 4 roundings, so the slab test's bound (bvh_traversal.hpp)
+    // holds unchanged, and a node costs three multiplies less.
+    float inv_dir_far[3];
     std::uint32_t near_offset[3], far_offset[3];
 
     explicit WideRay(const collision::Ray& ray) {
         for (int a = 0; a < 3; ++a) {
             origin[a] = ray.origin[a];
             inv_dir[a] = 1.0f / ray.dir[a];
+            inv_dir_far[a] = inv_dir[a] * kSlabFarScale;
             const std::uint32_t lo = static_cast<std::uint32_t>(sizeof(float)) * kWideWidth * (2 * a);
             const std::uint32_t hi = lo + static_cast<std::uint32_t>(sizeof(float)) * kWideWidth;
             near_offset[a] = ray.dir[a] < 0.0f ? hi : lo;
@@ -65,6 +71,31 @@ struct StackEntry {
     std::uint32_t ref;
     float t_enter;
 };
+
+// A node with two or three entered boxes (of >= 2), the common cases, without the insertion
+// loop of traverse_nearest: the same order (nearer entry first; equal entries, the later lane
+// first, as the loop leaves them). Returns false for more boxes.
+inline bool enter_two_or_three(const WideNode& node, unsigned mask, const float* t_enter, StackEntry* stack, int& top,
+                               std::uint32_t& ref) {
+    const unsigned rest = mask & (mask - 1), rest2 = rest & (rest - 1);
+    if (rest2 == 0) {
+        const int a = std::countr_zero(mask), b = std::countr_zero(rest);
+        const bool a_nearer = t_enter[a] < t_enter[b];
+        stack[top++] = StackEntry{node.child[a_nearer ? b : a], t_enter[a_nearer ? b : a]};
+        ref = node.child[a_nearer ? a : b];
+        return true;
+    }
+    if ((rest2 & (rest2 - 1)) != 0) return false;
+    int l0 = std::countr_zero(mask), l1 = std::countr_zero(rest), l2 = std::countr_zero(rest2);
+    auto before = [&](int x, int y) { return t_enter[x] < t_enter[y] || (t_enter[x] == t_enter[y] && x > y); };
+    if (before(l1, l0)) std::swap(l0, l1);  // a three-comparator sorting network
+    if (before(l2, l1)) std::swap(l1, l2);
+    if (before(l1, l0)) std::swap(l0, l1);
+    stack[top++] = StackEntry{node.child[l2], t_enter[l2]};
+    stack[top++] = StackEntry{node.child[l1], t_enter[l1]};
+    ref = node.child[l0];
+    return true;
+}
 
 // Nearest-first traversal; leaf(ref, tmax&) may lower tmax.
 template <class K, class Leaf>
@@ -86,6 +117,7 @@ inline void traverse_nearest(const WideBvh& tree, const collision::Ray& world, f
                 ref = node.child[std::countr_zero(mask)];
                 continue;
             }
+            if (mask != 0 && enter_two_or_three(node, mask, t_enter, stack, top, ref)) continue;
             if (mask != 0) {
                 const int base = top;
                 do {  // insert sorted: the nearest box ends on top of the stack
@@ -119,11 +151,16 @@ struct NoAnyHook {
 
 // Any-hit traversal: leaf(ref) returns true to stop. any_hook(node index, hit children mask,
 // stop&) may finish some hit children at the node (returning their mask; stop = one is hit).
-template <class K, class Leaf, class AnyHook = NoAnyHook>
+// kBuildOrder: the farthest child by the build's order (meshes); otherwise by entry distance
+// (the top level, whose children's sizes vary too much for the order of their centres: on
+// scenes/spheres-field.json, native / embree occluded 1.67-1.68 by distance, 1.62-1.63 by order).
+enum class FarChild { ByBuildOrder, ByDistance };
+template <class K, FarChild kFar = FarChild::ByBuildOrder, class Leaf, class AnyHook = NoAnyHook>
 inline bool traverse_any(const WideBvh& tree, const collision::Ray& world, float tmin, float tmax, Leaf&& leaf,
                          AnyHook&& any_hook = {}) {
     if (wide_ref::is_leaf(tree.root)) return leaf(tree.root);
     const typename K::Boxes boxes{WideRay(world)};
+    const bool forward[3] = {world.dir.x >= 0.0f, world.dir.y >= 0.0f, world.dir.z >= 0.0f};
     std::uint32_t stack[WideBvh::stack_size];
     int top = 0;
     std::uint32_t ref = tree.root;
@@ -139,14 +176,31 @@ inline bool traverse_any(const WideBvh& tree, const collision::Ray& world, float
                 // No sorting, but the farthest box first: a shadow ray starts on a surface, and
                 // the boxes it enters first hold that surface, which cannot block it. Measured on
                 // bench --meshes shadow rays (medians of 4 runs, native / embree occluded): slot
-                // order 0.88-1.08, farthest first 0.95-1.07 (ogre 0.88 -> 0.95, bunny 0.96 -> 1.00).
-                int far = std::countr_zero(mask);
-                for (unsigned m = mask & (mask - 1); m != 0; m &= m - 1) {
-                    const int lane = std::countr_zero(m);
-                    if (t_enter[lane] > t_enter[far]) far = lane;
+                // order 0.88-1.08, farthest entry distance first 0.95-1.07 (ogre 0.88 -> 0.95,
+                // bunny 0.96 -> 1.00). "Farthest" is now read from the build's order (children
+                // sorted along tree.axis) and the ray's direction on that axis, with no compare
+                // loop, whose exits the branch predictor kept missing: 3 alternated runs, cow
+                // 1.04 -> 1.06-1.08, suzanne 1.03 -> 1.09, teapot 1.05 -> 1.16-1.19, spot 1.11
+                // -> 1.12-1.15, bunny 1.02 -> 1.06-1.07; ogre 0.93-1.01 either way in the bench,
+                // 0.99-1.00 -> 1.02-1.05 on its shadow rays alone.
+                if constexpr (kFar == FarChild::ByDistance) {
+                    int far = std::countr_zero(mask);
+                    for (unsigned m = mask & (mask - 1); m != 0; m &= m - 1) {
+                        const int lane = std::countr_zero(m);
+                        if (t_enter[lane] > t_enter[far]) far = lane;
+                    }
+                    ref = node.child[far];
+                    for (mask &= ~(1u << far); mask != 0; mask &= mask - 1) stack[top++] = node.child[std::countr_zero(mask)];
+                } else if (forward[tree.axis[ref]]) {  // the last child along the ray first, then back
+                    const int far = 31 - std::countl_zero(mask);
+                    ref = node.child[far];
+                    for (mask &= ~(1u << far); mask != 0; mask &= mask - 1) stack[top++] = node.child[std::countr_zero(mask)];
+                } else {
+                    const int far = std::countr_zero(mask);
+                    ref = node.child[far];
+                    for (mask &= mask - 1; mask != 0; mask &= ~(1u << (31 - std::countl_zero(mask))))
+                        stack[top++] = node.child[31 - std::countl_zero(mask)];
                 }
-                ref = node.child[far];
-                for (mask &= ~(1u << far); mask != 0; mask &= mask - 1) stack[top++] = node.child[std::countr_zero(mask)];
                 continue;
             }
         } else if (leaf(ref)) {
@@ -334,13 +388,14 @@ bool top_intersect(const TopLevelView& top, const collision::Ray& ray, SurfaceHi
 // spheres a nearer hit would have culled.
 template <class K>
 bool top_occluded(const TopLevelView& top, const collision::Ray& ray) {
-    const typename K::Spheres spheres(ray);
     auto leaf = [&](std::uint32_t ref) __attribute__((always_inline)) {
         const std::uint32_t first = wide_ref::first(ref), end = first + wide_ref::count(ref);
         for (std::uint32_t i = first; i < end; ++i)
             if (object_occluded<K>(top, i, ray)) return true;
         return false;
     };
+    if (wide_ref::is_leaf(top.tree->root)) return leaf(top.tree->root);  // one object: no node, no sphere set-up
+    const typename K::Spheres spheres(ray);
     auto node = [&](std::uint32_t index, unsigned mask, bool& stop) __attribute__((always_inline)) {
         LaneTimes times;
         unsigned scalar = 0, taken = 0;
@@ -352,7 +407,7 @@ bool top_occluded(const TopLevelView& top, const collision::Ray& ray) {
         }
         return taken;
     };
-    return traverse_any<K>(*top.tree, ray, ray.tmin, ray.tmax, leaf, node);
+    return traverse_any<K, FarChild::ByDistance>(*top.tree, ray, ray.tmin, ray.tmax, leaf, node);
 }
 
 template <class K>

@@ -1,7 +1,8 @@
 // `sweeptrace bench SCENE [--rays N] [--threads N] [--spp N]`: the native BVH against Embree on
 // the same scene and the same rays, one single-threaded run each: build time, Mrays/s (primary
 // rays through the camera plus one random bounce from each primary hit; occluded() on shadow
-// rays from each primary hit to a key light), their ratio, bytes per triangle; then samples/s of a short render at 1 and up to --threads threads. It prints
+// rays from each primary hit, and from each bounce hit, to a key light), their ratio, bytes per
+// triangle; then samples/s of a short render at 1 and up to --threads threads. It prints
 // figures; it asserts nothing. `sweeptrace bench --meshes DIR` does the same per OBJ file of DIR
 // (bench_meshes.hpp). Ray rates are per second of the tracing thread's CPU time (bench_rays.hpp).
 #include <cstdio>
@@ -89,6 +90,17 @@ void run_bench(const BenchArgs& args) {
                 "embree %.2fx\n",
                 native.name().c_str(), mshadow / ao.cpu, embree->name().c_str(), mshadow / bo.cpu, bo.cpu / ao.cpu,
                 as.cpu / ao.cpu, bs.cpu / bo.cpu);
+    // The shadow rays a render also traces: from each bounce hit to the key light.
+    const ShadowTimes second = time_shadow(native, *embree, bench.shadow_bounce);
+    const double mbounce = 1e-6 * static_cast<double>(bench.shadow_bounce.size());
+    if (!bench.shadow_bounce.empty())
+        std::printf("%zu shadow rays from the bounce hits, %zu / %zu occluded:\noccluded: %s %.3f, %s %.3f Mrays/s (cpu); "
+                    "native / embree %.2fx; occluded / intersect: native %.2fx, embree %.2fx\n",
+                    bench.shadow_bounce.size(), second.native_occluded.hits, second.embree_occluded.hits,
+                    native.name().c_str(), mbounce / second.native_occluded.cpu, embree->name().c_str(),
+                    mbounce / second.embree_occluded.cpu, second.embree_occluded.cpu / second.native_occluded.cpu,
+                    second.native_intersect.cpu / second.native_occluded.cpu,
+                    second.embree_intersect.cpu / second.embree_occluded.cpu);
     // An Embree device made with "threads=1" caps TBB's parallelism for the whole process while
     // it lives, which would make the multi-threaded render below run on one core.
     embree.reset();

@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <memory>
+#include <string>
 #include <vector>
 
 #include <glm/geometric.hpp>
@@ -55,6 +56,8 @@ Scene framed_scene(Mesh mesh) {
     return scene;
 }
 
+void print_shadow_detail(const Accel& native, const Accel& embree, const BenchRays& bench);
+
 struct Timed {
     double cpu = 0.0, wall = 0.0;
 };
@@ -99,6 +102,38 @@ void bench_one(const std::filesystem::path& file, int primaries) {
     if (ni.hits != ei.hits || no.hits != eo.hits)
         std::printf("%-18s note: hits differ, intersect %zu / %zu, occluded %zu / %zu (native / embree)\n", "",
                     ni.hits, ei.hits, no.hits, eo.hits);
+    print_shadow_detail(*native, *embree, bench);
+}
+
+// occl/isect of native then embree on `rays`, or n/a for too few rays to time.
+std::string occl_isect(const ShadowTimes& t, std::size_t rays) {
+    if (rays < 100) return "  n/a  n/a";
+    char text[32];
+    std::snprintf(text, sizeof text, "%5.2f %4.2f", t.native_intersect.cpu / t.native_occluded.cpu,
+                  t.embree_intersect.cpu / t.embree_occluded.cpu);
+    return text;
+}
+
+// What any-hit can gain depends on how many shadow rays are blocked: on an unblocked ray both
+// traversals visit the same boxes, and occluded() saves only the ordering. So the primary-hit
+// shadow rays split into unblocked and blocked, and a second set as a render also traces them:
+// from the bounce hits (the path's second vertex) to the key light.
+void print_shadow_detail(const Accel& native, const Accel& embree, const BenchRays& bench) {
+    const SplitRays split = split_blocked(native, bench.shadow);
+    const ShadowTimes unblocked = time_shadow(native, embree, split.unblocked);
+    const ShadowTimes blocked = time_shadow(native, embree, split.blocked);
+    const ShadowTimes second = time_shadow(native, embree, bench.shadow_bounce);
+    const double n = static_cast<double>(bench.shadow_bounce.size());
+    std::printf("%-18s shadow rays from the primary hits, occl/isect native embree: unblocked %6zu %s, blocked %6zu %s\n",
+                "", split.unblocked.size(), occl_isect(unblocked, split.unblocked.size()).c_str(), split.blocked.size(),
+                occl_isect(blocked, split.blocked.size()).c_str());
+    std::printf("%-18s shadow rays from the bounce hits %6zu, blocked %4.1f%%: occluded %6.2f %6.2f (%.2fx)  occl/isect %s\n",
+                "", bench.shadow_bounce.size(), n > 0 ? 100.0 * static_cast<double>(second.native_occluded.hits) / n : 0.0,
+                1e-6 * n / second.native_occluded.cpu, 1e-6 * n / second.embree_occluded.cpu,
+                second.embree_occluded.cpu / second.native_occluded.cpu, occl_isect(second, bench.shadow_bounce.size()).c_str());
+    if (second.native_occluded.hits != second.embree_occluded.hits)
+        std::printf("%-18s note: bounce-hit shadow rays occluded differ, %zu / %zu (native / embree)\n", "",
+                    second.native_occluded.hits, second.embree_occluded.hits);
 }
 
 }  // namespace
@@ -110,6 +145,7 @@ void run_mesh_bench(const std::string& dir, int primaries) {
     std::printf("columns: native then embree; (x) = native / embree speed (build: native / embree time);\n"
                 "intersect on the rays, occluded on the shadow rays (one per primary hit, to a key light),\n"
                 "occl/isect = occluded against intersect on those same shadow rays, blocked = share of them occluded;\n"
+                "then per mesh those shadow rays split by whether they are blocked, and the shadow rays from the bounce hits;\n"
                 "SAH = sum over nodes of area / root area (+1 per node visit, +1 per triangle in a leaf);\n"
                 "embree's SAH is that of its rtcBuildBVH builder (8 wide, leaves of <= 4), the build time that of rtcCommitScene\n");
     std::printf("%-18s %7s %6s %6s\n", "mesh", "tris", "rays", "shadow");

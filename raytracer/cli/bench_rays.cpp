@@ -50,6 +50,7 @@ BenchRays make_bench_rays(const Scene& scene, const Accel& accel, int primaries,
     const CameraModel camera(scene.camera, scene.film.width, scene.film.height);
     const KeyLight light(scene.camera);
     std::mt19937_64 rng(seed);
+    std::mt19937_64 bounce_rng(seed ^ 0x9e3779b97f4a7c15ull);  // the bounce vertices' light samples
     std::uniform_real_distribution<float> u(0.0f, 1.0f);
     std::normal_distribution<float> gauss(0.0f, 1.0f);
     BenchRays out;
@@ -67,6 +68,10 @@ BenchRays make_bench_rays(const Scene& scene, const Accel& accel, int primaries,
         out.rays.push_back(spawn_ray(hit, glm::normalize(d)));
         const float u1 = u(rng), u2 = u(rng);
         out.shadow.push_back(spawn_ray_to(hit, light.point(u1, u2), glm::vec3(0.0f), light.normal));
+        SurfaceHit bounce_hit;
+        if (!accel.intersect(out.rays.back(), bounce_hit)) continue;
+        const float u3 = u(bounce_rng), u4 = u(bounce_rng);
+        out.shadow_bounce.push_back(spawn_ray_to(bounce_hit, light.point(u3, u4), glm::vec3(0.0f), light.normal));
     }
     return out;
 }
@@ -90,6 +95,21 @@ TraceResult time_intersect(const Accel& accel, const std::vector<collision::Ray>
 
 TraceResult time_occluded(const Accel& accel, const std::vector<collision::Ray>& rays) {
     return time_pass(rays, [&](const collision::Ray& ray) { return accel.occluded(ray); });
+}
+
+ShadowTimes time_shadow(const Accel& native, const Accel& embree, const std::vector<collision::Ray>& rays) {
+    ShadowTimes t;
+    t.native_occluded = time_occluded(native, rays);
+    t.embree_occluded = time_occluded(embree, rays);
+    t.native_intersect = time_intersect(native, rays);
+    t.embree_intersect = time_intersect(embree, rays);
+    return t;
+}
+
+SplitRays split_blocked(const Accel& accel, const std::vector<collision::Ray>& rays) {
+    SplitRays out;
+    for (const collision::Ray& ray : rays) (accel.occluded(ray) ? out.blocked : out.unblocked).push_back(ray);
+    return out;
 }
 
 void warm_up(const Accel& accel, const BenchRays& bench) {

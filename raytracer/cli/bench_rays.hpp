@@ -21,6 +21,9 @@ double wall_seconds();
 struct BenchRays {
     std::vector<collision::Ray> rays;    // primary, then the bounce of each primary that hits
     std::vector<collision::Ray> shadow;  // one per primary hit: the segment to the key light
+    // One per bounce hit: the segment to the key light (a render's next event estimation at the
+    // path's second vertex; its own light samples, so `rays` and `shadow` stay as they were).
+    std::vector<collision::Ray> shadow_bounce;
 };
 
 // Primary rays through uniformly random film points, and from each primary hit (found with
@@ -39,6 +42,18 @@ struct TraceResult {
 
 TraceResult time_intersect(const Accel& accel, const std::vector<collision::Ray>& rays);
 TraceResult time_occluded(const Accel& accel, const std::vector<collision::Ray>& rays);
+
+// occluded() and intersect() over the same shadow rays, through the native structure and Embree.
+struct ShadowTimes {
+    TraceResult native_occluded, embree_occluded, native_intersect, embree_intersect;
+};
+ShadowTimes time_shadow(const Accel& native, const Accel& embree, const std::vector<collision::Ray>& rays);
+
+// The rays `accel` finds occluded, and the others (order kept in each).
+struct SplitRays {
+    std::vector<collision::Ray> blocked, unblocked;
+};
+SplitRays split_blocked(const Accel& accel, const std::vector<collision::Ray>& rays);
 
 // An untimed pass over a slice of the rays, so no structure pays for first-touch page faults.
 void warm_up(const Accel& accel, const BenchRays& bench);
