@@ -35,10 +35,16 @@ public:
     void at_leaf(std::uint32_t leaf) { leaf_ = leaf; }
 
     // A next-event sample from `point`: `contribution` = MIS weight x radiance / density, zero when
-    // the shadow ray was blocked.
+    // the shadow ray was blocked (or when NEE alone estimates direct light there: the directional
+    // guide then learns none of it); `square` the sample's point on the light's square and
+    // `unweighted` = radiance / density, zero when blocked (light_guide.hpp).
     void add_light_sample(const glm::vec3& point, const glm::vec3& normal, const glm::vec3& wi,
-                          const glm::vec3& contribution) {
+                          const glm::vec3& contribution, const glm::vec2& square, const glm::vec3& unweighted) {
         push(point, wi, mean(contribution) * cosine(normal, wi), true);
+        GuideRecord& r = out_->back();
+        r.light_uv = square;
+        const float v = mean(unweighted) * cosine(normal, wi);
+        r.light_value = std::isfinite(v) && v > 0.0f ? v : 0.0f;
     }
     // The path continued from `point` along wi drawn with density `pdf`; `throughput` is the
     // path's throughput after the sample's weight, `total` the path's radiance so far.

@@ -46,8 +46,9 @@ glm::vec3 square_to_direction(const glm::vec2& p) {
 
 DirectionalQuadtree::DirectionalQuadtree() : nodes_(1), energy_(1) {}
 
-void DirectionalQuadtree::record(const glm::vec3& dir, float value) {
-    const glm::vec2 p = direction_to_square(dir);
+void DirectionalQuadtree::record(const glm::vec3& dir, float value) { record_square(direction_to_square(dir), value); }
+
+void DirectionalQuadtree::record_square(const glm::vec2& p, float value) {
     double x = p.x, y = p.y;
     std::uint32_t node = 0;
     for (;;) {
@@ -80,8 +81,14 @@ void DirectionalQuadtree::freeze() {
 }
 
 glm::vec3 DirectionalQuadtree::sample(float u1, float u2, float* density) const {
+    const glm::vec2 p = sample_square(u1, u2, density);
+    if (density != nullptr) *density *= 1.0f / (4.0f * kPi);  // as pdf() multiplies it
+    return square_to_direction(p);
+}
+
+glm::vec2 DirectionalQuadtree::sample_square(float u1, float u2, float* density) const {
     float ux = u1, uy = u2;
-    float d = 1.0f / (4.0f * kPi);  // as pdf() multiplies it
+    float d = 1.0f;
     float ox = 0.0f, oy = 0.0f, size = 1.0f;  // the cell: powers of two, exact in float
     std::uint32_t node = 0;
     for (;;) {
@@ -99,13 +106,16 @@ glm::vec3 DirectionalQuadtree::sample(float u1, float u2, float* density) const 
         node = next;
     }
     if (density != nullptr) *density = d;
-    return square_to_direction(glm::vec2(ox + ux * size, oy + uy * size));
+    return {ox + ux * size, oy + uy * size};
 }
 
 float DirectionalQuadtree::pdf(const glm::vec3& dir) const {
-    const glm::vec2 p = direction_to_square(dir);
+    return pdf_square(direction_to_square(dir)) * (1.0f / (4.0f * kPi));  // on the sphere
+}
+
+float DirectionalQuadtree::pdf_square(const glm::vec2& p) const {
     float x = p.x, y = p.y;
-    float density = 1.0f / (4.0f * kPi);  // on the sphere
+    float density = 1.0f;
     std::uint32_t node = 0;
     for (;;) {
         const Node& n = nodes_[node];

@@ -30,6 +30,9 @@ public:
 
     // Adds `value` (>= 0) to the leaf holding direction `dir` and to every quadrant above it.
     void record(const glm::vec3& dir, float value);
+    // The same on the square itself (the tree is a distribution over [0, 1)^2; the guide for
+    // next event estimation uses it on a light's sample square, with no map to the sphere).
+    void record_square(const glm::vec2& p, float value);
     double total() const;
 
     // Computes the ratios sample() and pdf() read from the energies; call once recording is done.
@@ -41,6 +44,9 @@ public:
     glm::vec3 sample(float u1, float u2, float* density = nullptr) const;
     // Solid-angle density of sample() producing `dir`. Requires total() > 0 and freeze().
     float pdf(const glm::vec3& dir) const;
+    // The same two on the square: a point of [0, 1)^2 and its density there (area 1).
+    glm::vec2 sample_square(float u1, float u2, float* density = nullptr) const;
+    float pdf_square(const glm::vec2& p) const;
 
     // The structure for the next training iteration (PPG §3.4): a quadrant is a node when its
     // share of this tree's energy exceeds `threshold` and it is shallower than `max_depth`

@@ -86,6 +86,7 @@ void GuidingSdTree::add(const std::vector<std::vector<GuideRecord>>& batches) {
                 if (!(r.value > 0.0f)) ++leaf.light_misses;
             }
             if (r.value > 0.0f && leaf.learning) leaf.building.record(r.dir, r.value);
+            if (r.light_value > 0.0f && leaf.learning) leaf.light_building.record_square(r.light_uv, r.light_value);
         }
 }
 
@@ -141,7 +142,7 @@ void GuidingSdTree::end_iteration(int iteration) {
     if (nodes_.size() > 1) rebuild_grid();
     if (iteration == kDecisionIteration && guided_record_share() < kMinGuidedShare) {
         off_ = true;
-        for (Leaf& leaf : leaves_) leaf.usable = false;
+        for (Leaf& leaf : leaves_) leaf.usable = leaf.light_usable = false;
         return;
     }
     for (Leaf& leaf : leaves_) {
@@ -149,6 +150,10 @@ void GuidingSdTree::end_iteration(int iteration) {
         leaf.sampling.freeze();
         leaf.learning = misses_nee(leaf);
         leaf.usable = leaf.learning && leaf.sampling.total() > 0.0;
+        leaf.light_sampling = std::move(leaf.light_building);
+        leaf.light_sampling.freeze();
+        leaf.light_usable = leaf.usable && leaf.light_sampling.total() > 0.0;
+        leaf.light_building = leaf.light_sampling.refined(kQuadtreeThreshold, kQuadtreeMaxDepth);
         leaf.light_samples = leaf.light_misses = 0;
         leaf.building = leaf.sampling.refined(kQuadtreeThreshold, kQuadtreeMaxDepth);
         leaf.records = 0;

@@ -29,6 +29,7 @@
 #include <cstdint>
 #include <vector>
 
+#include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
 #include "raytracer/render/guiding_quadtree.hpp"
@@ -44,6 +45,10 @@ struct GuideRecord {
     float value = 0.0f;
     std::uint32_t leaf = 0;  // leaf_of(point) in the tree of the pass that made the record
     bool light_sample = false;  // from next event estimation (value 0: it found no light)
+    // Next event estimation's sample on the light's square (before the light maps it to a point)
+    // and its unweighted estimate, radiance x cos / density: what the light guide learns.
+    glm::vec2 light_uv{0.0f};
+    float light_value = 0.0f;
 };
 
 class GuidingSdTree {
@@ -93,6 +98,11 @@ public:
         return leaves_[leaf].usable ? &leaves_[leaf].sampling : nullptr;
     }
     const DirectionalQuadtree* guide(const glm::vec3& point) const { return guide_at(leaf_of(point)); }
+    // The learned distribution of next event estimation's sample square in a guiding leaf, or
+    // nullptr (see light_guide.hpp for how the integrator uses it).
+    const DirectionalQuadtree* light_guide_at(std::uint32_t leaf) const {
+        return leaves_[leaf].light_usable ? &leaves_[leaf].light_sampling : nullptr;
+    }
 
     bool training() const { return !off_ && iterations_done_ < kTrainingIterations; }
     // False once guiding switched itself off (kMinGuidedShare): no leaf guides any more.
@@ -125,13 +135,20 @@ private:
         std::uint64_t light_samples = 0, light_misses = 0;  // NEE records among them, and blank ones
         bool usable = false;        // sampling has energy (and is frozen), and NEE misses here
         bool learning = true;       // NEE missed here last iteration: fill `building`
+        // Next event estimation's own guide, over the light's sample square: learned wherever the
+        // directional one is, from the NEE samples' unweighted estimates.
+        DirectionalQuadtree light_sampling, light_building;
+        bool light_usable = false;  // usable, and light_sampling has energy
     };
     void set_box(const std::vector<std::vector<GuideRecord>>& batches);
     void end_iteration(int iteration);
     void split(std::uint32_t node, double threshold);
     // NEE missed in more than kNeeMissShare of the leaf's light samples (or took none): it learns.
+    // A leaf that guided NEE last iteration keeps guiding: its NEE now finds the light because it
+    // is guided, and judging it by that would switch the guide off and on in turn.
     static bool misses_nee(const Leaf& leaf) {
-        return leaf.light_samples == 0 || double(leaf.light_misses) > kNeeMissShare * double(leaf.light_samples);
+        return leaf.light_usable || leaf.light_samples == 0 ||
+               double(leaf.light_misses) > kNeeMissShare * double(leaf.light_samples);
     }
     // The share of this iteration's records in leaves that learn.
     double guided_record_share() const;

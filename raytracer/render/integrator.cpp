@@ -61,6 +61,7 @@ glm::vec3 PathIntegrator::radiance(collision::Ray ray, PixelSampler& sampler, st
     glm::vec3 beta(1.0f);
     float eta_scale = 1.0f;     // undoes the 1/eta^2 of refractions, for the roulette
     bool full_weight = true;    // the ray that found this vertex gets MIS weight 1
+    const DirectionalQuadtree* prev_light_guide = nullptr;  // NEE's guide there (light_guide.hpp)
     float prev_pdf = 0.0f;      // BSDF density of that ray (non-delta only)
     glm::vec3 prev_point(0.0f); // where it left
     std::uint32_t prev_object = LightSet::kNoObject;  // and from which object's surface
@@ -85,7 +86,7 @@ glm::vec3 PathIntegrator::radiance(collision::Ray ray, PixelSampler& sampler, st
         const glm::vec3 le = emitted_radiance(mat, hit.normal, wo);
         if (le != glm::vec3(0.0f)) {
             float w = 1.0f;
-            if (nee && !full_weight) w = power_heuristic(prev_pdf, lights_.pdf(prev_point, prev_object, hit));
+            if (nee && !full_weight) w = power_heuristic(prev_pdf, lights_.pdf(prev_point, prev_object, hit, prev_light_guide));
             result += beta * le * w;
         }
         if (depth >= max_depth_ || !scatters(mat)) break;
@@ -94,9 +95,11 @@ glm::vec3 PathIntegrator::radiance(collision::Ray ray, PixelSampler& sampler, st
         const bool delta = is_delta(mat);
         const bool learn = recorder.on() && is_guided(mat);
         const DirectionalQuadtree* guide = nullptr;
+        const DirectionalQuadtree* light_guide = nullptr;
         if (guide_ != nullptr && guide_->active() && is_guided(mat)) {
             const std::uint32_t leaf = guide_->leaf_of(hit.point);
             guide = guide_->guide_at(leaf);
+            if (nee) light_guide = guide_->light_guide_at(leaf);
             recorder.at_leaf(leaf);
         }
 
@@ -104,17 +107,18 @@ glm::vec3 PathIntegrator::radiance(collision::Ray ray, PixelSampler& sampler, st
             const glm::vec2 uc = sampler.get2d(sample_dim::bounce(bounce, sample_dim::kLightChoice));  // and part
             const glm::vec2 u = sampler.get2d(sample_dim::bounce(bounce, sample_dim::kLightPoint));
             LightSample ls;
-            if (lights_.sample(hit.point, hit.object, uc.x, uc.y, u.x, u.y, ls)) {
+            if (lights_.sample(hit.point, hit.object, uc.x, uc.y, u.x, u.y, ls, light_guide)) {
                 const BsdfEval e = eval_bsdf(mat, ctx, ls.wi);
                 if (e.pdf > 0.0f) {
                     ++rays;
-                    if (!accel_.occluded(shadow_ray(hit, ls))) {
-                        const float w =
-                            ls.delta ? 1.0f : power_heuristic(ls.pdf, guide ? guided_pdf(*guide, e.pdf, ls.wi) : e.pdf);
-                        result += beta * e.f_cos * ls.radiance * (w / ls.pdf);
-                        if (learn) recorder.add_light_sample(hit.point, ctx.frame.n, ls.wi, ls.radiance * (w / ls.pdf));
-                    } else if (learn) {
-                        recorder.add_light_sample(hit.point, ctx.frame.n, ls.wi, glm::vec3(0.0f));
+                    const bool visible = !accel_.occluded(shadow_ray(hit, ls));
+                    const float w =
+                        ls.delta ? 1.0f : power_heuristic(ls.pdf, guide ? guided_pdf(*guide, e.pdf, ls.wi) : e.pdf);
+                    if (visible) result += beta * e.f_cos * ls.radiance * (w / ls.pdf);
+                    if (learn) {
+                        const glm::vec3 unweighted = visible ? ls.radiance / ls.pdf : glm::vec3(0.0f);
+                        recorder.add_light_sample(hit.point, ctx.frame.n, ls.wi, unweighted * w, ls.square,
+                                                  ls.on_square ? unweighted : glm::vec3(0.0f));
                     }
                 }
             }
@@ -132,6 +136,7 @@ glm::vec3 PathIntegrator::radiance(collision::Ray ray, PixelSampler& sampler, st
         if (guide != nullptr && !bs.delta) rr_scale *= std::max(1.0f, bs.pdf / bsdf_pdf);
         if (learn && !bs.delta) recorder.add_vertex(hit.point, ctx.frame.n, bs.wi, bs.pdf, beta, result);
         full_weight = bs.delta;
+        prev_light_guide = light_guide;
         prev_pdf = bs.pdf;
         prev_point = hit.point;
         prev_object = hit.object;

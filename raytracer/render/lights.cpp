@@ -9,6 +9,7 @@
 #include "collision/float_error.hpp"
 #include "raytracer/geometry/object_space.hpp"
 #include "raytracer/render/bsdf.hpp"
+#include "raytracer/render/light_guide.hpp"
 #include "raytracer/render/sampling.hpp"
 #include "raytracer/render/texture.hpp"
 
@@ -122,12 +123,40 @@ float LightSet::selection_probability(std::uint32_t object) const {
 // Cone sampling (pbrt-v3 §14.2): a direction in the subtended cone, then the point where it first
 // meets the sphere, found through the angle at the centre. False when p sees no cone (inside, or
 // on this sphere): the caller samples by area then.
+// The inverse of sample_cone's map: the point of the sample square from which the cone gives
+// the light point `q` seen from `p`. u1 from the angle to the cone's axis (1 - cos by the half
+// chord, which keeps narrow cones' precision), u2 from the azimuth of q's normal in the frame
+// sample_cone builds about the centre-to-p axis.
+namespace {
+glm::vec2 cone_square(const ShapeLight& s, const glm::vec3& p, const glm::vec3& q, const Cone& cone) {
+    const glm::vec3 to_p = p - s.origin;
+    const float dc = std::sqrt(cone.dc2);
+    const glm::vec3 w = glm::normalize(q - p);
+    const glm::vec3 chord = w + to_p / dc;  // w - axis, the axis pointing from p to the centre
+    const float one_minus_cos = 0.5f * glm::dot(chord, chord);
+    const Frame f(to_p / dc);
+    const glm::vec3 n = f.to_local((q - s.origin) / s.radius);
+    float phi = std::atan2(n.y, n.x) * (0.5f * kInvPi);
+    if (phi < 0.0f) phi += 1.0f;
+    constexpr float kBelowOne = 0x1.fffffep-1f;
+    return {std::clamp(one_minus_cos / cone.omc, 0.0f, kBelowOne), std::min(phi, kBelowOne)};
+}
+}  // namespace
+
 bool LightSet::sample_cone(const Light& l, const glm::vec3& p, std::uint32_t p_object, float u1, float u2,
-                           LightSample& out, bool& sampled) const {
+                           LightSample& out, bool& sampled, const DirectionalQuadtree* square_guide) const {
     const ShapeLight& s = l.shape;
     Cone cone;
     sampled = cone_from(s.origin, s.radius, p, p_object == l.object, cone);
     if (!sampled) return false;
+    float square_density = 1.0f;
+    if (square_guide != nullptr) {
+        const glm::vec2 w = warp_light_sample(*square_guide, glm::vec2(u1, u2), square_density);
+        u1 = w.x;
+        u2 = w.y;
+    }
+    out.on_square = true;
+    out.square = glm::vec2(u1, u2);
     const float dc = std::sqrt(cone.dc2);
     const glm::vec3 to_p = p - s.origin;
     const glm::vec3 d = uniform_cone(u1, u2, cone.omc);
@@ -150,7 +179,7 @@ bool LightSet::sample_cone(const Light& l, const glm::vec3& p, std::uint32_t p_o
     out.distance = glm::length(w);
     if (!(out.distance > 0.0f)) return false;
     out.wi = w / out.distance;
-    out.pdf = l.probability * uniform_cone_pdf(cone.omc);
+    out.pdf = l.probability * uniform_cone_pdf(cone.omc) * square_density;
     out.point = q;
     out.point_error = gamma(5) * (glm::abs(s.origin) + glm::vec3(s.radius));
     out.normal = normal_sign_ * n;
@@ -175,7 +204,7 @@ float LightSet::sample_area(const Light& l, float u_part, float u1, float u2, Su
 }
 
 bool LightSet::sample(const glm::vec3& p, std::uint32_t p_object, float u_select, float u_part, float u1, float u2,
-                      LightSample& out) const {
+                      LightSample& out, const DirectionalQuadtree* square_guide) const {
     if (cdf_.empty()) return false;
     const auto it = std::upper_bound(cdf_.begin(), cdf_.end(), u_select);
     const auto index = static_cast<std::size_t>(std::min<std::ptrdiff_t>(it - cdf_.begin(), cdf_.size() - 1));
@@ -187,7 +216,7 @@ bool LightSet::sample(const glm::vec3& p, std::uint32_t p_object, float u_select
     const Light& l = lights_[index];
     if (l.shape.strategy == Strategy::SphereCone) {
         bool cone = false;
-        const bool ok = sample_cone(l, p, p_object, u1, u2, out, cone);
+        const bool ok = sample_cone(l, p, p_object, u1, u2, out, cone, square_guide);
         if (cone) return ok;
     }
     SurfacePoint sp;
@@ -209,14 +238,18 @@ bool LightSet::sample(const glm::vec3& p, std::uint32_t p_object, float u_select
     return std::isfinite(out.pdf) && luminance(out.radiance) > 0.0f;
 }
 
-float LightSet::pdf(const glm::vec3& p, std::uint32_t p_object, const SurfaceHit& hit) const {
+float LightSet::pdf(const glm::vec3& p, std::uint32_t p_object, const SurfaceHit& hit,
+                    const DirectionalQuadtree* square_guide) const {
     if (!is_light(hit.object)) return 0.0f;
     const Light& l = lights_[static_cast<std::size_t>(light_of_object_[hit.object])];
     float area_pdf = l.shape.area_pdf;
     if (l.shape.strategy == Strategy::SphereCone) {
         Cone cone;
-        if (cone_from(l.shape.origin, l.shape.radius, p, p_object == l.object, cone))
-            return l.probability * uniform_cone_pdf(cone.omc);
+        if (cone_from(l.shape.origin, l.shape.radius, p, p_object == l.object, cone)) {
+            const float pdf = l.probability * uniform_cone_pdf(cone.omc);
+            if (square_guide == nullptr) return pdf;
+            return pdf * light_square_density(*square_guide, cone_square(l.shape, p, hit.point, cone));
+        }
     } else if (l.shape.strategy == Strategy::ObjectArea) {
         area_pdf = object_area_pdf(l.shape, hit.normal);
     }

@@ -44,6 +44,7 @@
 #include <memory>
 #include <vector>
 
+#include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
 #include "raytracer/geometry/shapes/shape_light.hpp"
@@ -68,7 +69,13 @@ struct LightSample {
     bool delta = false;
     // At infinity (directional): the shadow ray goes along `wi` without end; `point` is unused.
     bool at_infinity = false;
+    // Drawn by a cone (a sphere light seen from outside) from `square`, the point of its sample
+    // square the two uniforms became (warped when NEE was guided: light_guide.hpp).
+    bool on_square = false;
+    glm::vec2 square{0.0f};
 };
+
+class DirectionalQuadtree;
 
 class LightSet {
 public:
@@ -91,12 +98,16 @@ public:
     // is the object whose surface `p` lies on (kNoObject if none): a sphere light samples itself
     // by area from its own surface. Returns false when the sample carries no light (back side of
     // a one-sided emitter, degenerate).
+    // With `square_guide`, a cone-sampled light draws its square point from the guide's
+    // defensive mixture (light_guide.hpp) and `pdf` includes that mixture's density.
     bool sample(const glm::vec3& p, std::uint32_t p_object, float u_select, float u_part, float u1, float u2,
-                LightSample& out) const;
+                LightSample& out, const DirectionalQuadtree* square_guide = nullptr) const;
 
     // Solid-angle density (selection included) with which sample(p, p_object, ...) produces the
     // light point `hit`, reached from `p` by a ray. Zero when hit.object is not a light.
-    float pdf(const glm::vec3& p, std::uint32_t p_object, const SurfaceHit& hit) const;
+    // `square_guide` as given to sample() from p.
+    float pdf(const glm::vec3& p, std::uint32_t p_object, const SurfaceHit& hit,
+              const DirectionalQuadtree* square_guide = nullptr) const;
 
     // True when some light sits at infinity with a disc of directions (a sun): rays that escape
     // the scene must then ask escaped_radiance.
@@ -122,7 +133,7 @@ private:
 
     glm::vec3 emitted_radiance_at(const Light& l, const LightSample& out, std::uint32_t primitive) const;
     bool sample_cone(const Light& l, const glm::vec3& p, std::uint32_t p_object, float u1, float u2, LightSample& out,
-                     bool& sampled) const;
+                     bool& sampled, const DirectionalQuadtree* square_guide) const;
     float sample_area(const Light& l, float u_part, float u1, float u2, SurfacePoint& world) const;
 
     // The scene's "lights" (render/scene_lights.cpp).

@@ -8,6 +8,7 @@
 #include <glm/geometric.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "raytracer/render/guiding_quadtree.hpp"
 #include "raytracer/render/lights.hpp"
 #include "raytracer/render/random.hpp"
 #include "raytracer/render/sampling.hpp"
@@ -142,6 +143,54 @@ TEST_CASE("lights: a similar-transformed sphere is sampled in its cone, points v
             solid.add(1.0 / ls.pdf);
         }
         CHECK(solid.mean == Approx(2.0 * M_PI * (1.0 - cos_max)).epsilon(1e-4));
+    }
+}
+
+TEST_CASE("lights: a guided cone samples the guide's mixture, pdf() maps a found point back to its density, mean 1/pdf = solid angle", "[render][lights][guiding]") {
+    // A guide whose energy sits in [0, 0.125) x [0.25, 0.375) of the square: a narrow band of
+    // angles around the cone's axis, one eighth of its azimuths.
+    DirectionalQuadtree coarse;
+    Rng fill(4, 4, 4);
+    const auto record = [&fill](DirectionalQuadtree& t) {
+        for (int i = 0; i < 4000; ++i) t.record_square({0.125f * fill.uniform(), 0.25f + 0.125f * fill.uniform()}, 1.0f);
+    };
+    record(coarse);
+    DirectionalQuadtree guide = coarse.refined(0.01, 20);
+    record(guide);
+    guide.freeze();
+    const glm::mat4 m = glm::scale(kTilted, glm::vec3(1.5f));
+    const Scene s = single_light(collision::Sphere{{1, 0, 0}, 0.4f}, m);
+    const LightSet lights(s);
+    const glm::vec3 c = glm::vec3(m * glm::vec4(1, 0, 0, 1));
+    const float r = 0.6f;
+    for (float dist : {1.0f, 3.0f, 300.0f}) {
+        const glm::vec3 p = c + dist * glm::normalize(glm::vec3(1.0f, 0.5f, -0.2f));
+        Rng rng(9, 1, 0);
+        Estimate solid;
+        const double cos_max = std::sqrt(1.0 - (double)r * r / ((double)dist * dist));
+        int inside = 0, density_differs = 0;
+        const int n = 40000;
+        for (int i = 0; i < n; ++i) {
+            LightSample ls;
+            REQUIRE(lights.sample(p, LightSet::kNoObject, rng.uniform(), rng.uniform(), rng.uniform(), rng.uniform(), ls, &guide));
+            REQUIRE(ls.on_square);
+            REQUIRE(glm::dot(ls.wi, glm::normalize(c - p)) >= cos_max - 1e-6);
+            inside += ls.square.x < 0.125f && ls.square.y >= 0.25f && ls.square.y < 0.375f;
+            SurfaceHit h;
+            h.point = ls.point;
+            h.normal = ls.normal;
+            // The same density from the point alone; only a point within float error of a cell
+            // edge of the guide may read its neighbour's (the map back is not exact).
+            const float back = lights.pdf(p, LightSet::kNoObject, h, &guide);
+            if (!(std::abs(back - ls.pdf) <= 1e-4f * ls.pdf)) ++density_differs;
+            solid.add(1.0 / ls.pdf);
+        }
+        CHECK(density_differs <= n / 500);
+        // Three quarters from the guide, all of whose mass is in its band: at least 0.7 there.
+        CHECK(inside > 0.7 * n);
+        // E[1 / pdf] is the cone's solid angle for any density the sampler truly draws with.
+        const double truth = 2.0 * M_PI * (1.0 - cos_max);
+        CHECK(std::abs(solid.mean - truth) < z_bound(3) * solid.standard_error() + 1e-6 * truth);
     }
 }
 
