@@ -153,7 +153,7 @@ void GuidingSdTree::end_iteration(int iteration) {
         leaf.light_sampling = std::move(leaf.light_building);
         leaf.light_sampling.freeze();
         leaf.light_usable = leaf.usable && leaf.light_sampling.total() > 0.0;
-        leaf.light_building = leaf.light_sampling.refined(kQuadtreeThreshold, kQuadtreeMaxDepth);
+        leaf.light_building = leaf.light_sampling.refined(kLightQuadtreeThreshold, kLightQuadtreeMaxDepth);
         leaf.light_samples = leaf.light_misses = 0;
         leaf.building = leaf.sampling.refined(kQuadtreeThreshold, kQuadtreeMaxDepth);
         leaf.records = 0;
