@@ -73,14 +73,17 @@ public:
     // grazing angles and carry almost nothing. Measured, 128x96 1024 spp: per-sample error
     // 0.97x, CPU time 1.07x; not worth it.)
     static constexpr double kNeeMissShare = 0.5;
-    // At the end of iteration kDecisionIteration (3 passes on a small image), guiding switches
-    // itself off for the rest of the render when fewer than kMinGuidedShare of the iteration's
-    // records fell in leaves that would guide: recording and looking up leaves cost every path
-    // vertex, and pay only at the guided ones. Measured shares at iterations 1 / 3 / 5 (96x72):
-    // smallpt 1.00 / 0.97 / 0.91, default 0.18 / 0.18 / 0.33, cornell-box 0.10 / 0.06 / 0.11.
-    // Decided early: the passes before it, guided by a guide learned from one or two passes, were
-    // what still cost cornell-box up to 6% at equal time when the decision came after iteration 3.
-    static constexpr int kDecisionIteration = 1;
+    // At the end of iteration kDecisionIteration (the first pass), guiding switches itself off
+    // for the rest of the render when fewer than kMinGuidedShare of the iteration's records fell
+    // in leaves that would guide: recording and looking up leaves cost every path vertex, and pay
+    // only at the guided ones. (After the first iteration's split every leaf holds the same
+    // halved counts, so this is next event estimation's miss share over the whole pass.)
+    // Measured shares at iterations 1 / 3 / 5 (96x72): smallpt 1.00 / 0.97 / 0.91, default
+    // 0.18 / 0.18 / 0.33, cornell-box 0.10 / 0.06 / 0.11. Decided before any pass is guided: the
+    // passes before the decision, guided by a guide learned from one or two passes, cost
+    // cornell-box up to 6% at equal time when it came after iteration 3, and with it after
+    // iteration 1 (two guided passes) still 15% at T = 1 CPU s (96x96, equal_time.py).
+    static constexpr int kDecisionIteration = 0;
     static constexpr double kMinGuidedShare = 0.5;
 
     // Adds one pass's records, batch by batch in order, to the building quadtrees (the first
