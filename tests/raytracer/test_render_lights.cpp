@@ -125,7 +125,8 @@ TEST_CASE("lights: a mesh light is sampled uniformly over its transformed surfac
 template <class Each>
 void check_cone_samples(int n, std::uint64_t seed, const DirectionalQuadtree* guide, Each each) {
     const glm::mat4 m = glm::scale(kTilted, glm::vec3(1.5f));
-    const LightSet lights(single_light(collision::Sphere{{1, 0, 0}, 0.4f}, m));
+    const Scene scene = single_light(collision::Sphere{{1, 0, 0}, 0.4f}, m);
+    const LightSet lights(scene);  // keeps pointers into the scene
     const glm::vec3 c = glm::vec3(m * glm::vec4(1, 0, 0, 1));
     const float r = 0.6f;
     for (float dist : {1.0f, 3.0f, 300.0f}) {
