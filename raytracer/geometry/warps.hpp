@@ -13,6 +13,8 @@ namespace sweeptrace {
 
 inline constexpr float kPi = 3.14159265358979323846f;
 inline constexpr float kInvPi = 1.0f / kPi;
+// The largest float below 1: where a uniform or a map onto [0, 1) is clamped to stay inside.
+inline constexpr float kBelowOne = 0x1.fffffep-1f;
 
 // Orthonormal frame around a unit vector n (Duff et al. 2017, branchless, no singularity at the
 // poles): local (x, y, z) with z along n.

@@ -60,7 +60,7 @@ float EnvironmentLight::Distribution1D::sample(float u, int& bin) const {
     const float lo = cdf[static_cast<std::size_t>(bin)], hi = cdf[static_cast<std::size_t>(bin) + 1];
     const float offset = hi > lo ? std::clamp((u - lo) / (hi - lo), 0.0f, 1.0f) : 0.5f;
     const float x = (static_cast<float>(bin) + offset) / static_cast<float>(f.size());
-    return std::min(x, std::nextafter(1.0f, 0.0f));
+    return std::min(x, kBelowOne);
 }
 
 EnvironmentLight::EnvironmentLight(const Background& bg) : bg_(&bg) {

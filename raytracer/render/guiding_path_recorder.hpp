@@ -35,9 +35,8 @@ public:
     void at_leaf(std::uint32_t leaf) { leaf_ = leaf; }
 
     // A next-event sample from `point`: `contribution` = MIS weight x radiance / density, zero when
-    // the shadow ray was blocked (or when NEE alone estimates direct light there: the directional
-    // guide then learns none of it); `square` the sample's point on the light's square and
-    // `unweighted` = radiance / density, zero when blocked (light_guide.hpp).
+    // the shadow ray was blocked; `square` the sample's point on the light's sample square and
+    // `unweighted` = radiance / density, zero when blocked or not drawn on a square (light_guide.hpp).
     void add_light_sample(const glm::vec3& point, const glm::vec3& normal, const glm::vec3& wi,
                           const glm::vec3& contribution, const glm::vec2& square, const glm::vec3& unweighted) {
         push(point, wi, mean(contribution) * cosine(normal, wi), true);

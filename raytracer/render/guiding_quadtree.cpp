@@ -3,13 +3,12 @@
 #include <algorithm>
 #include <cmath>
 
+#include "raytracer/geometry/shapes/uv_maps.hpp"
 #include "raytracer/render/sampling.hpp"
 
 namespace sweeptrace {
 
 namespace {
-
-constexpr float kBelowOne = 0x1.fffffep-1f;  // the largest float below 1
 
 // A probability in units of 1/65535.
 std::uint16_t quantize(double p) { return static_cast<std::uint16_t>(std::lround(std::clamp(p, 0.0, 1.0) * 65535.0)); }
@@ -30,11 +29,9 @@ bool pick_upper(float& u, float p_low) {
 
 glm::vec2 direction_to_square(const glm::vec3& dir) {
     const float u = std::clamp(0.5f * (dir.z + 1.0f), 0.0f, 1.0f);
-    float v = std::atan2(dir.y, dir.x) * (0.5f * kInvPi);
-    if (v < 0.0f) v += 1.0f;
+    const float v = uv_maps::longitude(dir.x, dir.y);  // the azimuth about +z
     // Both ends at 1 are the same places as 0's neighbourhood, mapped into the last cell.
-    constexpr float kBelowOneF = 0x1.fffffep-1f;
-    return {std::min(u, kBelowOneF), std::min(v, kBelowOneF)};
+    return {std::min(u, kBelowOne), std::min(v, kBelowOne)};
 }
 
 glm::vec3 square_to_direction(const glm::vec2& p) {

@@ -24,10 +24,11 @@ void GuidingSdTree::set_box(const std::vector<std::vector<GuideRecord>>& batches
     has_box_ = true;
 }
 
-std::uint32_t GuidingSdTree::descend(std::uint32_t node, std::uint32_t depth, const std::uint32_t q[3]) const {
+std::uint32_t GuidingSdTree::descend(std::uint32_t node, std::uint32_t depth, const std::uint32_t q[3],
+                                     std::uint32_t max_depth) const {
     for (;; ++depth) {
         const Node& n = nodes_[node];
-        if (n.child[0] == 0) return node;
+        if (n.child[0] == 0 || depth == max_depth) return node;
         const std::uint32_t bit = kCoordBits - 1 - depth / 3;
         node = n.child[(q[depth % 3] >> bit) & 1u];
     }
@@ -67,10 +68,7 @@ void GuidingSdTree::rebuild_grid() {
         const std::uint32_t q[3] = {(cell & (kCells - 1)) << (kCoordBits - kGridBits),
                                     ((cell >> kGridBits) & (kCells - 1)) << (kCoordBits - kGridBits),
                                     (cell >> (2 * kGridBits)) << (kCoordBits - kGridBits)};
-        std::uint32_t node = 0;
-        for (std::uint32_t depth = 0; depth < kGridDepth && nodes_[node].child[0] != 0; ++depth)
-            node = nodes_[node].child[(q[depth % 3] >> (kCoordBits - 1 - depth / 3)) & 1u];
-        grid_[cell] = node;
+        grid_[cell] = descend(0, 0, q, kGridDepth);
     }
 }
 

@@ -136,7 +136,9 @@ private:
     static constexpr int kGridBits = 5;
     void rebuild_grid();
     void quantize(const glm::vec3& point, std::uint32_t q[3]) const;
-    std::uint32_t descend(std::uint32_t node, std::uint32_t depth, const std::uint32_t q[3]) const;
+    // From `node` at `depth` toward q: the leaf, or the node at max_depth above it.
+    std::uint32_t descend(std::uint32_t node, std::uint32_t depth, const std::uint32_t q[3],
+                          std::uint32_t max_depth = kMaxDepth + 1) const;
     struct Leaf {
         DirectionalQuadtree sampling, building;
         std::uint64_t records = 0;  // in the building tree

@@ -16,22 +16,27 @@
 
 #include <glm/vec2.hpp>
 
+#include "raytracer/geometry/warps.hpp"
 #include "raytracer/render/guiding_quadtree.hpp"
 
 namespace sweeptrace {
 
 inline constexpr float kLightUniformFraction = 0.25f;
 
+// The mixture's density where the learned quadtree's density is `learned`.
+inline float light_mixture_density(float learned) {
+    return kLightUniformFraction + (1.0f - kLightUniformFraction) * learned;
+}
+
 // The mixture's density at point p of the square.
 inline float light_square_density(const DirectionalQuadtree& guide, const glm::vec2& p) {
-    return kLightUniformFraction + (1.0f - kLightUniformFraction) * guide.pdf_square(p);
+    return light_mixture_density(guide.pdf_square(p));
 }
 
 // The point of the square NEE uses in place of `u`, and the mixture's density there (area 1).
 // u.x picks the branch and is stretched back over [0, 1) inside it, so no sampler dimension is
 // added (the dimension layout, and so every unguided image, stays as it was).
 inline glm::vec2 warp_light_sample(const DirectionalQuadtree& guide, glm::vec2 u, float& density) {
-    constexpr float kBelowOne = 0x1.fffffep-1f;
     constexpr float a = kLightUniformFraction;
     if (u.x < a) {
         u.x = std::min(u.x / a, kBelowOne);
@@ -40,7 +45,7 @@ inline glm::vec2 warp_light_sample(const DirectionalQuadtree& guide, glm::vec2 u
     }
     float d = 0.0f;
     const glm::vec2 p = guide.sample_square(std::min((u.x - a) / (1.0f - a), kBelowOne), u.y, &d);
-    density = a + (1.0f - a) * d;
+    density = light_mixture_density(d);
     return p;
 }
 

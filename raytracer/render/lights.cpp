@@ -8,6 +8,7 @@
 
 #include "collision/float_error.hpp"
 #include "raytracer/geometry/object_space.hpp"
+#include "raytracer/geometry/shapes/uv_maps.hpp"
 #include "raytracer/render/bsdf.hpp"
 #include "raytracer/render/light_guide.hpp"
 #include "raytracer/render/sampling.hpp"
@@ -120,9 +121,6 @@ float LightSet::selection_probability(std::uint32_t object) const {
     return is_light(object) ? lights_[static_cast<std::size_t>(light_of_object_[object])].probability : 0.0f;
 }
 
-// Cone sampling (pbrt-v3 §14.2): a direction in the subtended cone, then the point where it first
-// meets the sphere, found through the angle at the centre. False when p sees no cone (inside, or
-// on this sphere): the caller samples by area then.
 // The inverse of sample_cone's map: the point of the sample square from which the cone gives
 // the light point `q` seen from `p`. u1 from the angle to the cone's axis (1 - cos by the half
 // chord, which keeps narrow cones' precision), u2 from the azimuth of q's normal in the frame
@@ -136,13 +134,13 @@ glm::vec2 cone_square(const ShapeLight& s, const glm::vec3& p, const glm::vec3& 
     const float one_minus_cos = 0.5f * glm::dot(chord, chord);
     const Frame f(to_p / dc);
     const glm::vec3 n = f.to_local((q - s.origin) / s.radius);
-    float phi = std::atan2(n.y, n.x) * (0.5f * kInvPi);
-    if (phi < 0.0f) phi += 1.0f;
-    constexpr float kBelowOne = 0x1.fffffep-1f;
-    return {std::clamp(one_minus_cos / cone.omc, 0.0f, kBelowOne), std::min(phi, kBelowOne)};
+    return {std::clamp(one_minus_cos / cone.omc, 0.0f, kBelowOne), std::min(uv_maps::longitude(n.x, n.y), kBelowOne)};
 }
 }  // namespace
 
+// Cone sampling (pbrt-v3 §14.2): a direction in the subtended cone, then the point where it first
+// meets the sphere, found through the angle at the centre. False when p sees no cone (inside, or
+// on this sphere): the caller samples by area then.
 bool LightSet::sample_cone(const Light& l, const glm::vec3& p, std::uint32_t p_object, float u1, float u2,
                            LightSample& out, bool& sampled, const DirectionalQuadtree* square_guide) const {
     const ShapeLight& s = l.shape;
