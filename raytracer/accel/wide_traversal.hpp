@@ -6,8 +6,9 @@
 // AVX2, and no AVX2 copy of a function may be picked by the linker for the scalar path.
 //
 // Box test: the conservative slab test of bvh_traversal.hpp (far distance enlarged by
-// 1 + 2 gamma(3), folded into the far planes' inverse direction, NaN never shrinks the interval), lane by lane the same float operations in
-// the same order whatever the kernel, so every kernel visits the same nodes in the same order.
+// 1 + 2 gamma(3), folded into the far planes' inverse direction, NaN never shrinks the
+// interval), lane by lane the same float operations in the same order whatever the kernel, so
+// every kernel visits the same nodes in the same order.
 // Closest hit visits children nearest entry first (a stack sorted per node) and skips a popped
 // box entered beyond the current tmax; occluded() is any-hit: no sorting (the node's last child
 // along the ray, in the build's order, first), stops at the first.
