@@ -2,6 +2,7 @@
 // Small scenes with a known answer, built in code, and the z-test of a render against the
 // answer (block_test with an analytic reference: no 8-bit rounding, variance from the render).
 #include <cmath>
+#include <cstring>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -86,6 +87,28 @@ inline BlockTestResult test_against_truth(const Image& truth, const RenderResult
     options.relative_tolerance = relative_tolerance;
     options.mask = mask;
     return block_test(truth, r.image, r.variance, options);
+}
+
+// Same size and the same pixels bit for bit (NaNs and signed zeros included).
+inline bool same_bits(const Image& a, const Image& b) {
+    return a.width == b.width && a.height == b.height &&
+           std::memcmp(a.pixels.data(), b.pixels.data(), a.pixels.size() * sizeof(glm::vec3)) == 0;
+}
+
+// A short render (3 spp, depth 4, seed 9) on 1 and on 3 threads, for the determinism checks.
+struct OneAndThreeThreads {
+    RenderResult one, three;
+};
+inline OneAndThreeThreads render_on_1_and_3_threads(const Scene& scene, const Accel& accel) {
+    RenderOptions o;
+    o.spp = 3;
+    o.max_depth = 4;
+    o.seed = 9;
+    o.threads = 1;
+    OneAndThreeThreads r{render(scene, accel, o), {}};
+    o.threads = 3;
+    r.three = render(scene, accel, o);
+    return r;
 }
 
 }  // namespace sweeptrace::testing

@@ -7,7 +7,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstring>
 #include <functional>
 
 #include <glm/geometric.hpp>
@@ -244,15 +243,7 @@ TEST_CASE("scene lights, environment, Mitchell filter, texture: the image is ide
     add_object(scene, collision::Sphere{{0.0f, 0.4f, 0.0f}, 0.3f}, add_material(scene, diffuse(0.5f)), glm::mat4(1.0f),
                "ball");
     const auto accel = make_accel(AccelKind::Bvh, scene);
-    RenderOptions o;
-    o.spp = 3;
-    o.max_depth = 4;
-    o.seed = 9;
-    o.threads = 1;
-    const RenderResult one = render(scene, *accel, o);
-    o.threads = 3;
-    const RenderResult three = render(scene, *accel, o);
-    CHECK(std::equal(one.image.pixels.begin(), one.image.pixels.end(), three.image.pixels.begin(),
-                     [](const glm::vec3& a, const glm::vec3& b) { return std::memcmp(&a, &b, sizeof a) == 0; }));
+    const auto [one, three] = render_on_1_and_3_threads(scene, *accel);
+    CHECK(same_bits(one.image, three.image));
     CHECK(luminance(one.image.at(18, 18)) > 0.0f);
 }

@@ -2,16 +2,16 @@
 // draws with (exact sum and chi-square), the BSDF + guide mixture's weights are f cos / (the
 // density it sampled with), and guided renders are unbiased (they agree with unguided ones by the
 // block z-test) and the same bit for bit at any thread count.
-#include <set>
 #include <catch2/catch.hpp>
 
 #include <cmath>
-#include <cstring>
 #include <filesystem>
+#include <set>
 #include <vector>
 
 #include <glm/geometric.hpp>
 
+#include "convergence_harness.hpp"
 #include "raytracer/image/diff.hpp"
 #include "raytracer/render/guiding_quadtree.hpp"
 #include "raytracer/render/guiding_sampler.hpp"
@@ -26,6 +26,7 @@
 using namespace sweeptrace;
 using sweeptrace::test::DoublePrecisionAccel;
 using sweeptrace::test::z_bound;
+using sweeptrace::testing::same_bits;
 
 namespace {
 
@@ -81,11 +82,6 @@ RenderOptions guided_options(int spp, int max_depth, std::uint64_t seed) {
     o.seed = seed;
     o.guiding = true;
     return o;
-}
-
-bool same_bits(const Image& a, const Image& b) {
-    return a.width == b.width && a.height == b.height &&
-           std::memcmp(a.pixels.data(), b.pixels.data(), a.pixels.size() * sizeof(glm::vec3)) == 0;
 }
 
 }  // namespace

@@ -214,15 +214,8 @@ TEST_CASE("texture params: the same image at 1 and 3 threads with every textured
                      { "type": "sphere", "center": [0.3, 0, 0.5], "radius": 0.5, "material": "ball" } ] })"));
     for (AccelKind kind : {AccelKind::Bvh, AccelKind::Embree}) {
         const auto accel = make_accel(kind, scene);
-        RenderOptions o;
-        o.spp = 3;
-        o.max_depth = 4;
-        o.seed = 9;
-        o.threads = 1;
-        const RenderResult one = render(scene, *accel, o);
-        o.threads = 3;
-        const RenderResult three = render(scene, *accel, o);
-        CHECK(one.image.pixels == three.image.pixels);
+        const auto [one, three] = render_on_1_and_3_threads(scene, *accel);
+        CHECK(same_bits(one.image, three.image));
         CHECK(one.stats.nonfinite_samples == 0);
     }
 }
