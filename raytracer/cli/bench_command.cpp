@@ -1,5 +1,6 @@
-// `sweeptrace bench SCENE [--rays N] [--threads N] [--spp N]`: the native BVH against Embree on
-// the same scene and the same rays, one single-threaded run each: build time, Mrays/s (primary
+// `sweeptrace bench SCENE [--rays N] [--repeat N] [--threads N] [--spp N]`: the native BVH
+// against Embree on the same scene and the same rays, single-threaded, each timing the median of
+// --repeat passes: build time, Mrays/s (primary
 // rays through the camera plus one random bounce from each primary hit; occluded() on shadow
 // rays from each primary hit, and from each bounce hit, to a key light), their ratio, bytes per
 // triangle; then samples/s of a short render at 1 and up to --threads threads. It prints
@@ -31,10 +32,13 @@ struct BenchArgs {
     int rays = 200000;
     int threads = 2;
     int spp = 2;
+    int repeat = 5;
 };
 
 void run_bench(const BenchArgs& args) {
     if (args.rays < 1) throw InputError("bench: --rays must be >= 1, got " + std::to_string(args.rays));
+    if (args.repeat < 1 || args.repeat > 1000)
+        throw InputError("bench: --repeat must be in [1, 1000], got " + std::to_string(args.repeat));
     if (args.threads < 1 || args.threads > kMaxThreads)
         throw InputError("bench: --threads must be in [1, " + std::to_string(kMaxThreads) + "], got " + std::to_string(args.threads));
     if (const std::string problem = film_setting_problem(FilmSetting::Spp, args.spp); !problem.empty())
@@ -42,7 +46,7 @@ void run_bench(const BenchArgs& args) {
     if (args.scene.empty() == args.meshes.empty())
         throw InputError("bench: give either a scene file or --meshes DIR, not both or neither");
     if (!args.meshes.empty()) {
-        run_mesh_bench(args.meshes, args.rays);
+        run_mesh_bench(args.meshes, args.rays, args.repeat);
         return;
     }
     const Scene scene = load_scene(args.scene);
@@ -70,19 +74,20 @@ void run_bench(const BenchArgs& args) {
     const std::vector<collision::Ray>& rays = bench.rays;
     warm_up(native, bench);
     warm_up(*embree, bench);
-    const TraceResult a = time_intersect(native, rays);
-    const TraceResult b = time_intersect(*embree, rays);
+    const PairTimes isect = time_intersect(native, *embree, rays, args.repeat);
+    const TraceResult &a = isect.native, &b = isect.embree;
     const double mrays = 1e-6 * static_cast<double>(rays.size());
-    std::printf("%zu rays (%d primary + %zu bounce), single-threaded:\n", rays.size(), args.rays,
-                rays.size() - static_cast<std::size_t>(args.rays));
+    std::printf("%zu rays (%d primary + %zu bounce), single-threaded, median of %d pass%s:\n", rays.size(), args.rays,
+                rays.size() - static_cast<std::size_t>(args.rays), args.repeat, args.repeat == 1 ? "" : "es");
     std::printf("%-8s %14s %15s %10s\n", "accel", "Mrays/s (cpu)", "Mrays/s (wall)", "hits");
     std::printf("%-8s %14.3f %15.3f %10zu\n", native.name().c_str(), mrays / a.cpu, mrays / a.wall, a.hits);
     std::printf("%-8s %14.3f %15.3f %10zu\n", embree->name().c_str(), mrays / b.cpu, mrays / b.wall, b.hits);
     std::printf("native / embree: %.2fx (cpu time), %.2fx (wall time)\n", b.cpu / a.cpu, b.wall / a.wall);
     // Shadow rays (a segment from each primary hit to a key light): occluded(), and intersect()
     // on the same segments for the any-hit traversal's gain.
-    const TraceResult ao = time_occluded(native, bench.shadow), bo = time_occluded(*embree, bench.shadow);
-    const TraceResult as = time_intersect(native, bench.shadow), bs = time_intersect(*embree, bench.shadow);
+    const ShadowTimes shadow = time_shadow(native, *embree, bench.shadow, args.repeat);
+    const TraceResult &ao = shadow.native_occluded, &bo = shadow.embree_occluded;
+    const TraceResult &as = shadow.native_intersect, &bs = shadow.embree_intersect;
     const double mshadow = 1e-6 * static_cast<double>(bench.shadow.size());
     std::printf("%zu shadow rays (one per primary hit, to a key light), %zu / %zu occluded:\n", bench.shadow.size(),
                 ao.hits, bo.hits);
@@ -91,7 +96,7 @@ void run_bench(const BenchArgs& args) {
                 native.name().c_str(), mshadow / ao.cpu, embree->name().c_str(), mshadow / bo.cpu, bo.cpu / ao.cpu,
                 as.cpu / ao.cpu, bs.cpu / bo.cpu);
     // The shadow rays a render also traces: from each bounce hit to the key light.
-    const ShadowTimes second = time_shadow(native, *embree, bench.shadow_bounce);
+    const ShadowTimes second = time_shadow(native, *embree, bench.shadow_bounce, args.repeat);
     const double mbounce = 1e-6 * static_cast<double>(bench.shadow_bounce.size());
     if (!bench.shadow_bounce.empty())
         std::printf("%zu shadow rays from the bounce hits, %zu / %zu occluded:\noccluded: %s %.3f, %s %.3f Mrays/s (cpu); "
@@ -128,6 +133,8 @@ void add_bench_command(CLI::App& app, int& exit_code) {
     cmd->add_option("scene", args->scene, "Scene file (JSON)");
     cmd->add_option("--meshes", args->meshes, "Instead of a scene: every .obj file of this folder, framed alone");
     cmd->add_option("--rays", args->rays, "Primary rays (each hit adds one bounce ray)")->capture_default_str();
+    cmd->add_option("--repeat", args->repeat, "Passes over the same rays per timing (the median is printed)")
+        ->capture_default_str();
     cmd->add_option("--threads", args->threads, "Most threads for the render timing")->capture_default_str();
     cmd->add_option("--spp", args->spp, "Samples per pixel of the render timing")->capture_default_str();
     cmd->callback([args, &exit_code] {

@@ -56,7 +56,7 @@ Scene framed_scene(Mesh mesh) {
     return scene;
 }
 
-void print_shadow_detail(const Accel& native, const Accel& embree, const BenchRays& bench);
+void print_shadow_detail(const Accel& native, const Accel& embree, const BenchRays& bench, int repeats);
 
 struct Timed {
     double cpu = 0.0, wall = 0.0;
@@ -71,7 +71,7 @@ auto timed_build(Timed& t, Build&& build) {
     return result;
 }
 
-void bench_one(const std::filesystem::path& file, int primaries) {
+void bench_one(const std::filesystem::path& file, int primaries, int repeats) {
     const Scene scene = framed_scene(load_obj(file));
     const std::size_t triangles = scene.meshes[0].triangles.triangle_count();
     Timed native_build, embree_build;
@@ -85,10 +85,12 @@ void bench_one(const std::filesystem::path& file, int primaries) {
     const std::vector<collision::Ray>& rays = bench.rays;
     warm_up(*native, bench);
     warm_up(*embree, bench);
-    const TraceResult ni = time_intersect(*native, rays), ei = time_intersect(*embree, rays);
+    const PairTimes isect = time_intersect(*native, *embree, rays, repeats);
+    const TraceResult &ni = isect.native, &ei = isect.embree;
     // Shadow rays: occluded() against intersect() on the same segments.
-    const TraceResult no = time_occluded(*native, bench.shadow), eo = time_occluded(*embree, bench.shadow);
-    const TraceResult ns = time_intersect(*native, bench.shadow), es = time_intersect(*embree, bench.shadow);
+    const ShadowTimes shadow = time_shadow(*native, *embree, bench.shadow, repeats);
+    const TraceResult &no = shadow.native_occluded, &eo = shadow.embree_occluded;
+    const TraceResult &ns = shadow.native_intersect, &es = shadow.embree_intersect;
     const double mrays = 1e-6 * static_cast<double>(rays.size());
     const double mshadow = 1e-6 * static_cast<double>(bench.shadow.size());
     const double tri = static_cast<double>(triangles);
@@ -102,7 +104,7 @@ void bench_one(const std::filesystem::path& file, int primaries) {
     if (ni.hits != ei.hits || no.hits != eo.hits)
         std::printf("%-18s note: hits differ, intersect %zu / %zu, occluded %zu / %zu (native / embree)\n", "",
                     ni.hits, ei.hits, no.hits, eo.hits);
-    print_shadow_detail(*native, *embree, bench);
+    print_shadow_detail(*native, *embree, bench, repeats);
 }
 
 // occl/isect of native then embree on `rays`, or n/a for too few rays to time.
@@ -118,11 +120,11 @@ std::string occl_isect(const ShadowTimes& t, std::size_t rays) {
 // traversals visit the same boxes, and occluded() saves only the ordering. So the primary-hit
 // shadow rays split into unblocked and blocked, and a second set as a render also traces them:
 // from the bounce hits (the path's second vertex) to the key light.
-void print_shadow_detail(const Accel& native, const Accel& embree, const BenchRays& bench) {
+void print_shadow_detail(const Accel& native, const Accel& embree, const BenchRays& bench, int repeats) {
     const SplitRays split = split_blocked(native, bench.shadow);
-    const ShadowTimes unblocked = time_shadow(native, embree, split.unblocked);
-    const ShadowTimes blocked = time_shadow(native, embree, split.blocked);
-    const ShadowTimes second = time_shadow(native, embree, bench.shadow_bounce);
+    const ShadowTimes unblocked = time_shadow(native, embree, split.unblocked, repeats);
+    const ShadowTimes blocked = time_shadow(native, embree, split.blocked, repeats);
+    const ShadowTimes second = time_shadow(native, embree, bench.shadow_bounce, repeats);
     const double n = static_cast<double>(bench.shadow_bounce.size());
     std::printf("%-18s shadow rays from the primary hits, occl/isect native embree: unblocked %6zu %s, blocked %6zu %s\n",
                 "", split.unblocked.size(), occl_isect(unblocked, split.unblocked.size()).c_str(), split.blocked.size(),
@@ -138,10 +140,11 @@ void print_shadow_detail(const Accel& native, const Accel& embree, const BenchRa
 
 }  // namespace
 
-void run_mesh_bench(const std::string& dir, int primaries) {
+void run_mesh_bench(const std::string& dir, int primaries, int repeats) {
     const std::vector<std::filesystem::path> files = obj_files(dir);
-    std::printf("each mesh alone, 320x320, %d primary rays + one bounce per hit; single thread, CPU time of the thread\n",
-                primaries);
+    std::printf("each mesh alone, 320x320, %d primary rays + one bounce per hit; single thread, CPU time of the thread,\n"
+                "each timing the median of %d pass%s over the same rays\n",
+                primaries, repeats, repeats == 1 ? "" : "es");
     std::printf("columns: native then embree; (x) = native / embree speed (build: native / embree time);\n"
                 "intersect on the rays, occluded on the shadow rays (one per primary hit, to a key light),\n"
                 "occl/isect = occluded against intersect on those same shadow rays, blocked = share of them occluded;\n"
@@ -149,7 +152,7 @@ void run_mesh_bench(const std::string& dir, int primaries) {
                 "SAH = sum over nodes of area / root area (+1 per node visit, +1 per triangle in a leaf);\n"
                 "embree's SAH is that of its rtcBuildBVH builder (8 wide, leaves of <= 4), the build time that of rtcCommitScene\n");
     std::printf("%-18s %7s %6s %6s\n", "mesh", "tris", "rays", "shadow");
-    for (const auto& file : files) bench_one(file, primaries);
+    for (const auto& file : files) bench_one(file, primaries, repeats);
 }
 
 }  // namespace sweeptrace

@@ -76,6 +76,14 @@ BenchRays make_bench_rays(const Scene& scene, const Accel& accel, int primaries,
     return out;
 }
 
+namespace {
+
+double median(std::vector<double> v) {
+    std::sort(v.begin(), v.end());
+    const std::size_t n = v.size();
+    return n % 2 == 1 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
 template <class Query>
 TraceResult time_pass(const std::vector<collision::Ray>& rays, Query&& query) {
     TraceResult r;
@@ -86,24 +94,50 @@ TraceResult time_pass(const std::vector<collision::Ray>& rays, Query&& query) {
     return r;
 }
 
-TraceResult time_intersect(const Accel& accel, const std::vector<collision::Ray>& rays) {
-    return time_pass(rays, [&](const collision::Ray& ray) {
+TraceResult median_of(const std::vector<TraceResult>& passes) {
+    std::vector<double> cpu, wall;
+    for (const TraceResult& p : passes) {
+        cpu.push_back(p.cpu);
+        wall.push_back(p.wall);
+    }
+    return TraceResult{median(cpu), median(wall), passes.front().hits};  // hits: the same every pass
+}
+
+template <class Query>
+PairTimes time_alternating(const std::vector<collision::Ray>& rays, int repeats, Query&& native, Query&& embree) {
+    std::vector<TraceResult> a, b;
+    for (int k = 0; k < std::max(1, repeats); ++k) {
+        a.push_back(time_pass(rays, native));
+        b.push_back(time_pass(rays, embree));
+    }
+    return PairTimes{median_of(a), median_of(b)};
+}
+
+auto intersect_query(const Accel& accel) {
+    return [&accel](const collision::Ray& ray) {
         SurfaceHit hit;
         return accel.intersect(ray, hit);
-    });
+    };
 }
 
-TraceResult time_occluded(const Accel& accel, const std::vector<collision::Ray>& rays) {
-    return time_pass(rays, [&](const collision::Ray& ray) { return accel.occluded(ray); });
+auto occluded_query(const Accel& accel) {
+    return [&accel](const collision::Ray& ray) { return accel.occluded(ray); };
 }
 
-ShadowTimes time_shadow(const Accel& native, const Accel& embree, const std::vector<collision::Ray>& rays) {
-    ShadowTimes t;
-    t.native_occluded = time_occluded(native, rays);
-    t.embree_occluded = time_occluded(embree, rays);
-    t.native_intersect = time_intersect(native, rays);
-    t.embree_intersect = time_intersect(embree, rays);
-    return t;
+}  // namespace
+
+PairTimes time_intersect(const Accel& native, const Accel& embree, const std::vector<collision::Ray>& rays, int repeats) {
+    return time_alternating(rays, repeats, intersect_query(native), intersect_query(embree));
+}
+
+PairTimes time_occluded(const Accel& native, const Accel& embree, const std::vector<collision::Ray>& rays, int repeats) {
+    return time_alternating(rays, repeats, occluded_query(native), occluded_query(embree));
+}
+
+ShadowTimes time_shadow(const Accel& native, const Accel& embree, const std::vector<collision::Ray>& rays, int repeats) {
+    const PairTimes occluded = time_occluded(native, embree, rays, repeats);
+    const PairTimes intersect = time_intersect(native, embree, rays, repeats);
+    return ShadowTimes{occluded.native, occluded.embree, intersect.native, intersect.embree};
 }
 
 SplitRays split_blocked(const Accel& accel, const std::vector<collision::Ray>& rays) {
@@ -115,8 +149,8 @@ SplitRays split_blocked(const Accel& accel, const std::vector<collision::Ray>& r
 void warm_up(const Accel& accel, const BenchRays& bench) {
     for (const std::vector<collision::Ray>* rays : {&bench.rays, &bench.shadow}) {
         const std::vector<collision::Ray> slice(rays->begin(), rays->begin() + std::min<std::size_t>(rays->size(), 10000));
-        time_intersect(accel, slice);
-        time_occluded(accel, slice);
+        time_pass(slice, intersect_query(accel));
+        time_pass(slice, occluded_query(accel));
     }
 }
 

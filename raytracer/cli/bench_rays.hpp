@@ -4,7 +4,12 @@
 // and timed single-threaded passes of intersect() and occluded() over them.
 //
 // Ray rates are per second of the tracing thread's CPU time (wall time beside it): on a shared
-// machine CPU time is the figure that does not depend on what else runs.
+// machine CPU time is the figure that does not depend on what else runs. Each timing is the
+// median of `repeats` passes over the same rays, native's and Embree's passes alternating: a
+// single pass of the shorter sets (tens of thousands of shadow rays, ~10 ms) swung by a few
+// percent between runs, as much as the native / Embree margins it is read for, and a
+// disturbance lasting several passes (seen: one that slowed five native passes in a row by 25%)
+// then slows both sides, not one.
 #include <cstddef>
 #include <cstdint>
 #include <vector>
@@ -40,14 +45,17 @@ struct TraceResult {
     std::size_t hits = 0;
 };
 
-TraceResult time_intersect(const Accel& accel, const std::vector<collision::Ray>& rays);
-TraceResult time_occluded(const Accel& accel, const std::vector<collision::Ray>& rays);
+struct PairTimes {
+    TraceResult native, embree;
+};
+PairTimes time_intersect(const Accel& native, const Accel& embree, const std::vector<collision::Ray>& rays, int repeats);
+PairTimes time_occluded(const Accel& native, const Accel& embree, const std::vector<collision::Ray>& rays, int repeats);
 
 // occluded() and intersect() over the same shadow rays, through the native structure and Embree.
 struct ShadowTimes {
     TraceResult native_occluded, embree_occluded, native_intersect, embree_intersect;
 };
-ShadowTimes time_shadow(const Accel& native, const Accel& embree, const std::vector<collision::Ray>& rays);
+ShadowTimes time_shadow(const Accel& native, const Accel& embree, const std::vector<collision::Ray>& rays, int repeats);
 
 // The rays `accel` finds occluded, and the others (order kept in each).
 struct SplitRays {

@@ -366,6 +366,7 @@ cli_case("cli-threads-huge", E + r"--threads: must be an integer in \[0, 1024\]"
 cli_case("cli-threads-text", E + r"--threads: must be an integer", "render scene.json -o out.png --threads 2x")
 cli_case("cli-bench-threads-huge", E + r"bench: --threads must be in \[1, 1024\], got 100000", "bench scene.json --threads 100000")
 cli_case("cli-bench-spp-huge", E + r"bench: --spp must be in \[1, 1048576\]", "bench scene.json --spp 2000000")
+cli_case("cli-bench-repeat-0", E + r"bench: --repeat must be in \[1, 1000\], got 0", "bench scene.json --repeat 0")
 cli_case("cli-accel-unknown", E + r"--accel: foo not in \{bvh,embree\}|--accel", "render scene.json -o out.png --accel foo")
 cli_case("cli-max-memory-text", E + r"--max-memory: must be a size", "render scene.json -o out.png --max-memory lots")
 cli_case("cli-max-memory-negative", E + r"--max-memory: must be a size", "render scene.json -o out.png --max-memory=-5G")
