@@ -127,27 +127,44 @@ float DirectionalQuadtree::pdf_square(const glm::vec2& p) const {
 }
 
 DirectionalQuadtree DirectionalQuadtree::refined(double threshold, int max_depth) const {
+    // Breadth first, so that a node's children are adjacent and the top levels share the first
+    // cache lines, which prefetch() loads while the path vertex does other work. (Node order
+    // changes no density: sample() and pdf() follow child indices.)
+    struct Pending {
+        std::uint32_t out_node;
+        int old_node;  // the node of this tree in the same place, or -1 where this tree had a leaf
+        double energy[4];
+        int depth;
+    };
     DirectionalQuadtree out;
-    refine_into(out, 0, 0, energy_[0].e, total(), threshold, 1, max_depth);
+    const double total_energy = total();
+    std::vector<Pending> queue;
+    queue.push_back(Pending{0, 0, {}, 1});
+    std::copy(energy_[0].e, energy_[0].e + 4, queue[0].energy);
+    for (std::size_t head = 0; head < queue.size(); ++head) {
+        const Pending p = queue[head];  // a copy: push_back may move the queue
+        for (int q = 0; q < 4; ++q) {
+            if (!(total_energy > 0.0) || p.energy[q] / total_energy <= threshold || p.depth >= max_depth ||
+                out.nodes_.size() >= kMaxNodes)
+                continue;
+            const auto child = static_cast<std::uint16_t>(out.nodes_.size());
+            out.nodes_.emplace_back();
+            out.energy_.emplace_back();
+            out.nodes_[p.out_node].child[q] = child;
+            const int old_child = p.old_node >= 0 && nodes_[p.old_node].child[q] != 0 ? int(nodes_[p.old_node].child[q]) : -1;
+            Pending next{child, old_child, {}, p.depth + 1};
+            if (old_child >= 0) std::copy(energy_[old_child].e, energy_[old_child].e + 4, next.energy);
+            else std::fill(next.energy, next.energy + 4, 0.25 * p.energy[q]);
+            queue.push_back(next);
+        }
+    }
     return out;
 }
 
-void DirectionalQuadtree::refine_into(DirectionalQuadtree& out, std::uint32_t out_node, int old_node,
-                                      const double* energy, double total, double threshold, int depth,
-                                      int max_depth) const {
-    for (int q = 0; q < 4; ++q) {
-        if (!(total > 0.0) || energy[q] / total <= threshold || depth >= max_depth || out.nodes_.size() >= kMaxNodes)
-            continue;
-        const auto child = static_cast<std::uint16_t>(out.nodes_.size());
-        out.nodes_.emplace_back();
-        out.energy_.emplace_back();
-        out.nodes_[out_node].child[q] = child;
-        const int old_child = old_node >= 0 && nodes_[old_node].child[q] != 0 ? int(nodes_[old_node].child[q]) : -1;
-        double spread[4];
-        if (old_child >= 0) std::copy(energy_[old_child].e, energy_[old_child].e + 4, spread);
-        else std::fill(spread, spread + 4, 0.25 * energy[q]);
-        refine_into(out, child, old_child, spread, total, threshold, depth + 1, max_depth);
-    }
+void DirectionalQuadtree::prefetch() const {
+    const char* base = reinterpret_cast<const char*>(nodes_.data());
+    const std::size_t bytes = std::min(nodes_.size() * sizeof(Node), kPrefetchBytes);
+    for (std::size_t b = 0; b < bytes; b += 64) __builtin_prefetch(base + b);
 }
 
 int DirectionalQuadtree::depth_below(std::uint32_t node) const {

@@ -53,6 +53,11 @@ public:
     // (a leaf's energy counts as spread evenly over its would-be children); all energy zero.
     DirectionalQuadtree refined(double threshold, int max_depth) const;
 
+    // Starts loading the top of the tree (its first levels: refined() lays it out breadth
+    // first) into the cache, for a path vertex to call as soon as it knows its spatial leaf: the
+    // descents come after the light sample and its shadow ray.
+    void prefetch() const;
+
     std::size_t node_count() const { return nodes_.size(); }
     int depth() const;
 
@@ -73,6 +78,7 @@ private:
     static constexpr std::uint16_t kHalf = 32768;
     static constexpr float kUnit = 1.0f / 65535.0f;
     static constexpr std::size_t kMaxNodes = 65535;  // child indices are 16-bit
+    static constexpr std::size_t kPrefetchBytes = 256;  // prefetch(): the first 16 nodes
     // 4 P(quadrant): the density factor of one level (the quadrant is a quarter of the cell).
     static float factor(const Node& n, int xb, int yb) {
         const float px = float(xb ? 65535 - n.low_x : n.low_x) * kUnit;
@@ -83,8 +89,6 @@ private:
         double e[4] = {0.0, 0.0, 0.0, 0.0};
         double sum() const { return e[0] + e[1] + e[2] + e[3]; }
     };
-    void refine_into(DirectionalQuadtree& out, std::uint32_t out_node, int old_node, const double* energy,
-                     double total, double threshold, int depth, int max_depth) const;
     int depth_below(std::uint32_t node) const;
 
     std::vector<Node> nodes_;

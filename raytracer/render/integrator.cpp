@@ -100,6 +100,8 @@ glm::vec3 PathIntegrator::radiance(collision::Ray ray, PixelSampler& sampler, st
             const std::uint32_t leaf = guide_->leaf_of(hit.point);
             guide = guide_->guide_at(leaf);
             if (nee) light_guide = guide_->light_guide_at(leaf);
+            if (guide != nullptr) guide->prefetch();
+            if (light_guide != nullptr) light_guide->prefetch();
             recorder.at_leaf(leaf);
         }
 
@@ -112,8 +114,11 @@ glm::vec3 PathIntegrator::radiance(collision::Ray ray, PixelSampler& sampler, st
                 if (e.pdf > 0.0f) {
                     ++rays;
                     const bool visible = !accel_.occluded(shadow_ray(hit, ls));
-                    const float w =
-                        ls.delta ? 1.0f : power_heuristic(ls.pdf, guide ? guided_pdf(*guide, e.pdf, ls.wi) : e.pdf);
+                    // The MIS weight only where the light is seen: at a guided vertex it costs a
+                    // descent of the guide, and a blocked sample adds (and teaches) zero.
+                    const float w = !visible || ls.delta
+                                        ? 1.0f
+                                        : power_heuristic(ls.pdf, guide ? guided_pdf(*guide, e.pdf, ls.wi) : e.pdf);
                     if (visible) result += beta * e.f_cos * ls.radiance * (w / ls.pdf);
                     if (learn) {
                         const glm::vec3 unweighted = visible ? ls.radiance / ls.pdf : glm::vec3(0.0f);
