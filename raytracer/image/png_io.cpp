@@ -13,6 +13,8 @@
 #include <climits>
 #include <memory>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "raytracer/image/image_formats.hpp"
 #include "raytracer/image/srgb.hpp"
@@ -30,7 +32,12 @@ void append_to_vector(void* context, void* data, int size) {
 // stb trusts each chunk's length field: one chunk claiming 2 GB in a 71-byte file makes it
 // reallocate its buffer to 2 GB before reading (found by tests/fuzz/fuzz_png). So the chunk
 // structure is walked first: every chunk must fit in what the file holds.
-void check_chunks(const std::vector<unsigned char>& bytes, const std::filesystem::path& path) {
+// And stb copies an IDAT chunk into its data buffer with memcpy even when the chunk is empty
+// and no buffer exists yet, memcpy(nullptr, src, 0): undefined behaviour (found by fuzz_png,
+// UBSan's nonnull-attribute check), which lets the compiler assume the buffer non-null after
+// it. An empty IDAT adds no image data, so the walk also drops those chunks from the bytes stb
+// decodes; the image is the same.
+std::vector<unsigned char> checked_chunks(std::vector<unsigned char> bytes, const std::filesystem::path& path) {
     static const unsigned char kSignature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
     auto fail = [&](const std::string& what) {
         throw InputError("cannot read '" + path.string() + "': not a valid PNG (" + what + ")");
@@ -45,10 +52,15 @@ void check_chunks(const std::vector<unsigned char>& bytes, const std::filesystem
         if (length > bytes.size() - at - 12)
             fail("chunk at byte " + std::to_string(at) + " claims " + std::to_string(length) + " bytes, the file has " +
                  std::to_string(bytes.size() - at - 12) + " left");
+        if (length == 0 && std::equal(bytes.begin() + at + 4, bytes.begin() + at + 8, "IDAT")) {
+            bytes.erase(bytes.begin() + static_cast<std::ptrdiff_t>(at), bytes.begin() + static_cast<std::ptrdiff_t>(at + 12));
+            continue;
+        }
         at += 12 + length;
-        if (end) return;
+        if (end) return bytes;
     }
     fail("no IEND chunk");
+    return bytes;  // not reached: fail throws
 }
 
 struct StbFree {
@@ -72,13 +84,13 @@ void write_png(const Image& image, const std::filesystem::path& path) {
 }
 
 Image read_png(const std::filesystem::path& path) {
-    const std::vector<unsigned char> bytes = read_bytes(path);
-    if (bytes.size() > static_cast<std::size_t>(INT_MAX))
+    std::vector<unsigned char> file = read_bytes(path);
+    if (file.size() > static_cast<std::size_t>(INT_MAX))
         throw InputError("cannot read '" + path.string() + "': file too large");
+    const std::vector<unsigned char> bytes = checked_chunks(std::move(file), path);
     const auto* data = bytes.data();
     const int size = static_cast<int>(bytes.size());
     int w = 0, h = 0, channels = 0;
-    check_chunks(bytes, path);
     if (!stbi_info_from_memory(data, size, &w, &h, &channels))
         throw InputError("cannot read '" + path.string() + "': not a valid PNG (" +
                          reason_or(stbi_failure_reason(), "unreadable header") + ")");

@@ -92,6 +92,32 @@ TEST_CASE("PNG round trip: 8-bit codes exact, other values within half a code st
         }
 }
 
+TEST_CASE("PNG: empty IDAT chunks (which stb would memcpy from into a null buffer) read as the same image",
+          "[image][png]") {
+    ScratchDir dir("png-empty-idat");
+    Image image(5, 3);
+    for (std::size_t i = 0; i < image.pixels.size(); ++i)
+        image.pixels[i] = {srgb_decode((i * 37 % 256) / 255.0f), srgb_decode((i * 11 % 256) / 255.0f), srgb_decode(128 / 255.0f)};
+    write_image(image, dir / "plain.png");
+    const std::string plain = sweeptrace::testing::read_file_text(dir / "plain.png");
+    const std::size_t idat = plain.find("IDAT");  // the type field; the chunk starts 4 bytes before
+    REQUIRE(idat != std::string::npos);
+    REQUIRE(idat >= 12);
+    const std::string empty_idat("\0\0\0\0IDAT\x35\xaf\x06\x1e", 12);  // length 0, type, CRC-32 of "IDAT"
+    // One before the image data (the case that reached memcpy(nullptr, src, 0), fuzz_png's
+    // regression-empty-first-idat.png) and one after it.
+    std::string padded = plain;
+    const std::size_t data_length = (std::size_t(std::uint8_t(plain[idat - 4])) << 24) |
+                                    (std::size_t(std::uint8_t(plain[idat - 3])) << 16) |
+                                    (std::size_t(std::uint8_t(plain[idat - 2])) << 8) | std::uint8_t(plain[idat - 1]);
+    padded.insert(idat + 4 + data_length + 4, empty_idat);
+    padded.insert(idat - 4, empty_idat);
+    sweeptrace::testing::write_file_text(dir / "padded.png", padded);
+    CHECK(padded.size() == plain.size() + 24);
+    CHECK(bitwise_equal(read_image(dir / "padded.png"), read_image(dir / "plain.png")));
+    CHECK(bitwise_equal(read_image(dir / "padded.png"), image));
+}
+
 TEST_CASE("PFM round trip is bit-exact, including values a PNG cannot hold", "[image][pfm]") {
     ScratchDir dir("pfm");
     Image image = random_image(6, 3, -5.0f, 100.0f, 2);
