@@ -129,7 +129,8 @@ float DirectionalQuadtree::pdf_square(const glm::vec2& p) const {
 DirectionalQuadtree DirectionalQuadtree::refined(double threshold, int max_depth) const {
     // Breadth first, so that a node's children are adjacent and the top levels share the first
     // cache lines, which prefetch() loads while the path vertex does other work. (Node order
-    // changes no density: sample() and pdf() follow child indices.)
+    // changes no density: sample() and pdf() follow child indices. Only at kMaxNodes does the
+    // order choose which nodes exist: breadth first keeps the shallower ones.)
     struct Pending {
         std::uint32_t out_node;
         int old_node;  // the node of this tree in the same place, or -1 where this tree had a leaf
