@@ -42,8 +42,7 @@ public:
         push(point, wi, mean(contribution) * cosine(normal, wi), true);
         GuideRecord& r = out_->back();
         r.light_uv = square;
-        const float v = mean(unweighted) * cosine(normal, wi);
-        r.light_value = std::isfinite(v) && v > 0.0f ? v : 0.0f;
+        r.light_value = learnable(mean(unweighted) * cosine(normal, wi));
     }
     // The path continued from `point` along wi drawn with density `pdf`; `throughput` is the
     // path's throughput after the sample's weight, `total` the path's radiance so far.
@@ -74,10 +73,11 @@ private:
     };
     static float mean(const glm::vec3& c) { return (c.r + c.g + c.b) * (1.0f / 3.0f); }
     static float cosine(const glm::vec3& n, const glm::vec3& w) { return std::max(0.0f, glm::dot(n, w)); }
+    // A non-finite or negative estimate (a degenerate path) teaches nothing.
+    static float learnable(float v) { return std::isfinite(v) && v > 0.0f ? v : 0.0f; }
     void push(const glm::vec3& point, const glm::vec3& wi, float value, bool light_sample = false) {
-        // A non-finite or negative estimate (a degenerate path) teaches nothing; it still counts as a record.
-        out_->push_back(GuideRecord{point, wi, std::isfinite(value) && value > 0.0f ? value : 0.0f, leaf_,
-                                    light_sample});
+        // One that teaches nothing still counts as a record.
+        out_->push_back(GuideRecord{point, wi, learnable(value), leaf_, light_sample});
     }
 
     std::vector<GuideRecord>* out_;

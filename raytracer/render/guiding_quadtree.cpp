@@ -10,6 +10,9 @@ namespace sweeptrace {
 
 namespace {
 
+// The density on the sphere of a density 1 on the square: the map preserves area, 4 pi to 1.
+constexpr float kSquareToSphere = 1.0f / (4.0f * kPi);
+
 // A probability in units of 1/65535.
 std::uint16_t quantize(double p) { return static_cast<std::uint16_t>(std::lround(std::clamp(p, 0.0, 1.0) * 65535.0)); }
 
@@ -79,7 +82,7 @@ void DirectionalQuadtree::freeze() {
 
 glm::vec3 DirectionalQuadtree::sample(float u1, float u2, float* density) const {
     const glm::vec2 p = sample_square(u1, u2, density);
-    if (density != nullptr) *density *= 1.0f / (4.0f * kPi);  // as pdf() multiplies it
+    if (density != nullptr) *density *= kSquareToSphere;
     return square_to_direction(p);
 }
 
@@ -107,7 +110,7 @@ glm::vec2 DirectionalQuadtree::sample_square(float u1, float u2, float* density)
 }
 
 float DirectionalQuadtree::pdf(const glm::vec3& dir) const {
-    return pdf_square(direction_to_square(dir)) * (1.0f / (4.0f * kPi));  // on the sphere
+    return pdf_square(direction_to_square(dir)) * kSquareToSphere;
 }
 
 float DirectionalQuadtree::pdf_square(const glm::vec2& p) const {
