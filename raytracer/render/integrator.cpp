@@ -113,17 +113,19 @@ glm::vec3 PathIntegrator::radiance(collision::Ray ray, PixelSampler& sampler, st
                 const BsdfEval e = eval_bsdf(mat, ctx, ls.wi);
                 if (e.pdf > 0.0f) {
                     ++rays;
-                    const bool visible = !accel_.occluded(shadow_ray(hit, ls));
                     // The MIS weight only where the light is seen: at a guided vertex it costs a
                     // descent of the guide, and a blocked sample adds (and teaches) zero.
-                    const float w = !visible || ls.delta
-                                        ? 1.0f
-                                        : power_heuristic(ls.pdf, guide ? guided_pdf(*guide, e.pdf, ls.wi) : e.pdf);
-                    if (visible) result += beta * e.f_cos * ls.radiance * (w / ls.pdf);
-                    if (learn) {
-                        const glm::vec3 unweighted = visible ? ls.radiance / ls.pdf : glm::vec3(0.0f);
-                        recorder.add_light_sample(hit.point, ctx.frame.n, ls.wi, unweighted * w, ls.square,
-                                                  ls.on_square ? unweighted : glm::vec3(0.0f));
+                    if (!accel_.occluded(shadow_ray(hit, ls))) {
+                        const float w =
+                            ls.delta ? 1.0f : power_heuristic(ls.pdf, guide ? guided_pdf(*guide, e.pdf, ls.wi) : e.pdf);
+                        result += beta * e.f_cos * ls.radiance * (w / ls.pdf);
+                        if (learn) {
+                            const glm::vec3 unweighted = ls.radiance / ls.pdf;
+                            recorder.add_light_sample(hit.point, ctx.frame.n, ls.wi, unweighted * w, ls.square,
+                                                      ls.on_square ? unweighted : glm::vec3(0.0f));
+                        }
+                    } else if (learn) {
+                        recorder.add_light_sample(hit.point, ctx.frame.n, ls.wi, glm::vec3(0.0f), ls.square, glm::vec3(0.0f));
                     }
                 }
             }

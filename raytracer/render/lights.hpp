@@ -132,8 +132,10 @@ private:
     };
 
     glm::vec3 emitted_radiance_at(const Light& l, const LightSample& out, std::uint32_t primitive) const;
-    bool sample_cone(const Light& l, const glm::vec3& p, std::uint32_t p_object, float u1, float u2, LightSample& out,
-                     bool& sampled, const DirectionalQuadtree* square_guide) const;
+    // (u1, u2) the point of the sample square, drawn with density square_density there (1:
+    // uniform; light_guide.hpp's mixture otherwise).
+    bool sample_cone(const Light& l, const glm::vec3& p, std::uint32_t p_object, float u1, float u2,
+                     float square_density, LightSample& out, bool& sampled) const;
     float sample_area(const Light& l, float u_part, float u1, float u2, SurfacePoint& world) const;
 
     // The scene's "lights" (render/scene_lights.cpp).
