@@ -22,6 +22,19 @@ UvTangents hit_uv_tangents(const Scene& scene, const SurfaceHit& hit) {
     return {linear * local.dpdu, linear * local.dpdv};
 }
 
+namespace {
+
+// `n` normalised, or `ns` where it is degenerate or would turn the shading normal to or below
+// the geometric plane (the guards in the header).
+glm::vec3 guarded(const glm::vec3& n, const glm::vec3& ns, const glm::vec3& ng) {
+    const float nn = glm::dot(n, n);
+    if (!(nn > 0.0f) || !std::isfinite(nn)) return ns;
+    const glm::vec3 mapped = n / std::sqrt(nn);
+    return glm::dot(mapped, ng) > 0.0f ? mapped : ns;
+}
+
+}  // namespace
+
 glm::vec3 normal_from_map(const glm::vec3& ns, const glm::vec3& ng, const UvTangents& t, const glm::vec3& texel) {
     glm::vec3 tangent = t.dpdu - ns * glm::dot(ns, t.dpdu);
     const float tt = glm::dot(tangent, tangent);
@@ -30,11 +43,18 @@ glm::vec3 normal_from_map(const glm::vec3& ns, const glm::vec3& ng, const UvTang
     glm::vec3 bitangent = glm::cross(ns, tangent);
     if (glm::dot(bitangent, t.dpdv) < 0.0f) bitangent = -bitangent;
     const glm::vec3 m = 2.0f * texel - glm::vec3(1.0f);
-    const glm::vec3 n = m.x * tangent + m.y * bitangent + m.z * ns;
-    const float nn = glm::dot(n, n);
-    if (!(nn > 0.0f) || !std::isfinite(nn)) return ns;
-    const glm::vec3 mapped = n / std::sqrt(nn);
-    return glm::dot(mapped, ng) > 0.0f ? mapped : ns;
+    return guarded(m.x * tangent + m.y * bitangent + m.z * ns, ns, ng);
+}
+
+glm::vec3 normal_from_bump(const glm::vec3& ns, const glm::vec3& ng, const UvTangents& t, float dh_du, float dh_dv) {
+    const glm::vec3 tu = t.dpdu - ns * glm::dot(ns, t.dpdu);
+    const glm::vec3 tv = t.dpdv - ns * glm::dot(ns, t.dpdv);
+    const glm::vec3 flat = glm::cross(tu, tv);  // along ns, either way round (a mirrored uv map)
+    const float side = glm::dot(flat, ns);
+    if (!(std::abs(side) > 0.0f) || !std::isfinite(side) || !std::isfinite(dh_du) || !std::isfinite(dh_dv)) return ns;
+    // (tu + dh_du ns) x (tv + dh_dv ns), expanded: ns x ns = 0.
+    const glm::vec3 n = flat + dh_dv * glm::cross(tu, ns) + dh_du * glm::cross(ns, tv);
+    return guarded(side > 0.0f ? n : -n, ns, ng);
 }
 
 }  // namespace sweeptrace

@@ -34,6 +34,20 @@ glm::vec3 bilinear(const Texture& t, const glm::vec2& uv) {
 
 const Texture& texture(const Scene& scene, int index) { return scene.textures[static_cast<std::size_t>(index)]; }
 
+// A scalar parameter's value from a texel: the mean, exact for a grey texel.
+float channel_mean(const glm::vec3& c) { return c.x + ((c.y - c.x) + (c.z - c.x)) / 3.0f; }
+
+float height(const Texture& t, const glm::vec2& uv) { return channel_mean(eval_texture(t, uv)); }
+
+// (dh/du, dh/dv) of a bump map (an image: the loader refuses checkers) by central differences
+// one texel to either side: the finest slope the bilinear height has, and over two texels, so
+// the difference does not jump at each texel centre as a one-sided one would.
+glm::vec2 height_slope(const Texture& t, const glm::vec2& uv) {
+    const float du = 1.0f / static_cast<float>(t.image->width), dv = 1.0f / static_cast<float>(t.image->height);
+    return {(height(t, {uv.x + du, uv.y}) - height(t, {uv.x - du, uv.y})) / (2.0f * du),
+            (height(t, {uv.x, uv.y + dv}) - height(t, {uv.x, uv.y - dv})) / (2.0f * dv)};
+}
+
 }  // namespace
 
 glm::vec3 eval_texture(const Texture& t, const glm::vec2& uv) {
@@ -62,13 +76,19 @@ Material textured_material(const Scene& scene, const Material& base, SurfaceHit&
     const glm::vec2 uv = hit_uv(scene, hit);
     if (base.albedo_texture >= 0) m.albedo = eval_texture(texture(scene, base.albedo_texture), uv);
     if (base.roughness_texture >= 0) {
-        const glm::vec3 r = eval_texture(texture(scene, base.roughness_texture), uv);
-        m.roughness = r.x + ((r.y - r.x) + (r.z - r.x)) / 3.0f;  // the mean, exact for a grey texel
+        m.roughness = channel_mean(eval_texture(texture(scene, base.roughness_texture), uv));
     }
     if (base.emission_texture >= 0) m.emission = eval_texture(texture(scene, base.emission_texture), uv);
-    if (base.normal_texture >= 0)
-        hit.shading_normal = normal_from_map(hit.shading_normal, hit.normal, hit_uv_tangents(scene, hit),
-                                             eval_texture(texture(scene, base.normal_texture), uv));
+    if (base.normal_texture >= 0 || base.bump_texture >= 0) {
+        const UvTangents tangents = hit_uv_tangents(scene, hit);
+        if (base.normal_texture >= 0)
+            hit.shading_normal = normal_from_map(hit.shading_normal, hit.normal, tangents,
+                                                 eval_texture(texture(scene, base.normal_texture), uv));
+        if (base.bump_texture >= 0) {
+            const glm::vec2 slope = base.bump_scale * height_slope(texture(scene, base.bump_texture), uv);
+            hit.shading_normal = normal_from_bump(hit.shading_normal, hit.normal, tangents, slope.x, slope.y);
+        }
+    }
     return m;
 }
 

@@ -10,7 +10,7 @@
 //   each axis, so equal neighbours give their value exactly; wrap "repeat" takes texel indices
 //   modulo the size, "clamp" clamps them to the edge, "mirror" reflects them at each edge (the
 //   image, then its mirror image, period 2 W).
-// A scalar parameter (roughness) reads the mean of the three channels.
+// A scalar parameter (roughness, a bump map's height) reads the mean of the three channels.
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
@@ -25,12 +25,8 @@ glm::vec3 eval_texture(const Texture& t, const glm::vec2& uv);
 // refuses textures on those).
 glm::vec2 hit_uv(const Scene& scene, const SurfaceHit& hit);
 
-inline bool reads_texture(const Material& m) {
-    return m.albedo_texture >= 0 || m.roughness_texture >= 0 || m.emission_texture >= 0 || m.normal_texture >= 0;
-}
-
 // `base` with its textured parameters evaluated at `hit` (the caller's copy; only called for
-// materials that read a texture). A normal map also replaces hit.shading_normal
+// materials that read a texture). A normal map, then a bump map, also replace hit.shading_normal
 // (render/shading_frame.hpp).
 Material textured_material(const Scene& scene, const Material& base, SurfaceHit& hit);
 

@@ -1,5 +1,6 @@
 #include "raytracer/scene/load_mtl.hpp"
 
+#include <cmath>
 #include <cstdlib>
 #include <string_view>
 
@@ -33,9 +34,23 @@ glm::vec3 colour(const Words& w, float hi, const std::string& where) {
     return {number(w, 1, 0.0f, hi, where), number(w, 2, 0.0f, hi, where), number(w, 3, 0.0f, hi, where)};
 }
 
-MtlMap map(const Words& w, std::size_t line, const std::string& where) {
+// `bump`: read the -bm option (the other maps' statements are read past it, as before: it means
+// nothing there).
+MtlMap map(const Words& w, std::size_t line, const std::string& where, bool bump = false) {
     if (w.size() < 2) throw InputError(where + std::string(w[0]) + " names no file");
-    return {std::string(w.back()), line};
+    MtlMap out{std::string(w.back()), line};
+    // The options before the file: -bm takes one number (the last word is the file, never it).
+    for (std::size_t k = 1; bump && k + 1 < w.size(); ++k)
+        if (w[k] == "-bm") {
+            if (k + 2 >= w.size()) throw InputError(where + std::string(w[0]) + " -bm needs a number before the file");
+            const std::string word(w[k + 1]);
+            if (!obj_decimal(word))
+                throw InputError(where + std::string(w[0]) + " -bm '" + excerpt(word, 30) + "' is not a decimal number");
+            out.bm = static_cast<float>(std::strtod(word.c_str(), nullptr));
+            if (!std::isfinite(out.bm)) throw InputError(where + std::string(w[0]) + " -bm " + excerpt(word, 30) + " is not finite");
+            ++k;
+        }
+    return out;
 }
 
 void read_statement(const Words& w, std::size_t line, const std::string& where, MtlMaterial& m) {
@@ -54,7 +69,8 @@ void read_statement(const Words& w, std::size_t line, const std::string& where, 
         m.illum = static_cast<int>(v);
     } else if (key == "map_Kd") m.map_kd = map(w, line, where);
     else if (key == "map_Ks") m.map_ks = map(w, line, where);
-    else if (key == "map_Bump" || key == "map_bump" || key == "bump" || key == "norm") m.map_normal = map(w, line, where);
+    else if (key == "map_Bump" || key == "map_bump" || key == "bump") m.map_bump = map(w, line, where, true);
+    else if (key == "norm") m.map_norm = map(w, line, where);
 }
 
 }  // namespace

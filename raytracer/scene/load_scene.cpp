@@ -116,30 +116,30 @@ Material read_material(const Node& node, const std::string& name, std::vector<Te
         else m.roughness = r.number_in(0.0f, 1.0f);
     };
     if (type == "diffuse") {
-        node.require_object({"type", "albedo", "emission", "two_sided", "normal_map"});
+        node.require_object({"type", "albedo", "emission", "two_sided", "normal_map", "bump_map", "bump_scale"});
         m.type = Material::Type::Diffuse;
     } else if (type == "metal") {
-        node.require_object({"type", "albedo", "roughness", "emission", "two_sided", "normal_map"});
+        node.require_object({"type", "albedo", "roughness", "emission", "two_sided", "normal_map", "bump_map", "bump_scale"});
         m.type = Material::Type::Metal;
         if (auto r = node.find("roughness")) read_roughness(*r);
     } else if (type == "dielectric") {
-        node.require_object({"type", "ior", "albedo", "emission", "two_sided", "normal_map"});
+        node.require_object({"type", "ior", "albedo", "emission", "two_sided", "normal_map", "bump_map", "bump_scale"});
         m.type = Material::Type::Dielectric;
         m.albedo = glm::vec3(1.0f);  // clear glass unless tinted
         if (auto ior = node.find("ior")) m.ior = ior->number_at_least(0.0f, false);
     } else if (type == "thin_dielectric") {
-        node.require_object({"type", "ior", "albedo", "emission", "two_sided", "normal_map"});
+        node.require_object({"type", "ior", "albedo", "emission", "two_sided", "normal_map", "bump_map", "bump_scale"});
         m.type = Material::Type::ThinDielectric;
         m.albedo = glm::vec3(1.0f);  // clear unless tinted
         if (auto ior = node.find("ior")) m.ior = ior->number_at_least(0.0f, false);
     } else if (type == "rough_dielectric") {
-        node.require_object({"type", "ior", "roughness", "albedo", "emission", "two_sided", "normal_map"});
+        node.require_object({"type", "ior", "roughness", "albedo", "emission", "two_sided", "normal_map", "bump_map", "bump_scale"});
         m.type = Material::Type::RoughDielectric;
         m.albedo = glm::vec3(1.0f);  // clear unless tinted
         read_roughness(node.at("roughness"));
         if (auto ior = node.find("ior")) m.ior = ior->number_at_least(0.0f, false);
     } else if (type == "coated_diffuse") {
-        node.require_object({"type", "albedo", "ior", "roughness", "emission", "two_sided", "normal_map"});
+        node.require_object({"type", "albedo", "ior", "roughness", "emission", "two_sided", "normal_map", "bump_map", "bump_scale"});
         m.type = Material::Type::CoatedDiffuse;
         if (auto ior = node.find("ior")) m.ior = ior->number_at_least(1.0f, true);
         if (auto r = node.find("roughness")) read_roughness(*r);
@@ -171,6 +171,11 @@ Material read_material(const Node& node, const std::string& name, std::vector<Te
     }
     if (auto two_sided = node.find("two_sided")) m.two_sided_emission = two_sided->boolean();
     if (auto normal = node.find("normal_map")) m.normal_texture = add_texture(*normal, TextureUse::NormalMap, textures);
+    if (auto bump = node.find("bump_map")) m.bump_texture = add_texture(*bump, TextureUse::BumpMap, textures);
+    if (auto scale = node.find("bump_scale")) {
+        if (m.bump_texture < 0) scale->fail("bump_scale needs a bump_map");
+        m.bump_scale = scale->number();
+    }
     return m;
 }
 

@@ -15,7 +15,9 @@ namespace sweeptrace {
 
 namespace {
 
-bool is_data(TextureUse use) { return use == TextureUse::Roughness || use == TextureUse::NormalMap; }
+bool is_data(TextureUse use) {
+    return use == TextureUse::Roughness || use == TextureUse::NormalMap || use == TextureUse::BumpMap;
+}
 
 glm::vec3 read_colour01(const scene_json::Node& node) {
     const glm::vec3 v = node.vec3_at_least(0.0f);
@@ -52,6 +54,7 @@ void check_values(const Image& image, TextureUse use, const ImageFail& fail) {
     const char* what = use == TextureUse::Albedo      ? "an albedo"
                        : use == TextureUse::Roughness ? "a roughness"
                        : use == TextureUse::NormalMap ? "a normal map"
+                       : use == TextureUse::BumpMap   ? "a bump map"
                                                       : "an emission";
     for (const glm::vec3& p : image.pixels)
         for (int k = 0; k < 3; ++k) {
@@ -76,10 +79,6 @@ void read_image_texture(const scene_json::Node& im, TextureUse use, const std::v
         else if (wrap == "mirror") t.wrap = Texture::Wrap::Mirror;
         else w->fail("unknown wrap mode \"" + wrap + "\" (known: repeat, clamp, mirror)");
     }
-}
-
-bool reads_texture(const Material& m) {
-    return m.albedo_texture >= 0 || m.roughness_texture >= 0 || m.emission_texture >= 0 || m.normal_texture >= 0;
 }
 
 }  // namespace
@@ -113,6 +112,9 @@ Texture read_texture(const scene_json::Node& node, TextureUse use, const std::ve
     if (node.value().size() != 1) node.fail("give exactly one of \"checker\" or \"image\" (or a plain value)");
     Texture t;
     if (auto c = node.find("checker")) {
+        // A bump map's normal comes from the height's slope, which a checker has only at its
+        // edges, where it is a step: no slope to take.
+        if (use == TextureUse::BumpMap) c->fail("a bump map must be an image (a checker's height has no slope)");
         c->require_object({"a", "b", "scale"});
         t.kind = Texture::Kind::Checker;
         if (auto a = c->find("a")) t.a = read_checker_value(*a, use);

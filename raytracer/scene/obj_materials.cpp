@@ -24,6 +24,17 @@ int map_texture(const MtlMap& map, const char* key, TextureUse use, const std::f
     return static_cast<int>(scene.textures.size() - 1);
 }
 
+// Every texel's channels within 4/255 of each other: grey, allowing for the colour noise of an
+// 8-bit or JPEG-compressed grey image saved as RGB. (A normal map's blue channel is above 0.5
+// wherever its normal faces out, and its red and green near 0.5 where flat.)
+bool is_grey(const Image& image) {
+    constexpr float kTolerance = 4.0f / 255.0f;
+    for (const glm::vec3& p : image.pixels)
+        if (std::abs(p.x - p.y) > kTolerance || std::abs(p.y - p.z) > kTolerance || std::abs(p.x - p.z) > kTolerance)
+            return false;
+    return true;
+}
+
 // The faces' usemtl names, one per triangle (fans: corners - 2 triangles a face, in file order,
 // as load_obj stores them); "" before the first usemtl.
 std::vector<const ObjOutline::Statement*> triangle_usemtl(const ObjOutline& outline) {
@@ -72,8 +83,23 @@ Material material_from_mtl(const MtlMaterial& m, const std::filesystem::path& mt
         if (!m.map_kd.file.empty()) out.albedo_texture = map_texture(m.map_kd, "map_Kd", TextureUse::Albedo, mtl, has_uv, scene);
     }
     out.emission = m.ke;
-    if (!m.map_normal.file.empty())
-        out.normal_texture = map_texture(m.map_normal, "normal map", TextureUse::NormalMap, mtl, has_uv, scene);
+    if (!m.map_norm.file.empty())
+        out.normal_texture = map_texture(m.map_norm, "normal map", TextureUse::NormalMap, mtl, has_uv, scene);
+    if (!m.map_bump.file.empty()) {
+        const int bump = map_texture(m.map_bump, "bump map", TextureUse::BumpMap, mtl, has_uv, scene);
+        // The standard's map_Bump is a height field; Blender's exporter writes its normal maps
+        // there. A height map is grey, a tangent-space normal map is not (its flat texel is
+        // (0.5, 0.5, 1)): the file says which it is.
+        if (is_grey(*scene.textures[static_cast<std::size_t>(bump)].image)) {
+            out.bump_texture = bump;
+            out.bump_scale = m.map_bump.bm;
+        } else if (out.normal_texture < 0) {
+            out.normal_texture = bump;
+        } else {
+            throw InputError(mtl.string() + ": line " + std::to_string(m.map_bump.line) +
+                             ": bump map: a coloured image (a normal map) where norm already gives one");
+        }
+    }
     return out;
 }
 

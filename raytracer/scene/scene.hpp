@@ -109,7 +109,17 @@ struct Material {
     int emission_texture = -1;
     // A tangent-space normal map (render/shading_frame.hpp): replaces the shading normal.
     int normal_texture = -1;
+    // A height field (the mean of a texel's channels, times bump_scale, in world units along the
+    // normal) whose slope tilts the shading normal (render/shading_frame.hpp), after any normal map.
+    int bump_texture = -1;
+    float bump_scale = 1.0f;
 };
+
+// Whether any parameter of `m` is read from a texture (the renderer then evaluates them per hit).
+inline bool reads_texture(const Material& m) {
+    return m.albedo_texture >= 0 || m.roughness_texture >= 0 || m.emission_texture >= 0 || m.normal_texture >= 0 ||
+           m.bump_texture >= 0;
+}
 
 struct Scene {
     Camera camera;

@@ -235,6 +235,11 @@ obj_case("obj-empty", E + M + r"contains no faces", "")
 obj_case("obj-binary-garbage", E + M + r"line \d+: ", bytes(range(1, 256)) * 4 + b"\nf 1 2\n")
 obj_case("obj-face-words", E + M + r"invalid OBJ", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf a b c\n")
 
+render_case("material-bump-checker", E + r"scene\.json: materials\.m\.bump_map\.checker: a bump map must be an image",
+            scene(materials__m={"type": "diffuse", "bump_map": {"checker": {"a": [0, 0, 0], "b": [1, 1, 1]}}}))
+render_case("material-bump-scale-alone", E + r"scene\.json: materials\.m\.bump_scale: bump_scale needs a bump_map",
+            scene(materials__m={"type": "diffuse", "bump_scale": 2}))
+
 # --- OBJ materials (mtllib / usemtl): a mesh object without "material" takes its OBJ's ----------
 MTL_OBJ = "mtllib m.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 0 1\nusemtl a\nf 1/1 2/2 3/3\n"
 
@@ -255,6 +260,8 @@ mtl_case("mtl-usemtl-unknown", E + MF + r"mesh\.obj: line 8: usemtl \"a\": no su
 mtl_case("mtl-texture-missing", E + MF + r"m\.mtl: line 3: map_Kd: texture image \"wood\.png\" not found",
          "newmtl a\nKd 1 1 1\nmap_Kd -bm 1 wood.png\n")
 mtl_case("mtl-normal-map-missing", E + MF + r"m\.mtl: line 2: normal map: texture image \"n\.png\" not found", "newmtl a\nnorm n.png\n")
+mtl_case("mtl-bump-multiplier-missing", E + MF + r"m\.mtl: line 2: map_Bump -bm needs a number before the file",
+         "newmtl a\nmap_Bump -bm h.png\n")
 mtl_case("mtl-kd-not-number", E + MF + r"m\.mtl: line 2: Kd 'x' is not a decimal number", "newmtl a\nKd 1 x 1\n")
 mtl_case("mtl-kd-over-1", E + MF + r"m\.mtl: line 2: Kd 2 is out of range", "newmtl a\nKd 2 1 1\n")
 mtl_case("mtl-property-before-newmtl", E + MF + r"m\.mtl: line 1: Kd before any newmtl", "Kd 1 1 1\nnewmtl a\n")

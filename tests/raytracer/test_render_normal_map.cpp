@@ -1,5 +1,6 @@
 // Shading normals (render/shading_frame.hpp): the tangent frame of each home and of a mesh's vt,
-// the guards, and the energy checks the issue asks for. A white furnace (albedo 1 under a
+// the guards, a bump map's normal against the displaced surface's, and the energy checks the
+// issue asks for. A white furnace (albedo 1 under a
 // uniform environment of 1) on a normal-mapped sphere and on a mesh with wild vertex normals
 // reads <= 1 in every block within noise (a one-sided z-test: energy may be lost where wo falls
 // below the mapped normal, never gained), and a camera inside the same closed surfaces under a
@@ -32,7 +33,20 @@ Texture tilted_checker() {
     return t;
 }
 
-Scene sphere_scene(bool mapped, int size, const Material& base) {
+// A bump map of smooth bumps, 8 around the sphere's u and 4 along its v (heights in [0, 1]).
+Texture bumps() {
+    auto image = std::make_shared<Image>(64, 32);
+    for (int y = 0; y < image->height; ++y)
+        for (int x = 0; x < image->width; ++x)
+            image->at(x, y) = glm::vec3(0.5f + 0.5f * std::sin(0.785398f * x) * std::sin(0.785398f * y));
+    Texture t;
+    t.kind = Texture::Kind::Image;
+    t.image = image;
+    t.linear_data = true;
+    return t;
+}
+
+Scene sphere_scene(bool mapped, int size, const Material& base, bool bumped = false) {
     Scene scene = empty_scene(size, size);
     scene.camera.position = {0.0f, 0.0f, 3.2f};
     scene.camera.vfov_degrees = 40.0f;
@@ -40,7 +54,12 @@ Scene sphere_scene(bool mapped, int size, const Material& base) {
     Material m = base;
     if (mapped) {
         scene.textures.push_back(tilted_checker());
-        m.normal_texture = 0;
+        m.normal_texture = static_cast<int>(scene.textures.size() - 1);
+    }
+    if (bumped) {
+        scene.textures.push_back(bumps());
+        m.bump_texture = static_cast<int>(scene.textures.size() - 1);
+        m.bump_scale = 0.05f;  // heights up to 0.05 on a unit sphere: slopes up to ~1
     }
     add_object(scene, collision::Sphere{glm::vec3(0.0f), 1.0f}, add_material(scene, m), glm::mat4(1.0f), "sphere");
     return scene;
@@ -175,6 +194,45 @@ TEST_CASE("normal map: each home's uv tangents, the frame and its guards", "[ren
     const UvTangents mt = MeshInstanceShape::mesh_uv_tangents(MeshInstance{0}, {mesh}, 0);
     CHECK(near(mt.dpdu, {-1.0f, 0.0f, 0.0f}));
     CHECK(near(mt.dpdv, {0.0f, 2.0f, 0.0f}));
+}
+
+TEST_CASE("bump map: the normal of the displaced surface, and the guards", "[render][normal_map]") {
+    // A quad in the xy plane, dpdu = (2, 0, 0), dpdv = (0, 3, 0): displaced by h along +z, its
+    // point is (2u, 3v, h(u, v)) and its normal (2, 0, dh/du) x (0, 3, dh/dv), exactly.
+    const collision::Quad q{glm::vec3(0.0f), {2.0f, 0.0f, 0.0f}, {0.0f, 3.0f, 0.0f}};
+    const UvTangents qt = QuadShape::uv_tangents(q, glm::vec3(0.5f));
+    const glm::vec3 n(0.0f, 0.0f, 1.0f);
+    CHECK(normal_from_bump(n, n, qt, 0.0f, 0.0f) == n);  // no slope: N exactly
+    for (const glm::vec2 slope : {glm::vec2(0.7f, 0.0f), glm::vec2(0.0f, -1.3f), glm::vec2(2.0f, 0.5f)}) {
+        const glm::vec3 displaced = glm::normalize(glm::cross(glm::vec3(2.0f, 0.0f, slope.x), glm::vec3(0.0f, 3.0f, slope.y)));
+        INFO("slope " << slope.x << ", " << slope.y);
+        CHECK(near(normal_from_bump(n, n, qt, slope.x, slope.y), displaced));
+        // Mirrored uv (dpdv the other way): the same surface, so the same normal, on N's side.
+        const glm::vec3 mirrored = glm::normalize(glm::cross(glm::vec3(0.0f, -3.0f, -slope.y), glm::vec3(2.0f, 0.0f, slope.x)));
+        CHECK(near(normal_from_bump(n, n, {qt.dpdu, -qt.dpdv}, slope.x, -slope.y), mirrored));
+    }
+    // Tangents not orthogonal to the shading normal (a mesh's interpolated normals): a slope of
+    // zero still keeps it exactly.
+    const glm::vec3 tilted = glm::normalize(glm::vec3(0.2f, -0.1f, 1.0f));
+    CHECK(near(normal_from_bump(tilted, n, qt, 0.0f, 0.0f), tilted));
+    // Guards: a slope that turns the normal below the geometric plane (here a geometric normal
+    // far from the shading one), a non-finite slope, degenerate tangents, keep N.
+    const glm::vec3 ng = glm::normalize(glm::vec3(1.0f, 0.0f, 0.05f));
+    CHECK(normal_from_bump(n, ng, qt, 30.0f, 0.0f) == n);
+    CHECK(normal_from_bump(n, n, qt, INFINITY, 0.0f) == n);
+    CHECK(normal_from_bump(n, n, qt, 0.0f, NAN) == n);
+    CHECK(normal_from_bump(n, n, UvTangents{}, 0.5f, 0.5f) == n);
+    CHECK(normal_from_bump(n, n, {qt.dpdu, qt.dpdu}, 0.5f, 0.5f) == n);  // a uv map of zero area
+}
+
+TEST_CASE("bump map: a white furnace on a bumped sphere gains no energy, and no light gets inside", "[render][normal_map][furnace]") {
+    for (AccelKind accel : {AccelKind::Bvh, AccelKind::Embree}) {
+        check_furnace([](float a) { return sphere_scene(false, 40, diffuse(a), true); }, accel, "bumped diffuse sphere");
+        check_black_inside(sphere_scene(false, 16, diffuse(1.0f), true), accel);
+    }
+    const RenderResult plain = render_with(sphere_scene(false, 24, diffuse(0.5f)), AccelKind::Bvh, 2, 3, 1);
+    const RenderResult bumped = render_with(sphere_scene(false, 24, diffuse(0.5f), true), AccelKind::Bvh, 2, 3, 1);
+    CHECK(plain.image.pixels != bumped.image.pixels);
 }
 
 TEST_CASE("normal map: a white furnace on a normal-mapped sphere gains no energy", "[render][normal_map][furnace]") {

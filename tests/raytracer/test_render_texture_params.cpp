@@ -209,6 +209,7 @@ TEST_CASE("texture params: the same image at 1 and 3 threads with every textured
         "materials": { "ball": { "type": "metal", "albedo": { "checker": { "a": [0.9, 0.8, 0.7], "b": [0.5, 0.5, 0.5] } },
                                  "roughness": { "checker": { "a": 0.1, "b": 0.6, "scale": 5 } },
                                  "normal_map": { "image": { "file": "n.png", "wrap": "mirror" } },
+                                 "bump_map": { "image": { "file": "n.png" } }, "bump_scale": 0.03,
                                  "emission": { "checker": { "a": [0, 0, 0], "b": [0.5, 0.2, 0.1], "scale": 3 } } } },
         "objects": [ { "type": "mesh", "file": "sq.obj", "transform": [{ "translate": [0, 0, -1] }] },
                      { "type": "sphere", "center": [0.3, 0, 0.5], "radius": 0.5, "material": "ball" } ] })"));

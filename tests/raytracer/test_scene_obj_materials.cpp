@@ -1,15 +1,21 @@
 // OBJ materials (scene/load_mtl.hpp, scene/obj_materials.hpp): an OBJ's mtllib / usemtl mapped by
 // the README's table, a mesh object split into one object per material, a square of two
 // differently coloured triangles rendering each triangle's albedo x L at every pixel (both
-// accels), the scene's `material` overriding the .mtl (which is then not read), and the errors
-// naming the OBJ or .mtl file and line.
+// accels), the scene's `material` overriding the .mtl (which is then not read), map_Bump read as a
+// height map (its slope tilting the normal as the displaced surface's) or, coloured, a normal map,
+// and the errors naming the OBJ or .mtl file and line.
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <utility>
+
+#include <glm/geometric.hpp>
 
 #include "convergence_harness.hpp"
 #include "plane_truth.hpp"
+#include "raytracer/image/srgb.hpp"
 #include "raytracer/input_error.hpp"
+#include "raytracer/render/texture.hpp"
 #include "raytracer/scene/load_scene.hpp"
 #include "scene_test_files.hpp"
 
@@ -133,4 +139,71 @@ TEST_CASE("obj materials: errors name the OBJ or .mtl file and line", "[scene][o
                Catch::Contains("objects[0].materials: the only value is \"from_obj\""));
     CHECK_THAT(load_error(dir.write("q.json", scene_with(R"({ "type": "sphere", "radius": 1, "materials": "from_obj" })"))),
                Catch::Contains("objects[0].materials: unknown key"));
+}
+
+TEST_CASE("obj materials: map_Bump is a height map when grey, a normal map when coloured", "[render][obj_materials]") {
+    test::TempDir dir;
+    dir.write("square.obj", kSquareObj);
+    // A ramp in u: texel x holds the 8-bit code 36 x (read back as exactly 36 x / 255, a data
+    // map), so between texel centres dh/du = 8 x 36 / 255. (write_image encodes to sRGB.)
+    Image ramp(8, 1);
+    for (int x = 0; x < 8; ++x) ramp.at(x, 0) = glm::vec3(srgb_decode(static_cast<float>(36 * x) / 255.0f));
+    write_image(ramp, dir.path() / "ramp.png");
+    Image normals(2, 2);
+    for (glm::vec3& p : normals.pixels) p = glm::vec3(0.5f, 0.5f, 1.0f);
+    write_image(normals, dir.path() / "n.png");
+    dir.write("square.mtl", "newmtl dark\nKd 0.5 0.5 0.5\nmap_Bump -bm 0.25 ramp.png\n"
+                            "newmtl light\nKd 0.5 0.5 0.5\nbump -s 1 1 1 -bm 0.25 ramp.png\n");
+    const auto file = dir.write("s.json", scene_with(R"({ "type": "mesh", "file": "square.obj" })"));
+    const Scene scene = load_scene(file);
+    for (const char* name : {"square.mtl/dark", "square.mtl/light"}) {
+        const Material& m = named(scene, name);
+        INFO(name);
+        REQUIRE(m.bump_texture >= 0);
+        CHECK(m.normal_texture < 0);
+        CHECK(m.bump_scale == 0.25f);
+        CHECK(scene.textures[m.bump_texture].linear_data);
+    }
+    // The shading normal where a ray meets the square (the uv map takes (-1, -1) .. (1, 1) to
+    // [0, 1]^2, so dpdu = (2, 0, 0), dpdv = (0, 2, 0)): the ramp's displaced surface's normal.
+    const auto accel = make_accel(AccelKind::Bvh, scene);
+    for (const glm::vec2 at : {glm::vec2(0.1f, 0.3f), glm::vec2(-0.2f, -0.3f)}) {  // one point on each triangle
+        SurfaceHit hit;
+        REQUIRE(accel->intersect(collision::Ray{glm::vec3(at, 3.0f), glm::vec3(0.0f, 0.0f, -1.0f)}, hit));
+        const Material& base = scene.materials[scene.objects[hit.object].material];
+        (void)textured_material(scene, base, hit);
+        const float slope = 0.25f * 8.0f * 36.0f / 255.0f;
+        const glm::vec3 expected = glm::normalize(glm::cross(glm::vec3(2.0f, 0.0f, slope), glm::vec3(0.0f, 2.0f, 0.0f)));
+        INFO("at " << at.x << ", " << at.y << ": " << hit.shading_normal.x << " " << hit.shading_normal.y << " " << hit.shading_normal.z);
+        CHECK(glm::length(hit.shading_normal - expected) < 1e-4f);
+    }
+
+    // A coloured image in map_Bump is a normal map (what Blender's exporter writes there).
+    dir.write("square.mtl", "newmtl dark\nmap_Bump -bm 1.0 n.png\nnewmtl light\nnorm n.png\n");
+    const Scene colour = load_scene(file);
+    for (const char* name : {"square.mtl/dark", "square.mtl/light"}) {
+        INFO(name);
+        CHECK(named(colour, name).normal_texture >= 0);
+        CHECK(named(colour, name).bump_texture < 0);
+    }
+    // A grey one beside norm: both apply.
+    dir.write("square.mtl", "newmtl dark\nnorm n.png\nbump ramp.png\nnewmtl light\n");
+    const Scene both = load_scene(file);
+    CHECK(named(both, "square.mtl/dark").normal_texture >= 0);
+    CHECK(named(both, "square.mtl/dark").bump_texture >= 0);
+    CHECK(named(both, "square.mtl/dark").bump_scale == 1.0f);
+
+    // Errors name the file, the line and the statement.
+    const std::pair<const char*, const char*> errors[] = {
+        {"newmtl dark\nnorm n.png\nmap_Bump n.png\nnewmtl light\n",
+         "square.mtl: line 3: bump map: a coloured image (a normal map) where norm already gives one"},
+        {"newmtl dark\nmap_Bump -bm ramp.png\nnewmtl light\n", "square.mtl: line 2: map_Bump -bm needs a number before the file"},
+        {"newmtl dark\nnewmtl light\nbump -bm x ramp.png\n", "square.mtl: line 3: bump -bm 'x' is not a decimal number"}};
+    for (const auto& [mtl, message] : errors) {
+        dir.write("square.mtl", mtl);
+        CHECK_THAT(load_error(file), Catch::Contains(message));
+    }
+    // -bm means nothing to the other maps: read past, as before.
+    dir.write("square.mtl", "newmtl dark\nmap_Kd -bm x n.png\nnewmtl light\n");
+    CHECK(named(load_scene(file), "square.mtl/dark").albedo_texture >= 0);
 }
