@@ -13,7 +13,8 @@ z-test of the longest guided render (two seeds) against the reference (two halve
 noise from its own halves (see z_test).
 
 Writes docs/equal-time.md (table) and docs/equal-time.png (log-log error against time).
-Usage: /usr/bin/python3 tools/equal_time.py [--build build] [--times 0.5,1,2,4,8] [--threads 2]
+Each (scene, T, mode) is rendered --repeats times (seeds 7, 8, ...; default 3) and reported by
+the medians. Usage: /usr/bin/python3 tools/equal_time.py [--build build] [--times 0.5,1,2,4,8] [--threads 2]
 """
 import argparse
 import os
@@ -163,7 +164,9 @@ def main():
     ap.add_argument("--docs", default="docs")
     ap.add_argument("--size", help="WxH for every scene instead of the reduced sizes (e.g. 1024x768)")
     ap.add_argument("--ref-spp", type=int, help="reference spp (both halves) instead of the table's")
-    ap.add_argument("--no-z-test", action="store_true", help="skip the unbiasedness test (one more render per scene)")
+    ap.add_argument("--no-z-test", action="store_true", help="skip the unbiasedness test")
+    ap.add_argument("--repeats", type=int, default=3,
+                    help="renders per scene, T and mode (seeds 7, 8, ...): each figure is their median")
     ap.add_argument("--reuse", action="store_true",
                     help="reuse timed renders already in BUILD/equal-time (same binary only: the spp is re-read)")
     ap.add_argument("--fireflies", action="store_true",
@@ -184,36 +187,63 @@ def main():
         ref, ref_var, halves = reference(args, name, w, h, ref_spp)
         for t in times:
             for mode in ("off", "on"):
-                out = os.path.join(work, f"{name}-{w}x{h}-{mode}-{t:g}.pfm")
-                spp_file = out + ".spp"
-                if args.reuse and os.path.exists(out) and os.path.exists(spp_file):
-                    spp = int(open(spp_file).read())
-                else:
-                    spp = render(args.binary, f"scenes/{name}.json", w, h, out,
-                                 ["--time", str(t), "--time-clock", "cpu", "--guiding", mode, "--seed", "7",
-                                  "--threads", str(args.threads)])
-                    with open(spp_file, "w") as f:
-                        f.write(str(spp))
-                e = errors(read_pfm(out), ref, ref_var)
-                rows.append(dict(scene=name, size=f"{w}x{h}", ref_spp=ref_spp, t=t, guiding=mode, spp=spp, **e))
-                print(f"{name} T={t:g} guiding {mode}: {spp} spp, RMSE {e['rmse']:.5f} "
-                      f"(net {e['rmse_net']:.5f}), display {e['rmse_display']:.5f} "
-                      f"(net {e['rmse_display_net']:.5f})", file=sys.stderr)
+                runs = []
+                for seed in range(7, 7 + args.repeats):
+                    out = timed_render_path(work, name, w, h, mode, t, seed)
+                    spp_file = out + ".spp"
+                    if args.reuse and os.path.exists(out) and os.path.exists(spp_file):
+                        spp = int(open(spp_file).read())
+                    else:
+                        spp = render(args.binary, f"scenes/{name}.json", w, h, out,
+                                     ["--time", str(t), "--time-clock", "cpu", "--guiding", mode, "--seed", str(seed),
+                                      "--threads", str(args.threads)])
+                        with open(spp_file, "w") as f:
+                            f.write(str(spp))
+                    runs.append(dict(spp=spp, **errors(read_pfm(out), ref, ref_var)))
+                # Medians over the seeds: one short render's spp swings with the machine by as much
+                # as the margins read off it, and its error with the sampling's luck.
+                e = {k: float(np.median([r[k] for r in runs])) for k in runs[0]}
+                rows.append(dict(scene=name, size=f"{w}x{h}", ref_spp=ref_spp, t=t, guiding=mode,
+                                 spp_range=(min(r["spp"] for r in runs), max(r["spp"] for r in runs)), **e))
+                print(f"{name} T={t:g} guiding {mode}: spp {[r['spp'] for r in runs]}, RMSE "
+                      f"{[round(r['rmse'], 5) for r in runs]}, display {[round(r['rmse_display'], 5) for r in runs]}",
+                      file=sys.stderr)
         for mode in ("off", "on"):
-            px, err = bright_share(read_pfm(os.path.join(work, f"{name}-{w}x{h}-{mode}-{times[-1]:g}.pfm")), ref)
+            px, err = bright_share(read_pfm(timed_render_path(work, name, w, h, mode, times[-1], 7)), ref)
             bright_lines.append(f"- {name}, guiding {mode}: {100 * px:.1f}% of the pixels, {100 * err:.1f}% of the squared error")
         if args.no_z_test:
             continue
         t = times[-1]
-        second = os.path.join(work, f"{name}-{w}x{h}-on-{t:g}-seed8.pfm")
-        if not (args.reuse and os.path.exists(second)):
+        first, second = (timed_render_path(work, name, w, h, "on", t, seed) for seed in (7, 8))
+        if args.repeats < 2 and not (args.reuse and os.path.exists(second)):
             render(args.binary, f"scenes/{name}.json", w, h, second,
                    ["--time", str(t), "--time-clock", "cpu", "--guiding", "on", "--seed", "8",
                     "--threads", str(args.threads), "--quiet"])
-        z_lines.append((name, z_test(read_pfm(os.path.join(work, f"{name}-{w}x{h}-on-{t:g}.pfm")), read_pfm(second), *halves)))
+        z_lines.append((name, z_test(read_pfm(first), read_pfm(second), *halves)))
     args.firefly_lines = firefly_lines(args) if args.fireflies else []
     args.bright_lines = bright_lines
     write_docs(args, rows, z_lines, times)
+
+
+def equal_cost_lines(rows, scenes, t):
+    lines = []
+    for s in scenes:
+        off = next(r for r in rows if r["scene"] == s and r["t"] == t and r["guiding"] == "off")
+        on = next(r for r in rows if r["scene"] == s and r["t"] == t and r["guiding"] == "on")
+        parts = []
+        for key, label in (("rmse_net", "linear"), ("rmse_display_net", "display")):
+            if not (off[key] > 0):
+                continue
+            per_sample = (on[key] / off[key]) ** 2 * on["spp"] / off["spp"]
+            parts.append(f"{label}: per-sample MSE ratio {per_sample:.3f}, at equal cost {per_sample ** 0.5:.3f}")
+        cost = off["spp"] / on["spp"] if on["spp"] > 0 else float("nan")
+        lines.append(f"- {s}: a guided sample costs {cost:.2f}x an unguided one ({on['spp']:g} against {off['spp']:g} spp); "
+                     + "; ".join(parts))
+    return lines
+
+
+def timed_render_path(work, name, w, h, mode, t, seed):
+    return os.path.join(work, f"{name}-{w}x{h}-{mode}-{t:g}-seed{seed}.pfm")
 
 
 def write_pfm(path, img):
@@ -235,7 +265,9 @@ def write_docs(args, rows, z_lines, times):
           f"T is CPU seconds of all {args.threads} render threads (`--time T --time-clock cpu`); the reference "
           "is unguided, at the spp of the table (two halves of half as many, seeds 1001/1002). "
           "RMSE linear: against the reference; net: with the reference's own noise subtracted; "
-          "display: clamp to [0, 1], gamma 1/2.2. Ratio = guided / unguided at the same T.", "",
+          "display: clamp to [0, 1], gamma 1/2.2. Ratio = guided / unguided at the same T. "
+          f"Each figure is the median of {args.repeats} renders (seeds 7 to {6 + args.repeats}); spp: the median "
+          "(the range).", "",
           "| scene | size | T (CPU s) | spp off | spp on | RMSE off | RMSE on | ratio | net off | net on | net ratio "
           "| display off | display on | display ratio | display net ratio |",
           "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
@@ -244,7 +276,8 @@ def write_docs(args, rows, z_lines, times):
             off = next(r for r in rows if r["scene"] == s and r["t"] == t and r["guiding"] == "off")
             on = next(r for r in rows if r["scene"] == s and r["t"] == t and r["guiding"] == "on")
             ratio = lambda k: on[k] / off[k] if off[k] > 0 else float("nan")
-            md.append(f"| {s} | {off['size']} | {t:g} | {off['spp']} | {on['spp']} | {off['rmse']:.4g} | "
+            spp = lambda r: f"{r['spp']:g}" + (f" ({r['spp_range'][0]}-{r['spp_range'][1]})" if r["spp_range"][0] != r["spp_range"][1] else "")
+            md.append(f"| {s} | {off['size']} | {t:g} | {spp(off)} | {spp(on)} | {off['rmse']:.4g} | "
                       f"{on['rmse']:.4g} | {ratio('rmse'):.3f} | {off['rmse_net']:.4g} | {on['rmse_net']:.4g} | "
                       f"{ratio('rmse_net'):.3f} | {off['rmse_display']:.4g} | {on['rmse_display']:.4g} | "
                       f"{ratio('rmse_display'):.3f} | {ratio('rmse_display_net'):.3f} |")
@@ -255,6 +288,11 @@ def write_docs(args, rows, z_lines, times):
            "(seeds 7 and 8) against the reference (its two halves), each side's noise estimated from its two "
            "independent halves, limit by Bonferroni at family-wise false alarm 1e-4:", ""]
     md += [f"- {s}: {line}" for s, line in z_lines]
+    md += ["", f"What guiding's cost takes, at T = {times[-1]:g}: error falls as 1/sqrt(spp), so the MSE of one "
+           "sample is MSE x spp, and guided / unguided of that (net of the reference's noise) is how much a guided "
+           "sample's error is below an unguided one's; its square root is the ratio guided would reach at equal "
+           "time if a guided sample cost no more than an unguided one (`equal_cost_lines()` in the tool):", ""]
+    md += equal_cost_lines(rows, scenes, times[-1])
     md += ["", f"Where the error is, at T = {times[-1]:g}: the pixels that see a light (reference above 1 in a "
            "channel) and their 8 neighbours (`bright_share()` in the tool):", ""] + args.bright_lines
     if args.firefly_lines:
