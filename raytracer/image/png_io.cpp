@@ -43,7 +43,9 @@ std::vector<unsigned char> checked_chunks(std::vector<unsigned char> bytes, cons
         throw InputError("cannot read '" + path.string() + "': not a valid PNG (" + what + ")");
     };
     if (bytes.size() < 8 || !std::equal(kSignature, kSignature + 8, bytes.begin())) fail("no PNG signature");
-    std::size_t at = 8;
+    // Kept chunks are moved down over dropped ones as the walk goes (one pass, whatever the
+    // number of empty chunks), while `at` stays the file's own offset for the messages.
+    std::size_t at = 8, kept = 8;
     while (at < bytes.size()) {
         if (bytes.size() - at < 12) fail("chunk at byte " + std::to_string(at) + " is cut off");
         const std::size_t length = (std::size_t(bytes[at]) << 24) | (std::size_t(bytes[at + 1]) << 16) |
@@ -52,12 +54,22 @@ std::vector<unsigned char> checked_chunks(std::vector<unsigned char> bytes, cons
         if (length > bytes.size() - at - 12)
             fail("chunk at byte " + std::to_string(at) + " claims " + std::to_string(length) + " bytes, the file has " +
                  std::to_string(bytes.size() - at - 12) + " left");
-        if (length == 0 && std::equal(bytes.begin() + at + 4, bytes.begin() + at + 8, "IDAT")) {
-            bytes.erase(bytes.begin() + static_cast<std::ptrdiff_t>(at), bytes.begin() + static_cast<std::ptrdiff_t>(at + 12));
-            continue;
+        const std::size_t next = at + 12 + length;
+        if (length != 0 || !std::equal(bytes.begin() + at + 4, bytes.begin() + at + 8, "IDAT")) {
+            if (kept != at)
+                std::copy(bytes.begin() + static_cast<std::ptrdiff_t>(at), bytes.begin() + static_cast<std::ptrdiff_t>(next),
+                          bytes.begin() + static_cast<std::ptrdiff_t>(kept));
+            kept += next - at;
         }
-        at += 12 + length;
-        if (end) return bytes;
+        at = next;
+        if (end) {
+            if (kept != at) {  // the bytes after IEND as they were
+                std::copy(bytes.begin() + static_cast<std::ptrdiff_t>(at), bytes.end(),
+                          bytes.begin() + static_cast<std::ptrdiff_t>(kept));
+                bytes.resize(bytes.size() - (at - kept));
+            }
+            return bytes;
+        }
     }
     fail("no IEND chunk");
     return bytes;  // not reached: fail throws

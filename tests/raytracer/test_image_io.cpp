@@ -116,6 +116,21 @@ TEST_CASE("PNG: empty IDAT chunks (which stb would memcpy from into a null buffe
     CHECK(padded.size() == plain.size() + 24);
     CHECK(bitwise_equal(read_image(dir / "padded.png"), read_image(dir / "plain.png")));
     CHECK(bitwise_equal(read_image(dir / "padded.png"), image));
+    // Many of them (dropped in one pass), and a message after them names the file's own offset.
+    std::string many = plain;
+    for (int k = 0; k < 1000; ++k) many.insert(idat - 4, empty_idat);
+    sweeptrace::testing::write_file_text(dir / "many.png", many);
+    CHECK(bitwise_equal(read_image(dir / "many.png"), image));
+    const std::size_t iend = many.rfind("IEND") - 4;
+    many[iend + 3] = '\x7f';  // IEND now claims 127 bytes
+    sweeptrace::testing::write_file_text(dir / "bad.png", many);
+    std::string message;
+    try {
+        read_image(dir / "bad.png");
+    } catch (const std::exception& e) {
+        message = e.what();
+    }
+    CHECK_THAT(message, Catch::Contains("chunk at byte " + std::to_string(iend) + " claims 127 bytes"));
 }
 
 TEST_CASE("PFM round trip is bit-exact, including values a PNG cannot hold", "[image][pfm]") {
