@@ -2,9 +2,10 @@
 // against Embree on the same scene and the same rays, single-threaded, each timing the median of
 // --repeat passes: build time, Mrays/s (primary rays through the camera plus one random bounce
 // from each primary hit; occluded() on shadow rays from each primary hit, and from each bounce
-// hit, to a key light), their ratio, bytes per triangle; then samples/s of a short render at 1 and up to --threads threads. It prints
-// figures; it asserts nothing. `sweeptrace bench --meshes DIR` does the same per OBJ file of DIR
-// (bench_meshes.hpp). Ray rates are per second of the tracing thread's CPU time (bench_rays.hpp).
+// hit, to a key light), their ratio, bytes per triangle; then samples/s of a short render at 1
+// and up to --threads threads. It prints figures; it asserts nothing. `sweeptrace bench --meshes
+// DIR` does the same per OBJ file of DIR (bench_meshes.hpp). Ray rates are per second of the
+// tracing thread's CPU time (bench_rays.hpp).
 #include <cstdio>
 #include <memory>
 #include <string>

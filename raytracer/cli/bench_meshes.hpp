@@ -1,8 +1,8 @@
 #pragma once
 // `sweeptrace bench --meshes DIR [--rays N] [--repeat N]`: every .obj file of DIR (sorted by
-// name) framed alone in a 320x320 film, the native BVH against Embree (default flags, one build thread) on
-// the same rays (primary + one bounce for intersect(), a shadow ray per primary hit for
-// occluded(), bench_rays.hpp), single-threaded. Per mesh it prints build time, SAH cost, bytes
+// name) framed alone in a 320x320 film, the native BVH against Embree (default flags, one build
+// thread) on the same rays (primary + one bounce for intersect(), a shadow ray per primary hit
+// for occluded(), bench_rays.hpp), single-threaded. Per mesh it prints build time, SAH cost, bytes
 // per triangle, Mrays/s of intersect() and occluded(), the native / Embree ratios, and
 // occluded() against intersect() on the same shadow rays, each timing the median of --repeat
 // passes. It prints figures; it asserts nothing.

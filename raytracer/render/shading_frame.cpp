@@ -24,6 +24,9 @@ UvTangents hit_uv_tangents(const Scene& scene, const SurfaceHit& hit) {
 
 namespace {
 
+// v's part orthogonal to the unit normal n: a tangent of the shading frame.
+glm::vec3 along_surface(const glm::vec3& v, const glm::vec3& n) { return v - n * glm::dot(n, v); }
+
 // `n` normalised, or `ns` where it is degenerate or would turn the shading normal to or below
 // the geometric plane (the guards in the header).
 glm::vec3 guarded(const glm::vec3& n, const glm::vec3& ns, const glm::vec3& ng) {
@@ -36,7 +39,7 @@ glm::vec3 guarded(const glm::vec3& n, const glm::vec3& ns, const glm::vec3& ng) 
 }  // namespace
 
 glm::vec3 normal_from_map(const glm::vec3& ns, const glm::vec3& ng, const UvTangents& t, const glm::vec3& texel) {
-    glm::vec3 tangent = t.dpdu - ns * glm::dot(ns, t.dpdu);
+    glm::vec3 tangent = along_surface(t.dpdu, ns);
     const float tt = glm::dot(tangent, tangent);
     if (!(tt > 0.0f) || !std::isfinite(tt)) return ns;
     tangent /= std::sqrt(tt);
@@ -47,11 +50,10 @@ glm::vec3 normal_from_map(const glm::vec3& ns, const glm::vec3& ng, const UvTang
 }
 
 glm::vec3 normal_from_bump(const glm::vec3& ns, const glm::vec3& ng, const UvTangents& t, float dh_du, float dh_dv) {
-    const glm::vec3 tu = t.dpdu - ns * glm::dot(ns, t.dpdu);
-    const glm::vec3 tv = t.dpdv - ns * glm::dot(ns, t.dpdv);
+    const glm::vec3 tu = along_surface(t.dpdu, ns), tv = along_surface(t.dpdv, ns);
     const glm::vec3 flat = glm::cross(tu, tv);  // along ns, either way round (a mirrored uv map)
     const float side = glm::dot(flat, ns);
-    if (!(std::abs(side) > 0.0f) || !std::isfinite(side) || !std::isfinite(dh_du) || !std::isfinite(dh_dv)) return ns;
+    if (!(std::abs(side) > 0.0f && std::isfinite(side) && std::isfinite(dh_du) && std::isfinite(dh_dv))) return ns;
     // (tu + dh_du ns) x (tv + dh_dv ns), expanded: ns x ns = 0.
     const glm::vec3 n = flat + dh_dv * glm::cross(tu, ns) + dh_du * glm::cross(ns, tv);
     return guarded(side > 0.0f ? n : -n, ns, ng);

@@ -20,15 +20,14 @@
 // (render/bsdf.hpp) take reflection only with wi on wo's side of both the shading and the
 // geometric normal and transmission only across the geometric one (pbrt-v3's rule, checked on
 // the geometric normal, not pbrt-v4's shading-only test): no path crosses a closed surface by a
-// reflection. Here: a map value that would turn the normal to or below the geometric plane, a
-// degenerate tangent (a pole, a uv triangle of zero area) or a non-finite result keeps N; the
-// same for a bump map's slope. The
-// renderer traces radiance only (camera paths), so Veach's adjoint correction for shading
-// normals (|wo.ns| |wi.ng| / (|wo.ng| |wi.ns|), needed when importance is transported) does not
-// apply: every BSDF's albedo is computed in its shading frame and stays <= 1, so a furnace gains
-// nothing; where wo falls below the mapped normal the BSDF returns black (energy lost there, not
-// gained), the known dark-facet cost of this approach (no Schuessler et al. 2017 microfacet
-// normal mapping).
+// reflection. Here: a map value or a bump map's slope that would turn the normal to or below the
+// geometric plane, a degenerate tangent (a pole, a uv triangle of zero area) or a non-finite
+// result keeps N. The renderer traces radiance only (camera paths), so Veach's adjoint
+// correction for shading normals (|wo.ns| |wi.ng| / (|wo.ng| |wi.ns|), needed when importance is
+// transported) does not apply: every BSDF's albedo is computed in its shading frame and stays
+// <= 1, so a furnace gains nothing; where wo falls below the mapped normal the BSDF returns
+// black (energy lost there, not gained), the known dark-facet cost of this approach (no
+// Schuessler et al. 2017 microfacet normal mapping).
 #include <glm/vec3.hpp>
 
 #include "raytracer/geometry/shapes/uv_maps.hpp"

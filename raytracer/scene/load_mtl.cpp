@@ -1,6 +1,5 @@
 #include "raytracer/scene/load_mtl.hpp"
 
-#include <cmath>
 #include <cstdlib>
 #include <string_view>
 
@@ -14,16 +13,25 @@ namespace {
 
 using Words = std::vector<std::string_view>;
 
-float number(const Words& w, std::size_t k, float lo, float hi, const std::string& where) {
-    const std::string key(w[0]);
+// The largest magnitude a statement's number may have ("inf" in messages): finite, as a float.
+constexpr float kInf = 3.0e38f;
+
+// Word k of the statement as a number in [lo, hi]; messages name it by `key` (the keyword, or an
+// option of it).
+float number(const Words& w, std::size_t k, float lo, float hi, const std::string& where, const std::string& key) {
     if (k >= w.size()) throw InputError(where + key + " needs a number");
     const std::string word(w[k]);
     if (!obj_decimal(word)) throw InputError(where + key + " '" + excerpt(word, 30) + "' is not a decimal number");
     const float v = static_cast<float>(std::strtod(word.c_str(), nullptr));
     if (!(v >= lo && v <= hi))
-        throw InputError(where + key + " " + excerpt(word, 30) + " is out of range [" + std::to_string(lo) + ", " +
-                         (hi > 1e30f ? std::string("inf") : std::to_string(hi)) + "]");
+        throw InputError(where + key + " " + excerpt(word, 30) + " is out of range [" +
+                         (lo <= -kInf ? std::string("-inf") : std::to_string(lo)) + ", " +
+                         (hi >= kInf ? std::string("inf") : std::to_string(hi)) + "]");
     return v;
+}
+
+float number(const Words& w, std::size_t k, float lo, float hi, const std::string& where) {
+    return number(w, k, lo, hi, where, std::string(w[0]));
 }
 
 // `Kd r g b` or `Kd v` (grey); spectral and CIE XYZ forms are refused.
@@ -43,18 +51,12 @@ MtlMap map(const Words& w, std::size_t line, const std::string& where, bool bump
     for (std::size_t k = 1; bump && k + 1 < w.size(); ++k)
         if (w[k] == "-bm") {
             if (k + 2 >= w.size()) throw InputError(where + std::string(w[0]) + " -bm needs a number before the file");
-            const std::string word(w[k + 1]);
-            if (!obj_decimal(word))
-                throw InputError(where + std::string(w[0]) + " -bm '" + excerpt(word, 30) + "' is not a decimal number");
-            out.bm = static_cast<float>(std::strtod(word.c_str(), nullptr));
-            if (!std::isfinite(out.bm)) throw InputError(where + std::string(w[0]) + " -bm " + excerpt(word, 30) + " is not finite");
-            ++k;
+            out.bm = number(w, ++k, -kInf, kInf, where, std::string(w[0]) + " -bm");
         }
     return out;
 }
 
 void read_statement(const Words& w, std::size_t line, const std::string& where, MtlMaterial& m) {
-    constexpr float kInf = 3.0e38f;
     const std::string_view key = w[0];
     if (key == "Kd") m.kd = colour(w, 1.0f, where);
     else if (key == "Ks") m.ks = colour(w, 1.0f, where);

@@ -5,8 +5,8 @@
 // Read: newmtl, Kd, Ks, Ke (three numbers, or one for grey), Ns, Ni, d, Tr (= 1 - d), illum, and
 // the maps map_Kd, map_Ks, map_Bump / bump and norm (a map statement's file is its last word;
 // of the options before it a bump map's -bm multiplier is applied, the others, such as -s 1 1 1,
-// are read past and not applied). Other statements
-// (Ka, Tf, map_Ka, map_d, PBR extensions, ...) are ignored. scenes/README.md has the table that
+// are read past and not applied). Other statements (Ka, Tf, map_Ka, map_d, PBR extensions, ...)
+// are ignored. scenes/README.md has the table that
 // maps a read material to the renderer's (materials_from_mtl).
 #include <cstddef>
 #include <filesystem>
@@ -36,8 +36,7 @@ struct MtlMaterial {
 
 // Throws InputError "<file>: line N: ..." for a statement whose numbers are missing, not decimal,
 // or out of range (Kd and Ks in [0, 1], Ke and Ns >= 0, Ni >= 0, d and Tr in [0, 1], illum 0..10,
-// a -bm multiplier finite),
-// a property before any newmtl, an empty or repeated material name, a map without a file, or a
+// a -bm multiplier finite), a property before any newmtl, an empty or repeated material name, a map without a file, or a
 // file that cannot be read (as for an OBJ).
 std::vector<MtlMaterial> load_mtl(const std::filesystem::path& file);
 
