@@ -1,9 +1,12 @@
 #include "raytracer/scene/load_scene.hpp"
 
+#include <initializer_list>
 #include <map>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 #include <system_error>
+#include <vector>
 
 #include <glm/geometric.hpp>
 
@@ -115,31 +118,38 @@ Material read_material(const Node& node, const std::string& name, std::vector<Te
         if (r.value().is_object()) m.roughness_texture = add_texture(r, TextureUse::Roughness, textures);
         else m.roughness = r.number_in(0.0f, 1.0f);
     };
+    // The keys every material but an emissive one takes, and its type's own.
+    auto require_surface_keys = [&](std::initializer_list<std::string_view> own) {
+        std::vector<std::string_view> keys = {"type", "albedo", "emission", "two_sided", "normal_map", "bump_map",
+                                              "bump_scale"};
+        keys.insert(keys.end(), own);
+        node.require_object(keys);
+    };
     if (type == "diffuse") {
-        node.require_object({"type", "albedo", "emission", "two_sided", "normal_map", "bump_map", "bump_scale"});
+        require_surface_keys({});
         m.type = Material::Type::Diffuse;
     } else if (type == "metal") {
-        node.require_object({"type", "albedo", "roughness", "emission", "two_sided", "normal_map", "bump_map", "bump_scale"});
+        require_surface_keys({"roughness"});
         m.type = Material::Type::Metal;
         if (auto r = node.find("roughness")) read_roughness(*r);
     } else if (type == "dielectric") {
-        node.require_object({"type", "ior", "albedo", "emission", "two_sided", "normal_map", "bump_map", "bump_scale"});
+        require_surface_keys({"ior"});
         m.type = Material::Type::Dielectric;
         m.albedo = glm::vec3(1.0f);  // clear glass unless tinted
         if (auto ior = node.find("ior")) m.ior = ior->number_at_least(0.0f, false);
     } else if (type == "thin_dielectric") {
-        node.require_object({"type", "ior", "albedo", "emission", "two_sided", "normal_map", "bump_map", "bump_scale"});
+        require_surface_keys({"ior"});
         m.type = Material::Type::ThinDielectric;
         m.albedo = glm::vec3(1.0f);  // clear unless tinted
         if (auto ior = node.find("ior")) m.ior = ior->number_at_least(0.0f, false);
     } else if (type == "rough_dielectric") {
-        node.require_object({"type", "ior", "roughness", "albedo", "emission", "two_sided", "normal_map", "bump_map", "bump_scale"});
+        require_surface_keys({"ior", "roughness"});
         m.type = Material::Type::RoughDielectric;
         m.albedo = glm::vec3(1.0f);  // clear unless tinted
         read_roughness(node.at("roughness"));
         if (auto ior = node.find("ior")) m.ior = ior->number_at_least(0.0f, false);
     } else if (type == "coated_diffuse") {
-        node.require_object({"type", "albedo", "ior", "roughness", "emission", "two_sided", "normal_map", "bump_map", "bump_scale"});
+        require_surface_keys({"ior", "roughness"});
         m.type = Material::Type::CoatedDiffuse;
         if (auto ior = node.find("ior")) m.ior = ior->number_at_least(1.0f, true);
         if (auto r = node.find("roughness")) read_roughness(*r);
