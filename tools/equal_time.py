@@ -104,11 +104,10 @@ def z_test(guided, reference, block=8, false_alarm=1e-4):
     channel, z = |block mean difference| / sqrt(sum of those) x block^2. Limit: two-sided normal
     quantile, Bonferroni over all blocks and channels at family-wise false alarm 1e-4.
     Not the variance of two renders' difference, (a - b)^2 / 4 per pixel: one degree of freedom a
-    pixel, and where a few pixels carry a block's noise (an edge; a stratified count of lobe or
-    light choices) two renders often agree by chance (the reference halves, seeds 1001 and 1002,
-    agree to 6e-8 at default 128x72's pixel (85, 21), where other seeds scatter by 0.003), the
-    block's sigma collapses and correct renders fail: 7 of 55 pairs of unguided default renders
-    did against its reference, none with this model. Under the Sobol sampler the per-sample
+    pixel, and where a few pixels carry a block's noise two renders often agree by chance (the
+    reference halves, seeds 1001 and 1002, agree to 6e-8 at default 128x72's pixel (85, 21), where
+    other seeds scatter by 0.003), the block's sigma collapses and correct renders fail: 7 of 55
+    pairs of unguided default renders did against its reference, none with this model. Under the Sobol sampler the per-sample
     variance overstates the noise of a pixel mean (render --help), so the test errs toward passing:
     its max z sits near 2 where exact variances would put it near 3. Its power, measured on those
     default renders (1300 spp, two seeds): a 1% bias in one 8x8 block gives z = 7.2-7.7."""
