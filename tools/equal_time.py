@@ -52,17 +52,18 @@ def variance_path(path):
     return path[: -len(".pfm")] + ".var.pfm"
 
 
-def render_with_variance(args, scene, w, h, path, extra):
-    """A render and its per-pixel variance of the pixel mean (`render --variance`), cached beside
-    each other; returns (image, variance, spp)."""
+def render_with_variance(args, scene, w, h, path, spp, seed, guiding, reuse):
+    """A render at `spp` and its per-pixel variance of the pixel mean (`render --variance`), kept
+    beside each other and rendered again unless `reuse` and both exist; returns (image, variance, spp)."""
     var = variance_path(path)
-    if not (os.path.exists(path) and os.path.exists(var)):
+    if not (reuse and os.path.exists(path) and os.path.exists(var)):
         print(f"equal_time: rendering {path}", file=sys.stderr)
         tmp, tmp_var = path + ".tmp.pfm", path + ".tmp.var.pfm"
-        render(args.binary, scene, w, h, tmp, extra + ["--variance", tmp_var, "--threads", str(args.threads), "--quiet"])
+        render(args.binary, scene, w, h, tmp, ["--spp", str(spp), "--seed", str(seed), "--guiding", guiding,
+                                               "--variance", tmp_var, "--threads", str(args.threads), "--quiet"])
         os.replace(tmp_var, var)
         os.replace(tmp, path)
-    return read_pfm(path), read_pfm(var), int(extra[extra.index("--spp") + 1])
+    return read_pfm(path), read_pfm(var), spp
 
 
 def reference(args, name, w, h, ref_spp):
@@ -71,8 +72,8 @@ def reference(args, name, w, h, ref_spp):
     halves = []
     for half, seed in (("a", 1001), ("b", 1002)):
         path = os.path.join(cache, f"ref-{name}-{w}x{h}-{ref_spp // 2}spp-{half}.pfm")
-        halves.append(render_with_variance(args, f"scenes/{name}.json", w, h, path,
-                                           ["--spp", str(ref_spp // 2), "--seed", str(seed), "--guiding", "off"]))
+        # Cached across runs and builds: converged and unguided, it is not what is being measured.
+        halves.append(render_with_variance(args, f"scenes/{name}.json", w, h, path, ref_spp // 2, seed, "off", True))
     a, b = halves[0][0], halves[1][0]
     ref = 0.5 * (a + b)
     # Mean per-pixel variance of the reference, linear and in display space (the latter an
@@ -107,10 +108,11 @@ def z_test(guided, reference, block=8, false_alarm=1e-4):
     pixel, and where a few pixels carry a block's noise two renders often agree by chance (the
     reference halves, seeds 1001 and 1002, agree to 6e-8 at default 128x72's pixel (85, 21), where
     other seeds scatter by 0.003), the block's sigma collapses and correct renders fail: 7 of 55
-    pairs of unguided default renders did against its reference, none with this model. Under the Sobol sampler the per-sample
-    variance overstates the noise of a pixel mean (render --help), so the test errs toward passing:
-    its max z sits near 2 where exact variances would put it near 3. Its power, measured on those
-    default renders (1300 spp, two seeds): a 1% bias in one 8x8 block gives z = 7.2-7.7."""
+    pairs of unguided default renders did against its reference, none with this model. Under the
+    Sobol sampler the per-sample variance overstates the noise of a pixel mean (render --help), so
+    the test errs toward passing: its max z sits near 2 where exact variances would put it near 3.
+    Its power, measured on those default renders (1300 spp, two seeds): a 1% bias in one 8x8 block
+    gives z = 7.2-7.7."""
     from statistics import NormalDist
     def side(parts):
         n = sum(spp for _, _, spp in parts)
@@ -243,10 +245,12 @@ def main():
         if args.no_z_test:
             continue
         # At the spp the longest T reached, not a time budget: the same inputs on any machine.
-        spp = int(next(r["spp"] for r in rows if r["scene"] == name and r["t"] == times[-1] and r["guiding"] == "on"))
+        spp = int(next(r["spp"] for r in rows
+                       if r["scene"] == name and r["t"] == times[-1] and r["guiding"] == "on"))
+        # Rendered by the binary under test, like the timed renders (kept only with --reuse).
         guided = [render_with_variance(args, f"scenes/{name}.json", w, h,
                                        os.path.join(work, f"{name}-{w}x{h}-on-{spp}spp-seed{seed}.pfm"),
-                                       ["--spp", str(spp), "--seed", str(seed), "--guiding", "on"])
+                                       spp, seed, "on", args.reuse)
                   for seed in (7, 8)]
         z_lines.append((name, f"{spp} spp: " + z_test(guided, halves)))
     args.firefly_lines = firefly_lines(args) if args.fireflies else []

@@ -116,9 +116,15 @@ std::string occl_isect(const ShadowTimes& t, std::size_t rays) {
     return text;
 }
 
-// (intersect on the unblocked + on the blocked rays) / occluded on the unblocked ones.
-double ceiling(const TraceResult& isect_unblocked, const TraceResult& isect_blocked, const TraceResult& occl_unblocked) {
-    return (isect_unblocked.cpu + isect_blocked.cpu) / occl_unblocked.cpu;
+// (intersect on the unblocked + on the blocked rays) / occluded on the unblocked ones, native then
+// embree, or n/a when the unblocked rays are too few to time (as occl_isect).
+std::string ceiling(const ShadowTimes& unblocked, const ShadowTimes& blocked, std::size_t unblocked_rays) {
+    if (unblocked_rays < 100) return "n/a";
+    char text[48];
+    std::snprintf(text, sizeof text, "native %.2f, embree %.2f",
+                  (unblocked.native_intersect.cpu + blocked.native_intersect.cpu) / unblocked.native_occluded.cpu,
+                  (unblocked.embree_intersect.cpu + blocked.embree_intersect.cpu) / unblocked.embree_occluded.cpu);
+    return text;
 }
 
 // What any-hit can gain depends on how many shadow rays are blocked: on an unblocked ray both
@@ -142,9 +148,8 @@ void print_shadow_detail(const Accel& native, const Accel& embree, const BenchRa
     // with the unblocked ones at today's cost (they need every box and triangle test intersect()
     // makes there). A target above this ceiling needs fewer tests on unblocked segments, which an
     // exact any-hit query on the same tree cannot skip.
-    std::printf("%-18s occl/isect ceiling if blocked rays cost nothing: native %.2f, embree %.2f\n", "",
-                ceiling(unblocked.native_intersect, blocked.native_intersect, unblocked.native_occluded),
-                ceiling(unblocked.embree_intersect, blocked.embree_intersect, unblocked.embree_occluded));
+    std::printf("%-18s occl/isect ceiling if blocked rays cost nothing: %s\n", "",
+                ceiling(unblocked, blocked, split.unblocked.size()).c_str());
     if (second.native_occluded.hits != second.embree_occluded.hits)
         std::printf("%-18s note: bounce-hit shadow rays occluded differ, %zu / %zu (native / embree)\n", "",
                     second.native_occluded.hits, second.embree_occluded.hits);
