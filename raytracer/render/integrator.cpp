@@ -10,6 +10,7 @@
 #include "raytracer/render/guiding_path_recorder.hpp"
 #include "raytracer/render/guiding_sampler.hpp"
 #include "raytracer/render/environment_light.hpp"
+#include "raytracer/render/radiance_clamp.hpp"
 #include "raytracer/render/sampling.hpp"
 #include "raytracer/render/texture.hpp"
 
@@ -57,6 +58,7 @@ glm::vec3 PathIntegrator::radiance(collision::Ray ray, PixelSampler& sampler, st
     // guided sample aimed at a bright light has a small weight (its density is high), and
     // roulette on that would end most of the very paths guiding found.
     float rr_scale = 1.0f;
+    IndirectClamp limit(scene_.film.clamp_indirect);
     glm::vec3 result(0.0f);
     glm::vec3 beta(1.0f);
     float eta_scale = 1.0f;     // undoes the 1/eta^2 of refractions, for the roulette
@@ -70,8 +72,9 @@ glm::vec3 PathIntegrator::radiance(collision::Ray ray, PixelSampler& sampler, st
         SurfaceHit hit;
         ++rays;
         if (!accel_.intersect(ray, hit)) {
-            if (!lights_.background_is_light()) result += beta * background_radiance(scene_.background, ray.dir);
-            if (lights_.has_distant()) result += beta * lights_.escaped_radiance(ray.dir, nee && !full_weight ? prev_pdf : 0.0f);
+            if (!lights_.background_is_light()) result += limit.found(beta * background_radiance(scene_.background, ray.dir), depth);
+            if (lights_.has_distant())
+                result += limit.found(beta * lights_.escaped_radiance(ray.dir, nee && !full_weight ? prev_pdf : 0.0f), depth);
             break;
         }
         if (defect_ == PlantedDefect::FlippedNormals) {  // planted: inward normals
@@ -87,12 +90,13 @@ glm::vec3 PathIntegrator::radiance(collision::Ray ray, PixelSampler& sampler, st
         if (le != glm::vec3(0.0f)) {
             float w = 1.0f;
             if (nee && !full_weight) w = power_heuristic(prev_pdf, lights_.pdf(prev_point, prev_object, hit, prev_light_guide));
-            result += beta * le * w;
+            result += limit.found(beta * le * w, depth);
         }
         if (depth >= max_depth_ || !scatters(mat)) break;
 
         const ShadingContext ctx = make_shading_context(hit, wo);
         const bool delta = is_delta(mat);
+        limit.scatter_at(depth, delta);
         const bool learn = recorder.on() && is_guided(mat);
         const DirectionalQuadtree* guide = nullptr;
         const DirectionalQuadtree* light_guide = nullptr;
@@ -118,7 +122,7 @@ glm::vec3 PathIntegrator::radiance(collision::Ray ray, PixelSampler& sampler, st
                     if (!accel_.occluded(shadow_ray(hit, ls))) {
                         const float w =
                             ls.delta ? 1.0f : power_heuristic(ls.pdf, guide ? guided_pdf(*guide, e.pdf, ls.wi) : e.pdf);
-                        result += beta * e.f_cos * ls.radiance * (w / ls.pdf);
+                        result += limit.light_sample(beta * e.f_cos * ls.radiance * (w / ls.pdf), depth);
                         if (learn) {
                             const glm::vec3 unweighted = ls.radiance / ls.pdf;
                             recorder.add_light_sample(hit.point, ctx.frame.n, ls.wi, unweighted * w, ls.square,

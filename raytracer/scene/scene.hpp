@@ -53,6 +53,10 @@ struct Film {
     float exposure = 0.0f;  // stops: 8-bit output shows radiance x 2^exposure (linear outputs untouched)
     ToneCurve tone_curve = ToneCurve::Clamp;
     FilterSpec filter;  // box of radius 0.5: each sample uniform in its pixel
+    // A biased, opt-in firefly guard (render/radiance_clamp.hpp): each contribution of a path of
+    // three or more segments (light reaching the camera after two or more bounces) has its largest
+    // component limited to this. 0 = off, the unbiased estimator.
+    float clamp_indirect = 0.0f;
 };
 
 struct Background {
