@@ -7,6 +7,9 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
+#include <string>
+#include <vector>
 
 #include <glm/geometric.hpp>
 #include <glm/gtc/matrix_transform.hpp>
@@ -75,6 +78,30 @@ GOLDEN_TEST("primitives", primitives)
 GOLDEN_TEST("mesh", mesh)
 GOLDEN_TEST("default", default)
 GOLDEN_TEST("showcase", showcase)
+GOLDEN_TEST("spheres-field", spheres_field)
+
+// A scene added to scenes/ without a golden would go untested: every top-level scenes/*.json
+// needs its goldens.txt line, its golden and variance files, and both image tests registered.
+TEST_CASE("every scene in scenes/ has a golden and its image tests", "[image][golden]") {
+    std::vector<std::string> registered;
+    for (const Catch::TestCase& t : Catch::getRegistryHub().getTestCaseRegistry().getAllTests())
+        registered.push_back(t.name);
+    int scenes = 0;
+    for (const auto& entry : std::filesystem::directory_iterator(std::filesystem::path(SWEEPTRACE_SOURCE_DIR) / "scenes")) {
+        if (entry.path().extension() != ".json") continue;
+        ++scenes;
+        const std::string name = entry.path().stem().string();
+        INFO("scenes/" << name << ".json");
+        const auto& specs = read_golden_specs();
+        const auto spec = std::find_if(specs.begin(), specs.end(), [&](const GoldenSpec& g) { return g.scene == name; });
+        REQUIRE(spec != specs.end());  // add its line to reference_images/goldens.txt
+        CHECK(std::filesystem::is_regular_file(golden_image_path(*spec)));     // bash tools/make-goldens.sh build NAME
+        CHECK(std::filesystem::is_regular_file(golden_variance_path(*spec)));
+        for (const char* accel : {" bvh", " embree"})  // GOLDEN_TEST(NAME) above
+            CHECK(std::find(registered.begin(), registered.end(), "golden " + name + accel) != registered.end());
+    }
+    CHECK(scenes >= 7);  // the directory was read: the seven scenes of today at least
+}
 
 TEST_CASE("golden mutation: another seed is accepted", "[image][golden][mutation]") {
     const GoldenSpec& spec = golden_spec("cornell-box");
