@@ -19,6 +19,7 @@
 #include "raytracer/scene/load_filter.hpp"
 #include "raytracer/scene/load_lights.hpp"
 #include "raytracer/scene/load_texture.hpp"
+#include "raytracer/scene/named_metals.hpp"
 #include "raytracer/scene/obj_materials.hpp"
 #include "raytracer/scene/obj_loader.hpp"
 #include "raytracer/scene/scene_extent.hpp"
@@ -107,6 +108,40 @@ glm::vec3 read_albedo(const Node& node) {
     return v;
 }
 
+// A conductor's eta (> 0) or k (>= 0): one number for all three channels, or [r, g, b].
+glm::vec3 read_conductor_channel(const Node& node, bool is_eta) {
+    if (node.value().is_number()) return glm::vec3(is_eta ? node.number_at_least(0.0f, false) : node.number_at_least(0.0f, true));
+    const glm::vec3 v = node.vec3();
+    for (int i = 0; i < 3; ++i) {
+        const Node c = node.element(static_cast<std::size_t>(i));
+        if (is_eta) c.number_at_least(0.0f, false);
+        else c.number_at_least(0.0f, true);
+    }
+    return v;
+}
+
+// {"metal": "<name>"} or {"eta": ..., "k": ...}, exactly one of the two forms.
+void read_conductor(const Node& node, Material& m) {
+    const auto metal = node.find("metal");
+    const bool eta = node.has("eta"), k = node.has("k");
+    if (metal && (eta || k)) node.fail("give either \"metal\" or \"eta\" and \"k\", not both");
+    if (metal) {
+        const std::string name = metal->string();
+        const auto found = find_named_metal(name);
+        if (!found) {
+            std::string known;
+            for (const NamedMetal& n : named_metals()) known += (known.empty() ? "" : ", ") + std::string(n.name);
+            metal->fail("unknown metal \"" + name + "\" (known: " + known + "; or give \"eta\" and \"k\")");
+        }
+        m.eta = found->eta;
+        m.k = found->k;
+        return;
+    }
+    if (!eta && !k) node.fail("a conductor needs \"metal\" (a named metal) or \"eta\" and \"k\" (its complex index of refraction)");
+    m.eta = read_conductor_channel(node.at("eta"), true);
+    m.k = read_conductor_channel(node.at("k"), false);
+}
+
 Material read_material(const Node& node, const std::string& name, std::vector<Texture>& textures) {
     if (!node.value().is_object()) node.fail("must be an object with a \"type\"");
     const Node type_node = node.at("type");
@@ -131,6 +166,12 @@ Material read_material(const Node& node, const std::string& name, std::vector<Te
     } else if (type == "metal") {
         require_surface_keys({"roughness"});
         m.type = Material::Type::Metal;
+        if (auto r = node.find("roughness")) read_roughness(*r);
+    } else if (type == "conductor") {
+        require_surface_keys({"roughness", "metal", "eta", "k"});
+        m.type = Material::Type::Conductor;
+        m.albedo = glm::vec3(1.0f);  // untinted unless given
+        read_conductor(node, m);
         if (auto r = node.find("roughness")) read_roughness(*r);
     } else if (type == "dielectric") {
         require_surface_keys({"ior"});
@@ -158,7 +199,7 @@ Material read_material(const Node& node, const std::string& name, std::vector<Te
         m.type = Material::Type::Emissive;
         m.albedo = glm::vec3(0.0f);  // a light absorbs what reaches it
     } else {
-        type_node.fail("unknown material type \"" + type + "\" (known: diffuse, metal, dielectric, thin_dielectric, rough_dielectric, coated_diffuse, emissive)");
+        type_node.fail("unknown material type \"" + type + "\" (known: diffuse, metal, conductor, dielectric, thin_dielectric, rough_dielectric, coated_diffuse, emissive)");
     }
     if (auto albedo = node.find("albedo")) {
         if (albedo->value().is_object()) {
