@@ -1,7 +1,9 @@
 #include "raytracer/scene/load_scene.hpp"
 
+#include <cctype>
 #include <initializer_list>
 #include <map>
+#include <set>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -22,6 +24,7 @@
 #include "raytracer/scene/named_metals.hpp"
 #include "raytracer/scene/obj_materials.hpp"
 #include "raytracer/scene/obj_loader.hpp"
+#include "raytracer/scene/ply_loader.hpp"
 #include "raytracer/scene/scene_extent.hpp"
 #include "raytracer/scene/scene_transform.hpp"
 #include "raytracer/scene/text_file.hpp"
@@ -286,26 +289,31 @@ public:
         for (std::size_t i = 0; i < n; ++i) scene_.objects.push_back(read(objects.element(i)));
     }
 
-    // The scene's index of the mesh in the OBJ file `file_node` names, loading it the first time
-    // (the mesh shape's home calls this to read its "file" key).
+    // The scene's index of the mesh in the OBJ or PLY file `file_node` names (by its extension,
+    // .ply in any case is PLY, anything else OBJ), loading it the first time (the mesh shape's
+    // home calls this to read its "file" key).
     std::uint32_t mesh_index(const Node& file_node) {
         const std::string relative = file_node.string();
-        if (relative.empty()) file_node.fail("must name an OBJ file");
+        if (relative.empty()) file_node.fail("must name an OBJ or PLY file");
         const std::filesystem::path path = scene_.source.parent_path() / relative;
         std::error_code ec;
         if (!std::filesystem::is_regular_file(path, ec))
             file_node.fail("mesh file \"" + relative + "\" not found (looked for " + path.string() + ")");
         const std::string key = std::filesystem::weakly_canonical(path, ec).string();
         if (auto it = mesh_by_file_.find(key); it != mesh_by_file_.end()) return it->second;
+        std::string extension = path.extension().string();
+        for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+        const bool ply = extension == ".ply";
         ObjOutline outline;
         try {
-            scene_.meshes.push_back(load_obj(path, &outline));
+            scene_.meshes.push_back(ply ? load_ply(path) : load_obj(path, &outline));
         } catch (const InputError& e) {
             file_node.fail(e.what());
         }
         const auto index = static_cast<std::uint32_t>(scene_.meshes.size() - 1);
         mesh_by_file_.emplace(key, index);
-        obj_materials_.add_mesh(index, path, std::move(outline));
+        if (ply) ply_meshes_.insert(index);
+        else obj_materials_.add_mesh(index, path, std::move(outline));
         return index;
     }
 
@@ -335,7 +343,13 @@ private:
         }
 
         const auto object_index = static_cast<std::uint32_t>(scene_.objects.size());
-        if (auto own = obj_materials_.from_obj(node, object.shape, object_index, scene_)) {
+        // A PLY carries no materials: its objects name one.
+        const auto* instance = std::get_if<MeshInstance>(&object.shape);
+        const bool ply = instance && ply_meshes_.count(instance->mesh) > 0;
+        if (ply) {
+            if (auto ms = node.find("materials")) ms->fail("a PLY mesh has no materials of its own: give the object a \"material\"");
+        }
+        if (auto own = ply ? std::nullopt : obj_materials_.from_obj(node, object.shape, object_index, scene_)) {
             object.material = *own;
         } else {
             const Node material = node.at("material");
@@ -356,6 +370,7 @@ private:
     Scene& scene_;
     std::map<std::string, std::uint32_t> materials_;
     std::map<std::string, std::uint32_t> mesh_by_file_;
+    std::set<std::uint32_t> ply_meshes_;
     ObjMaterials obj_materials_;
 };
 
