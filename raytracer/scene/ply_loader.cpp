@@ -376,6 +376,7 @@ void read_faces(DataReader& r, const Element& e, PlyData& d, const std::string& 
 }
 
 void skip_element(DataReader& r, const Element& e) {
+    if (e.properties.empty()) return;  // records of nothing: any count takes no bytes (nor time)
     for (std::uint64_t i = 0; i < e.count; ++i)
         for (const Property& p : e.properties) {
             if (!p.list) {
