@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "raytracer/render/microfacet.hpp"
+#include "raytracer/render/bsdf_ggx_reflection.hpp"
 
 namespace sweeptrace {
 
@@ -17,7 +17,7 @@ ShadingContext make_shading_context(const SurfaceHit& hit, const glm::vec3& wo) 
 
 bool is_delta(const Material& m) {
     return m.type == Material::Type::Dielectric || m.type == Material::Type::ThinDielectric ||
-           (m.type == Material::Type::Metal && m.roughness == 0.0f) ||
+           ((m.type == Material::Type::Metal || m.type == Material::Type::Conductor) && m.roughness == 0.0f) ||
            (m.type == Material::Type::RoughDielectric && rough_dielectric_is_smooth(m));
 }
 
@@ -41,12 +41,7 @@ glm::vec3 schlick(const glm::vec3& f0, float cos_d) {
     return f0 + (glm::vec3(1.0f) - f0) * (m2 * m2 * m);
 }
 
-float metal_alpha(const Material& m) { return std::max(m.roughness * m.roughness, kMinMetalAlpha); }
-
-// Reflection must stay on wo's side of both the shading and the geometric normal.
-bool valid_reflection(const ShadingContext& ctx, const glm::vec3& wi_local, const glm::vec3& wi) {
-    return ctx.wo_local.z > 0.0f && wi_local.z > 0.0f && glm::dot(wi, ctx.ng) > 0.0f;
-}
+using ggx_reflection::valid;
 
 bool sample_smooth_dielectric(const Material& m, const ShadingContext& ctx, float u0, BsdfSample& out) {
     const glm::vec3& wo = ctx.wo_local;
@@ -76,26 +71,15 @@ BsdfEval eval_bsdf(const Material& m, const ShadingContext& ctx, const glm::vec3
     switch (m.type) {
         case Material::Type::Diffuse: {
             const glm::vec3 wl = ctx.frame.to_local(wi);
-            if (!valid_reflection(ctx, wl, wi)) return e;
+            if (!valid(ctx, wl, wi)) return e;
             e.f_cos = m.albedo * (kInvPi * wl.z);
             e.pdf = kInvPi * wl.z;
             return e;
         }
-        case Material::Type::Metal: {
-            if (m.roughness == 0.0f) return e;
-            const glm::vec3 wl = ctx.frame.to_local(wi);
-            if (!valid_reflection(ctx, wl, wi)) return e;
-            const glm::vec3& wo = ctx.wo_local;
-            const float alpha = metal_alpha(m);
-            const glm::vec3 h = glm::normalize(wo + wl);
-            const float d = ggx_d(h, alpha);
-            const float lo = ggx_lambda(wo, alpha), li = ggx_lambda(wl, alpha);
-            const float g2 = 1.0f / (1.0f + lo + li);
-            const float g1 = 1.0f / (1.0f + lo);
-            e.f_cos = schlick(m.albedo, glm::dot(wl, h)) * (d * g2 / (4.0f * wo.z));
-            e.pdf = d * g1 / (4.0f * wo.z);
-            return e;
-        }
+        case Material::Type::Metal:
+            return ggx_reflection::eval(m, ctx, wi, [&](float cos_d) { return schlick(m.albedo, cos_d); });
+        case Material::Type::Conductor:
+            return eval_conductor(m, ctx, wi);
         case Material::Type::RoughDielectric:
             return rough_dielectric_is_smooth(m) ? e : eval_rough_dielectric(m, ctx, wi);
         case Material::Type::CoatedDiffuse:
@@ -109,36 +93,18 @@ BsdfEval eval_bsdf(const Material& m, const ShadingContext& ctx, const glm::vec3
 }
 
 bool sample_bsdf(const Material& m, const ShadingContext& ctx, float u0, float u1, float u2, BsdfSample& out) {
-    const glm::vec3& wo = ctx.wo_local;
     switch (m.type) {
         case Material::Type::Diffuse: {
             const glm::vec3 wl = cosine_hemisphere(u1, u2);
             const glm::vec3 wi = ctx.frame.to_world(wl);
-            if (!valid_reflection(ctx, wl, wi)) return false;
+            if (!valid(ctx, wl, wi)) return false;
             out = BsdfSample{wi, m.albedo, kInvPi * wl.z, false};
             return out.pdf > 0.0f;
         }
-        case Material::Type::Metal: {
-            if (wo.z <= 0.0f) return false;
-            if (m.roughness == 0.0f) {
-                const glm::vec3 wl(-wo.x, -wo.y, wo.z);
-                const glm::vec3 wi = ctx.frame.to_world(wl);
-                if (!valid_reflection(ctx, wl, wi)) return false;
-                out = BsdfSample{wi, schlick(m.albedo, wo.z), 1.0f, true};
-                return true;
-            }
-            const float alpha = metal_alpha(m);
-            const glm::vec3 h = sample_ggx_vndf(wo, alpha, u1, u2);
-            const float wo_h = glm::dot(wo, h);
-            const glm::vec3 wl = 2.0f * wo_h * h - wo;
-            const glm::vec3 wi = ctx.frame.to_world(wl);
-            if (!valid_reflection(ctx, wl, wi)) return false;
-            const float lo = ggx_lambda(wo, alpha), li = ggx_lambda(wl, alpha);
-            // f cos / pdf = F G2 / G1(wo): D and the Jacobian cancel.
-            const float g_ratio = (1.0f + lo) / (1.0f + lo + li);
-            out = BsdfSample{wi, schlick(m.albedo, wo_h) * g_ratio, ggx_d(h, alpha) / (4.0f * wo.z * (1.0f + lo)), false};
-            return out.pdf > 0.0f;
-        }
+        case Material::Type::Metal:
+            return ggx_reflection::sample(m, ctx, u1, u2, out, [&](float cos_d) { return schlick(m.albedo, cos_d); });
+        case Material::Type::Conductor:
+            return sample_conductor(m, ctx, u1, u2, out);
         case Material::Type::Dielectric:
             return sample_smooth_dielectric(m, ctx, u0, out);
         case Material::Type::ThinDielectric:

@@ -1,7 +1,9 @@
 #include "raytracer/scene/load_scene.hpp"
 
+#include <cctype>
 #include <initializer_list>
 #include <map>
+#include <set>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -19,8 +21,10 @@
 #include "raytracer/scene/load_filter.hpp"
 #include "raytracer/scene/load_lights.hpp"
 #include "raytracer/scene/load_texture.hpp"
+#include "raytracer/scene/named_metals.hpp"
 #include "raytracer/scene/obj_materials.hpp"
 #include "raytracer/scene/obj_loader.hpp"
+#include "raytracer/scene/ply_loader.hpp"
 #include "raytracer/scene/scene_extent.hpp"
 #include "raytracer/scene/scene_transform.hpp"
 #include "raytracer/scene/text_file.hpp"
@@ -109,6 +113,40 @@ glm::vec3 read_albedo(const Node& node) {
     return v;
 }
 
+// A conductor's eta (> 0) or k (>= 0): one number for all three channels, or [r, g, b].
+glm::vec3 read_conductor_channel(const Node& node, bool is_eta) {
+    if (node.value().is_number()) return glm::vec3(is_eta ? node.number_at_least(0.0f, false) : node.number_at_least(0.0f, true));
+    const glm::vec3 v = node.vec3();
+    for (int i = 0; i < 3; ++i) {
+        const Node c = node.element(static_cast<std::size_t>(i));
+        if (is_eta) c.number_at_least(0.0f, false);
+        else c.number_at_least(0.0f, true);
+    }
+    return v;
+}
+
+// {"metal": "<name>"} or {"eta": ..., "k": ...}, exactly one of the two forms.
+void read_conductor(const Node& node, Material& m) {
+    const auto metal = node.find("metal");
+    const bool eta = node.has("eta"), k = node.has("k");
+    if (metal && (eta || k)) node.fail("give either \"metal\" or \"eta\" and \"k\", not both");
+    if (metal) {
+        const std::string name = metal->string();
+        const auto found = find_named_metal(name);
+        if (!found) {
+            std::string known;
+            for (const NamedMetal& n : named_metals()) known += (known.empty() ? "" : ", ") + std::string(n.name);
+            metal->fail("unknown metal \"" + name + "\" (known: " + known + "; or give \"eta\" and \"k\")");
+        }
+        m.eta = found->eta;
+        m.k = found->k;
+        return;
+    }
+    if (!eta && !k) node.fail("a conductor needs \"metal\" (a named metal) or \"eta\" and \"k\" (its complex index of refraction)");
+    m.eta = read_conductor_channel(node.at("eta"), true);
+    m.k = read_conductor_channel(node.at("k"), false);
+}
+
 Material read_material(const Node& node, const std::string& name, std::vector<Texture>& textures) {
     if (!node.value().is_object()) node.fail("must be an object with a \"type\"");
     const Node type_node = node.at("type");
@@ -133,6 +171,12 @@ Material read_material(const Node& node, const std::string& name, std::vector<Te
     } else if (type == "metal") {
         require_surface_keys({"roughness"});
         m.type = Material::Type::Metal;
+        if (auto r = node.find("roughness")) read_roughness(*r);
+    } else if (type == "conductor") {
+        require_surface_keys({"roughness", "metal", "eta", "k"});
+        m.type = Material::Type::Conductor;
+        m.albedo = glm::vec3(1.0f);  // untinted unless given
+        read_conductor(node, m);
         if (auto r = node.find("roughness")) read_roughness(*r);
     } else if (type == "dielectric") {
         require_surface_keys({"ior"});
@@ -160,7 +204,7 @@ Material read_material(const Node& node, const std::string& name, std::vector<Te
         m.type = Material::Type::Emissive;
         m.albedo = glm::vec3(0.0f);  // a light absorbs what reaches it
     } else {
-        type_node.fail("unknown material type \"" + type + "\" (known: diffuse, metal, dielectric, thin_dielectric, rough_dielectric, coated_diffuse, emissive)");
+        type_node.fail("unknown material type \"" + type + "\" (known: diffuse, metal, conductor, dielectric, thin_dielectric, rough_dielectric, coated_diffuse, emissive)");
     }
     if (auto albedo = node.find("albedo")) {
         if (albedo->value().is_object()) {
@@ -247,26 +291,31 @@ public:
         for (std::size_t i = 0; i < n; ++i) scene_.objects.push_back(read(objects.element(i)));
     }
 
-    // The scene's index of the mesh in the OBJ file `file_node` names, loading it the first time
-    // (the mesh shape's home calls this to read its "file" key).
+    // The scene's index of the mesh in the OBJ or PLY file `file_node` names (by its extension,
+    // .ply in any case is PLY, anything else OBJ), loading it the first time (the mesh shape's
+    // home calls this to read its "file" key).
     std::uint32_t mesh_index(const Node& file_node) {
         const std::string relative = file_node.string();
-        if (relative.empty()) file_node.fail("must name an OBJ file");
+        if (relative.empty()) file_node.fail("must name an OBJ or PLY file");
         const std::filesystem::path path = scene_.source.parent_path() / relative;
         std::error_code ec;
         if (!std::filesystem::is_regular_file(path, ec))
             file_node.fail("mesh file \"" + relative + "\" not found (looked for " + path.string() + ")");
         const std::string key = std::filesystem::weakly_canonical(path, ec).string();
         if (auto it = mesh_by_file_.find(key); it != mesh_by_file_.end()) return it->second;
+        std::string extension = path.extension().string();
+        for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+        const bool ply = extension == ".ply";
         ObjOutline outline;
         try {
-            scene_.meshes.push_back(load_obj(path, &outline));
+            scene_.meshes.push_back(ply ? load_ply(path) : load_obj(path, &outline));
         } catch (const InputError& e) {
             file_node.fail(e.what());
         }
         const auto index = static_cast<std::uint32_t>(scene_.meshes.size() - 1);
         mesh_by_file_.emplace(key, index);
-        obj_materials_.add_mesh(index, path, std::move(outline));
+        if (ply) ply_meshes_.insert(index);
+        else obj_materials_.add_mesh(index, path, std::move(outline));
         return index;
     }
 
@@ -296,7 +345,13 @@ private:
         }
 
         const auto object_index = static_cast<std::uint32_t>(scene_.objects.size());
-        if (auto own = obj_materials_.from_obj(node, object.shape, object_index, scene_)) {
+        // A PLY carries no materials: its objects name one.
+        const auto* instance = std::get_if<MeshInstance>(&object.shape);
+        const bool ply = instance && ply_meshes_.count(instance->mesh) > 0;
+        if (ply) {
+            if (auto ms = node.find("materials")) ms->fail("a PLY mesh has no materials of its own: give the object a \"material\"");
+        }
+        if (auto own = ply ? std::nullopt : obj_materials_.from_obj(node, object.shape, object_index, scene_)) {
             object.material = *own;
         } else {
             const Node material = node.at("material");
@@ -317,6 +372,7 @@ private:
     Scene& scene_;
     std::map<std::string, std::uint32_t> materials_;
     std::map<std::string, std::uint32_t> mesh_by_file_;
+    std::set<std::uint32_t> ply_meshes_;
     ObjMaterials obj_materials_;
 };
 

@@ -91,15 +91,20 @@ struct Texture {
 };
 
 struct Material {
-    enum class Type { Diffuse, Metal, Dielectric, Emissive, ThinDielectric, RoughDielectric, CoatedDiffuse };
+    enum class Type { Diffuse, Metal, Dielectric, Emissive, ThinDielectric, RoughDielectric, CoatedDiffuse, Conductor };
     // RoughDielectric reads roughness, ior and albedo (the transmission tint) like Metal and
     // Dielectric; CoatedDiffuse reads albedo (the base under the coating), ior and roughness (the
-    // coating's; 0 = a smooth coat).
+    // coating's; 0 = a smooth coat); Conductor reads eta, k, roughness (as Metal's) and albedo (a
+    // tint, 1 by default).
     Type type = Type::Diffuse;
     glm::vec3 albedo{0.8f};    // Diffuse reflectance / Metal tint / (Thin)Dielectric transmission tint
     int albedo_texture = -1;   // index into Scene::textures replacing `albedo` at each hit, or -1
     float roughness = 0.0f;    // Metal: 0 = perfect mirror
     float ior = 1.5f;          // Dielectric, ThinDielectric
+    // Conductor: the complex index of refraction eta + i k per RGB channel, relative to the
+    // outside (scene/named_metals.hpp holds the named metals'); albedo tints its Fresnel term.
+    glm::vec3 eta{1.0f};
+    glm::vec3 k{0.0f};
     glm::vec3 emission{0.0f};  // radiance leaving the front side; any material may emit
     // Emit from the back side too (e.g. the inside of a closed emissive sphere). The front is the
     // side the outward geometric normal points to: outside of closed shapes, edge_u x edge_v for

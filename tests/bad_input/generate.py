@@ -192,7 +192,7 @@ case("scene-fifo", 2, E + r"pipe\.json: cannot read scene: not a regular file", 
 case("scene-over-size-limit", 2, E + r"big\.json: cannot read scene: it is 17 MiB, over the limit of 16 MiB",
      "render big.json -o out.png --quiet", {}, "sparse big.json 17825792")
 render_case("mesh-file-missing", E + r"scene\.json: objects\[0\]\.file: mesh file \"nothere\.obj\" not found", mesh_scene("nothere.obj"))
-render_case("mesh-file-empty-name", E + r"scene\.json: objects\[0\]\.file: must name an OBJ file", mesh_scene(""))
+render_case("mesh-file-empty-name", E + r"scene\.json: objects\[0\]\.file: must name an OBJ or PLY file", mesh_scene(""))
 render_case("mesh-file-directory", E + r"scene\.json: objects\[0\]\.file: mesh file \"sub\" not found", mesh_scene("sub"),
             extra={"sub/keep": ""})
 case("mesh-over-size-limit", 2, E + r"scene\.json: objects\[0\]\.file: .*big\.obj: cannot read mesh: it is 513 MiB, over the limit of 512 MiB",
@@ -234,6 +234,43 @@ obj_case("obj-no-faces", E + M + r"contains no faces", "v 0 0 0\nv 1 0 0\nv 0 1 
 obj_case("obj-empty", E + M + r"contains no faces", "")
 obj_case("obj-binary-garbage", E + M + r"line \d+: ", bytes(range(1, 256)) * 4 + b"\nf 1 2\n")
 obj_case("obj-face-words", E + M + r"invalid OBJ", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf a b c\n")
+
+# --- PLY meshes and conductors (issue 26) -------------------------------------------------------
+P = r"scene\.json: objects\[0\]\.file: .*mesh\.ply: "
+PLY_HEAD = ("ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
+            "element face 1\nproperty list uchar int vertex_indices\nend_header\n")
+PLY_TRI = "0 0 0\n1 0 0\n0 1 0\n"
+
+
+def ply_case(name, pattern, ply):
+    render_case(name, pattern, mesh_scene("mesh.ply"), extra={"mesh.ply": ply})
+
+
+ply_case("ply-not-ply", E + P + r"header line 1: not a PLY file", "PLY\n" + PLY_HEAD[4:] + PLY_TRI + "3 0 1 2\n")
+ply_case("ply-index-out-of-range", E + P + r"line 13: face 0 names vertex 3, the file has 3", PLY_HEAD + PLY_TRI + "3 0 1 3\n")
+ply_case("ply-two-corners", E + P + r"line 13: face 0 has 2 corners", PLY_HEAD + PLY_TRI + "2 0 1\n")
+ply_case("ply-vertex-nan", E + P + r"line 11: vertex 1's x is not finite", PLY_HEAD + "0 0 0\nnan 0 0\n0 1 0\n3 0 1 2\n")
+ply_case("ply-truncated-ascii", E + P + r"line 13: the data ends early", PLY_HEAD + PLY_TRI + "3 0 1")
+ply_case("ply-binary-truncated", E + P + r"byte \d+: the data ends early",
+         PLY_HEAD.replace("ascii", "binary_little_endian").encode() + struct.pack("<9f", 0, 0, 0, 1, 0, 0, 0, 1, 0) + b"\x03\x00\x00")
+ply_case("ply-huge-count", E + P + r"header line 3: element \"vertex\" declares 4000000000 records",
+         PLY_HEAD.replace("vertex 3", "vertex 4000000000").replace("ascii", "binary_big_endian"))
+ply_case("ply-unknown-format", E + P + r"header line 2: unknown format", PLY_HEAD.replace("ascii", "utf8") + PLY_TRI)
+ply_case("ply-no-faces", E + P + r"contains no faces", PLY_HEAD.replace("face 1", "face 0") + PLY_TRI)
+render_case("ply-materials-from-obj", E + r"scene\.json: objects\[0\]\.materials: a PLY mesh has no materials",
+            mesh_scene("mesh.ply", materials="from_obj").replace(', "material": "m"', ""),
+            extra={"mesh.ply": PLY_HEAD + PLY_TRI + "3 0 1 2\n"})
+C = r"scene\.json: materials\.m"
+render_case("conductor-eta-negative", E + C + r"\.eta\[1\]: ", scene(materials__m={"type": "conductor", "eta": [0.2, -1, 1], "k": 3}))
+render_case("conductor-eta-zero", E + C + r"\.eta: ", scene(materials__m={"type": "conductor", "eta": 0, "k": 3}))
+render_case("conductor-k-negative", E + C + r"\.k: ", scene(materials__m={"type": "conductor", "eta": 1, "k": -0.5}))
+render_case("conductor-unknown-metal", E + C + r"\.metal: unknown metal \"Gold\" \(known: Ag, Al, Au, Cu, MgO, TiO2",
+            scene(materials__m={"type": "conductor", "metal": "Gold"}))
+render_case("conductor-metal-and-eta", E + C + r": give either \"metal\" or \"eta\" and \"k\", not both",
+            scene(materials__m={"type": "conductor", "metal": "Au", "eta": 1, "k": 2}))
+render_case("conductor-nothing", E + C + r": a conductor needs \"metal\"", scene(materials__m={"type": "conductor"}))
+render_case("conductor-eta-without-k", E + C + r"\.k: missing", scene(materials__m={"type": "conductor", "eta": 1.5}))
+render_case("conductor-roughness-2", E + C + r"\.roughness: ", scene(materials__m={"type": "conductor", "metal": "Cu", "roughness": 2}))
 
 render_case("material-bump-checker", E + r"scene\.json: materials\.m\.bump_map\.checker: a bump map must be an image",
             scene(materials__m={"type": "diffuse", "bump_map": {"checker": {"a": [0, 0, 0], "b": [1, 1, 1]}}}))

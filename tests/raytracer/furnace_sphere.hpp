@@ -34,16 +34,16 @@ struct BlockMean {
     double mean = 0.0, standard_error = 0.0;
 };
 
-// The 9 blocks of the central 12 x 12 pixels (all on the sphere), green channel.
-inline std::vector<BlockMean> sphere_blocks(const RenderResult& r) {
+// The 9 blocks of the central 12 x 12 pixels (all on the sphere), of one channel (green unless told).
+inline std::vector<BlockMean> sphere_blocks(const RenderResult& r, int channel = 1) {
     std::vector<BlockMean> blocks;
     for (int by = 10; by < 22; by += 4)
         for (int bx = 10; bx < 22; bx += 4) {
             double sum = 0.0, var = 0.0;
             for (int y = by; y < by + 4; ++y)
                 for (int x = bx; x < bx + 4; ++x) {
-                    sum += r.image.at(x, y).g;
-                    var += r.variance.at(x, y).g;
+                    sum += r.image.at(x, y)[channel];
+                    var += r.variance.at(x, y)[channel];
                 }
             blocks.push_back({sum / 16.0, std::sqrt(var) / 16.0});
         }

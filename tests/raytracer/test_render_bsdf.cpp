@@ -114,6 +114,22 @@ TEST_CASE("bsdf: rough metal (GGX, VNDF sampling) is self-consistent at several 
         }
 }
 
+TEST_CASE("bsdf: rough conductor (GGX, complex-IOR Fresnel) is self-consistent at several roughnesses and angles", "[render][bsdf][conductor]") {
+    const glm::vec3 n = glm::normalize(glm::vec3(0.2f, -0.3f, 1.0f));
+    Material m;
+    m.type = Material::Type::Conductor;
+    m.albedo = {1.0f, 0.8f, 0.6f};
+    m.eta = {0.2152f, 0.9697f, 1.2222f};  // copper (scene/named_metals.cpp)
+    m.k = {3.3762f, 2.6244f, 2.3544f};
+    std::uint64_t seed = 40;
+    for (float roughness : {0.3f, 0.6f, 1.0f})
+        for (float theta : {0.1f, 0.8f, 1.3f}) {
+            const Frame f(n);
+            m.roughness = roughness;
+            check_consistency(m, n, f.to_world(dir_at(theta, 2.0f)), ++seed);
+        }
+}
+
 TEST_CASE("bsdf: rough metal's directional albedo is at most F and near it when smooth-ish", "[render][bsdf]") {
     // Single-scattering GGX loses energy only through masking: at normal incidence and low
     // roughness the reflected energy is close to F0 = albedo; it never exceeds it (Schlick's F

@@ -1,0 +1,67 @@
+#pragma once
+// GGX microfacet reflection, the lobe the metal (Schlick Fresnel, render/bsdf.cpp) and the
+// conductor (complex-IOR Fresnel, render/bsdf_conductor.cpp) share: only the Fresnel term differs,
+// so the distribution, masking, sampling and density live here once. bsdf.hpp states the model
+// (height-correlated Smith G2, visible-normal sampling, alpha = roughness^2 clamped at
+// kMinMetalAlpha; roughness 0 a perfect mirror, a delta lobe). `fresnel(cos_d)` returns the RGB
+// reflectance at the angle between the light and the microfacet normal.
+#include <algorithm>
+
+#include <glm/geometric.hpp>
+#include <glm/vec3.hpp>
+
+#include "raytracer/render/bsdf.hpp"
+#include "raytracer/render/microfacet.hpp"
+
+namespace sweeptrace::ggx_reflection {
+
+inline float alpha(const Material& m) { return std::max(m.roughness * m.roughness, kMinMetalAlpha); }
+
+// Reflection must stay on wo's side of both the shading and the geometric normal.
+inline bool valid(const ShadingContext& ctx, const glm::vec3& wi_local, const glm::vec3& wi) {
+    return ctx.wo_local.z > 0.0f && wi_local.z > 0.0f && glm::dot(wi, ctx.ng) > 0.0f;
+}
+
+template <class Fresnel>
+BsdfEval eval(const Material& m, const ShadingContext& ctx, const glm::vec3& wi, Fresnel fresnel) {
+    BsdfEval e;
+    if (m.roughness == 0.0f) return e;
+    const glm::vec3 wl = ctx.frame.to_local(wi);
+    if (!valid(ctx, wl, wi)) return e;
+    const glm::vec3& wo = ctx.wo_local;
+    const float a = alpha(m);
+    const glm::vec3 h = glm::normalize(wo + wl);
+    const float d = ggx_d(h, a);
+    const float lo = ggx_lambda(wo, a), li = ggx_lambda(wl, a);
+    const float g2 = 1.0f / (1.0f + lo + li);
+    const float g1 = 1.0f / (1.0f + lo);
+    e.f_cos = fresnel(glm::dot(wl, h)) * (d * g2 / (4.0f * wo.z));
+    e.pdf = d * g1 / (4.0f * wo.z);
+    return e;
+}
+
+template <class Fresnel>
+bool sample(const Material& m, const ShadingContext& ctx, float u1, float u2, BsdfSample& out, Fresnel fresnel) {
+    const glm::vec3& wo = ctx.wo_local;
+    if (wo.z <= 0.0f) return false;
+    if (m.roughness == 0.0f) {
+        const glm::vec3 wl(-wo.x, -wo.y, wo.z);
+        const glm::vec3 wi = ctx.frame.to_world(wl);
+        if (!valid(ctx, wl, wi)) return false;
+        out = BsdfSample{wi, fresnel(wo.z), 1.0f, true};
+        return true;
+    }
+    const float a = alpha(m);
+    const glm::vec3 h = sample_ggx_vndf(wo, a, u1, u2);
+    const float wo_h = glm::dot(wo, h);
+    const glm::vec3 wl = 2.0f * wo_h * h - wo;
+    const glm::vec3 wi = ctx.frame.to_world(wl);
+    if (!valid(ctx, wl, wi)) return false;
+    const float lo = ggx_lambda(wo, a), li = ggx_lambda(wl, a);
+    // f cos / pdf = F G2 / G1(wo): D and the Jacobian cancel.
+    const float g_ratio = (1.0f + lo) / (1.0f + lo + li);
+    out = BsdfSample{wi, fresnel(wo_h) * g_ratio, ggx_d(h, a) / (4.0f * wo.z * (1.0f + lo)), false};
+    return out.pdf > 0.0f;
+}
+
+}  // namespace sweeptrace::ggx_reflection
