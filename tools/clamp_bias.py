@@ -7,8 +7,9 @@ Same seed and spp means both renders draw the same sample numbers for every path
 difference is exactly the energy the clamp removed, sample by sample (not the noise of two
 independent renders): its mean estimates the bias with far less noise than either image has.
 
-Usage: /usr/bin/python3 tools/clamp_bias.py [--build build] [--scene scenes/default.json]
+Usage: /usr/bin/python3 tools/clamp_bias.py [--build build] [--scene scenes/default.json ...]
            [--size 320x180] [--spp 1024] [--markdown docs/fireflies.md]
+(--scene may be repeated; the Markdown file gets one list per scene)
 """
 import argparse
 import json
@@ -40,29 +41,20 @@ def luminance(img):
     return img @ np.array([0.2126, 0.7152, 0.0722])
 
 
-def main():
-    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    ap.add_argument("--build", default="build")
-    ap.add_argument("--scene", default="scenes/default.json")
-    ap.add_argument("--size", default="320x180")
-    ap.add_argument("--spp", type=int, default=1024)
-    ap.add_argument("--block", type=int, default=16)
-    ap.add_argument("--markdown")
-    args = ap.parse_args()
-    binary = os.path.join(args.build, "sweeptrace")
-    with open(args.scene) as f:
+def measure(binary, scene_path, args):
+    with open(scene_path) as f:
         scene = json.load(f)
     limit = scene.get("film", {}).get("clamp_indirect")
     if not limit:
-        sys.exit(f"clamp_bias: {args.scene} sets no film.clamp_indirect")
+        sys.exit(f"clamp_bias: {scene_path} sets no film.clamp_indirect")
     with tempfile.TemporaryDirectory() as tmp:
         off = dict(scene)
         off["film"] = {k: v for k, v in scene["film"].items() if k != "clamp_indirect"}
-        off_path = os.path.join(os.path.dirname(os.path.abspath(args.scene)), f".clamp-off-{os.getpid()}.json")
+        off_path = os.path.join(os.path.dirname(os.path.abspath(scene_path)), f".clamp-off-{os.getpid()}.json")
         with open(off_path, "w") as f:
             json.dump(off, f)
         try:
-            render(binary, args.scene, args.size, args.spp, os.path.join(tmp, "on.pfm"))
+            render(binary, scene_path, args.size, args.spp, os.path.join(tmp, "on.pfm"))
             render(binary, off_path, args.size, args.spp, os.path.join(tmp, "off.pfm"))
         finally:
             os.remove(off_path)
@@ -77,14 +69,30 @@ def main():
     rel = blocks_removed / np.maximum(blocks_full, 1e-12)
     worst = np.unravel_index(np.argmax(rel), rel.shape)
     lines = [
-        f"scene {args.scene}, film.clamp_indirect {limit}, {args.size}, {args.spp} spp, same seed with and without",
+        f"scene {scene_path}, film.clamp_indirect {limit}, {args.size}, {args.spp} spp, same seed with and without",
         f"image-mean luminance removed by the clamp: {100 * mean_bias:.3f}%",
         f"median {b}x{b} block: {100 * np.median(rel):.3f}%, 95th percentile: {100 * np.percentile(rel, 95):.3f}%, "
         f"worst block: {100 * rel[worst]:.2f}% (block row {worst[0]}, column {worst[1]}, pixels from "
         f"({worst[1] * b}, {worst[0] * b}))",
         f"pixels changed at all: {100 * np.mean(removed > 0):.2f}%",
     ]
-    print("\n".join(lines))
+    return lines
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--build", default="build")
+    ap.add_argument("--scene", action="append")
+    ap.add_argument("--size", default="320x180")
+    ap.add_argument("--spp", type=int, default=1024)
+    ap.add_argument("--block", type=int, default=16)
+    ap.add_argument("--markdown")
+    args = ap.parse_args()
+    binary = os.path.join(args.build, "sweeptrace")
+    scenes = args.scene or ["scenes/default.json"]
+    results = [(scene, measure(binary, scene, args)) for scene in scenes]
+    for _, lines in results:
+        print("\n".join(lines))
     if args.markdown:
         with open(args.markdown, "w") as f:
             f.write("# What `film.clamp_indirect` costs in bias\n\n")
@@ -94,10 +102,12 @@ def main():
                     "(raytracer/render/radiance_clamp.hpp). Both renders use\n"
                     "the same seed and spp, so they draw the same numbers for every path and their difference is\n"
                     "the energy the clamp removed (luminance, linear radiance):\n\n")
-            f.write("".join(f"- {l}\n" for l in lines))
-            f.write("\nWhere the worst block is, read it on the picture: on scenes/default.json at 320x180 it\n"
-                    "lies inside the glass sphere's image (the ground behind and under it, seen through the glass,\n"
-                    "which the bulb's light reaches through glass: caustics, the very paths that made the fireflies).\n")
+            for _, lines in results:
+                f.write("".join(f"- {l}\n" for l in lines) + "\n")
+            f.write("Where the worst blocks are, read on the pictures at 320x180: on scenes/default.json inside\n"
+                    "the glass sphere's image (the ground behind and under it, seen through the glass, which the\n"
+                    "bulb's light reaches through glass: caustics, the very paths that made the fireflies); on\n"
+                    "scenes/showcase.json inside the sea-glass cube (the sun's light through rough glass).\n")
     return 0
 
 
