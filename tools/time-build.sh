@@ -10,9 +10,14 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 dir=${1:-build-time}
 shift || true
+if [ -e "$dir" ] && [ ! -f "$dir/CMakeCache.txt" ] && [ -n "$(ls -A "$dir")" ]; then
+  echo "time-build.sh: $dir exists and is not a build tree; not removing it" >&2
+  exit 2
+fi
 rm -rf "$dir"
 mkdir -p "$dir"
-export SWEEPTRACE_TIME_LOG=$PWD/$dir/time-tu.log
+dir=$(cd "$dir" && pwd)
+export SWEEPTRACE_TIME_LOG=$dir/time-tu.log
 : > "$SWEEPTRACE_TIME_LOG"
 launcher=$PWD/tools/cmake/time-command.sh
 /usr/bin/time -o "$dir/time-configure.txt" -f "%e %U %S" \
