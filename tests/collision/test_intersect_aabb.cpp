@@ -9,6 +9,7 @@
 
 #include "collision/float_error.hpp"
 #include "collision/intersect.hpp"
+#include "float_specials.hpp"
 #include "reference_check.hpp"
 #include "reference_intersect.hpp"
 #include "reference_sampling.hpp"
@@ -22,8 +23,6 @@ using reference::vec3l;
 using reference::widen;
 
 namespace {
-constexpr float k_inf = std::numeric_limits<float>::infinity();
-constexpr float k_nan = std::numeric_limits<float>::quiet_NaN();
 const Aabb cube{{0.0f, 0.0f, 0.0f}, {2.0f, 2.0f, 2.0f}};
 }  // namespace
 

@@ -10,6 +10,7 @@
 #include "collision/float_error.hpp"
 #include "collision/intersect.hpp"
 #include "collision/surface_uv.hpp"
+#include "float_specials.hpp"
 #include "reference_check.hpp"
 #include "reference_intersect.hpp"
 #include "reference_sampling.hpp"
@@ -24,8 +25,6 @@ using reference::vec3l;
 using reference::widen;
 
 namespace {
-constexpr float k_inf = std::numeric_limits<float>::infinity();
-constexpr float k_nan = std::numeric_limits<float>::quiet_NaN();
 const Capsule bean{{0.0f, 0.0f, 0.0f}, 1.0f, 2.0f};  // axis y in [-1, 1], total extent [-2, 2]
 }  // namespace
 

@@ -12,6 +12,7 @@
 #include "collision/intersect.hpp"
 #include "collision/surface_uv.hpp"
 #include "collision/triangle_watertight.hpp"
+#include "float_specials.hpp"
 #include "reference_check.hpp"
 #include "reference_intersect.hpp"
 #include "reference_sampling.hpp"
@@ -27,8 +28,6 @@ using reference::vec3l;
 using reference::widen;
 
 namespace {
-constexpr float k_inf = std::numeric_limits<float>::infinity();
-constexpr float k_nan = std::numeric_limits<float>::quiet_NaN();
 const Plane ground{{0.0f, 1.0f, 0.0f}, {0.0f, 1.0f, 0.0f}};
 const Disk lid{{0.0f, 1.0f, 0.0f}, {0.0f, 1.0f, 0.0f}, 2.0f};
 const Quad wall{{0.0f, 0.0f, 0.0f}, {2.0f, 0.0f, 0.0f}, {0.0f, 1.0f, 0.0f}};  // normal +z

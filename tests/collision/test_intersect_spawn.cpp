@@ -85,7 +85,7 @@ void spawn_from(const Ray& primary, const Shape& shape, float size, bool closed,
 }
 
 const auto robust = [](const Ray& r, const auto& s, RayHit& h) { return collision::intersect(r, s, h); };
-const auto thesis = [](const Ray& r, const auto& s, RayHit& h) { return collision::thesis::intersect(r, s, h); };
+const auto thesis_intersect = [](const Ray& r, const auto& s, RayHit& h) { return collision::thesis::intersect(r, s, h); };
 
 template <typename Make, typename Intersect>
 SpawnTally run_spawn(std::uint64_t seed, bool closed, Make make, Intersect intersect) {
@@ -173,8 +173,8 @@ TEST_CASE("spawned rays never re-hit the surface they leave (box and flat shapes
 
 TEST_CASE("thesis variants: spawned rays re-hit the surface they leave (no error bound to offset by)",
           "[intersect][spawn][thesis]") {
-    const SpawnTally sphere = run_spawn(0x5a3e0001, true, make_sphere, thesis);
-    const SpawnTally triangle = run_spawn(0x5a3e0006, false, make_triangle, thesis);
+    const SpawnTally sphere = run_spawn(0x5a3e0001, true, make_sphere, thesis_intersect);
+    const SpawnTally triangle = run_spawn(0x5a3e0006, false, make_triangle, thesis_intersect);
     INFO("sphere: " << sphere.outward_rehits << " outward re-hits, " << sphere.inward_wrong << " inward wrong of "
                     << sphere.primaries << "; triangle: " << triangle.outward_rehits << " re-hits of "
                     << triangle.primaries);

@@ -9,6 +9,7 @@
 #include "collision/float_error.hpp"
 #include "collision/intersect.hpp"
 #include "collision/surface_uv.hpp"
+#include "float_specials.hpp"
 #include "reference_check.hpp"
 #include "reference_intersect.hpp"
 #include "reference_sampling.hpp"
@@ -20,10 +21,6 @@ using collision::Sphere;
 using reference::Real;
 using reference::widen;
 
-namespace {
-constexpr float k_inf = std::numeric_limits<float>::infinity();
-constexpr float k_nan = std::numeric_limits<float>::quiet_NaN();
-}  // namespace
 
 TEST_CASE("sphere: hit from outside, miss, behind", "[intersect][sphere]") {
     const Sphere s{{0.0f, 0.0f, 0.0f}, 1.0f};

@@ -14,6 +14,7 @@
 #include "collision/intersect.hpp"
 #include "collision/mesh.hpp"
 #include "collision/triangle_watertight.hpp"
+#include "float_specials.hpp"
 #include "reference_check.hpp"
 #include "reference_intersect.hpp"
 #include "reference_mesh.hpp"
@@ -27,8 +28,6 @@ using reference::Real;
 using reference::widen;
 
 namespace {
-constexpr float k_inf = std::numeric_limits<float>::infinity();
-constexpr float k_nan = std::numeric_limits<float>::quiet_NaN();
 const Triangle unit_tri{{0.0f, 0.0f, 0.0f}, {1.0f, 0.0f, 0.0f}, {0.0f, 1.0f, 0.0f}};
 }  // namespace
 

@@ -9,12 +9,12 @@
 
 #include "collision/finite.hpp"
 #include "collision/overlap.hpp"
+#include "float_specials.hpp"
 #include "random_cases.hpp"
 
 using namespace collision;
 
 namespace {
-const float qnan = std::numeric_limits<float>::quiet_NaN();
 const float qinf = std::numeric_limits<float>::infinity();
 
 // After moving the first shape by its displacement (plus a hair, 1e-4 relative, so rounding of
@@ -58,8 +58,8 @@ TEST_CASE("sphere-sphere: hit, miss, tangent, inside, coincident, degenerate", "
     // Degenerate.
     CHECK_FALSE((overlap(Sphere{{0, 0, 0}, 0}, Sphere{{0, 0, 0}, 1}).hit));
     CHECK_FALSE((overlap(Sphere{{0, 0, 0}, -1}, Sphere{{0, 0, 0}, 1}).hit));
-    CHECK_FALSE((overlap(Sphere{{qnan, 0, 0}, 1}, Sphere{{0, 0, 0}, 1}).hit));
-    CHECK_FALSE((overlap(Sphere{{0, 0, 0}, qnan}, Sphere{{0, 0, 0}, 1}).hit));
+    CHECK_FALSE((overlap(Sphere{{k_nan, 0, 0}, 1}, Sphere{{0, 0, 0}, 1}).hit));
+    CHECK_FALSE((overlap(Sphere{{0, 0, 0}, k_nan}, Sphere{{0, 0, 0}, 1}).hit));
     CHECK_FALSE((overlap(Sphere{{qinf, 0, 0}, 1}, Sphere{{qinf, 0, 0}, 1}).hit));
 }
 
@@ -80,7 +80,7 @@ TEST_CASE("box-box: least-overlap axis, sign, tangent, inside, degenerate", "[ov
     // A flat box (zero size on y) is a valid closed set.
     CHECK((overlap(Aabb{{0, 0, 0}, {1, 0, 1}}, Aabb{{0, 0.5f, 0}, {1, 1, 1}}).hit));
     CHECK_FALSE((overlap(Aabb{{0, 0, 0}, {1, -1, 1}}, a).hit));
-    CHECK_FALSE((overlap(Aabb{{0, qnan, 0}, {1, 1, 1}}, a).hit));
+    CHECK_FALSE((overlap(Aabb{{0, k_nan, 0}, {1, 1, 1}}, a).hit));
     CHECK_FALSE((overlap(Aabb{{0, 0, 0}, {1, qinf, 1}}, a).hit));
 }
 
@@ -111,7 +111,7 @@ TEST_CASE("cylinder-cylinder: cap vs side resolution, coaxial, tangent, degenera
     CHECK((overlap(Cylinder{{0, 0, 0}, 1, 0}, a).hit));  // a disk is fine
     CHECK_FALSE((overlap(Cylinder{{0, 0, 0}, 0, 1}, a).hit));
     CHECK_FALSE((overlap(Cylinder{{0, 0, 0}, 1, -1}, a).hit));
-    CHECK_FALSE((overlap(Cylinder{{0, 0, 0}, 1, qnan}, a).hit));
+    CHECK_FALSE((overlap(Cylinder{{0, 0, 0}, 1, k_nan}, a).hit));
 }
 
 TEST_CASE("capsule-capsule: side, hemisphere, coaxial, tangent, degenerate", "[overlap][capsule]") {
@@ -136,7 +136,7 @@ TEST_CASE("capsule-capsule: side, hemisphere, coaxial, tangent, degenerate", "[o
     CHECK(c.displacement == glm::vec3(3, 0, 0));
     CHECK((overlap(Capsule{{0, 0, 0}, 1, 0}, a).hit));  // height 0 is a sphere
     CHECK_FALSE((overlap(Capsule{{0, 0, 0}, -1, 1}, a).hit));
-    CHECK_FALSE((overlap(Capsule{{qnan, 0, 0}, 1, 1}, a).hit));
+    CHECK_FALSE((overlap(Capsule{{k_nan, 0, 0}, 1, 1}, a).hit));
 }
 
 TEST_CASE("primitive pairs: the displacement separates and is minimal along itself (random)", "[overlap][random]") {

@@ -10,13 +10,13 @@
 
 #include "collision/finite.hpp"
 #include "collision/overlap.hpp"
+#include "float_specials.hpp"
 #include "random_cases.hpp"
 
 using namespace collision;
 
 namespace {
 using lvec = glm::tvec3<long double>;
-const float qnan = std::numeric_limits<float>::quiet_NaN();
 
 lvec L(const glm::vec3& v) { return lvec(v); }
 
@@ -94,7 +94,7 @@ TEST_CASE("sphere-triangle: face, edge, vertex, tangent, centre on triangle, deg
     CHECK(c.displacement == glm::vec3(0, 0, -0.25f));
     CHECK_FALSE((overlap(Sphere{{0, 0, 0}, 1}, Triangle{{0, 0, 0}, {1, 0, 0}, {2, 0, 0}}).hit));  // zero area
     CHECK_FALSE((overlap(Sphere{{0, 0, 0}, 0}, t).hit));
-    CHECK_FALSE((overlap(Sphere{{0, 0, 0}, 1}, Triangle{{qnan, 0, 0}, {1, 0, 0}, {0, 1, 0}}).hit));
+    CHECK_FALSE((overlap(Sphere{{0, 0, 0}, 1}, Triangle{{k_nan, 0, 0}, {1, 0, 0}, {0, 1, 0}}).hit));
 }
 
 TEST_CASE("sphere-triangle: displacement is exact against the long double reference (random)", "[overlap][sphere_triangle]") {
@@ -127,7 +127,7 @@ TEST_CASE("ellipsoid-triangle: overlap is exact, the vector separates within the
     CHECK_FALSE((overlap(Ellipsoid{{0, 2.1f, 0}, {1, 2, 1}}, t).hit));
     CHECK((overlap(Ellipsoid{{0, 2, 0}, {1, 2, 1}}, t).hit));  // tangent
     CHECK_FALSE((overlap(Ellipsoid{{0, 0, 0}, {1, 0, 1}}, t).hit));
-    CHECK_FALSE((overlap(Ellipsoid{{0, 0, 0}, {1, qnan, 1}}, t).hit));
+    CHECK_FALSE((overlap(Ellipsoid{{0, 0, 0}, {1, k_nan, 1}}, t).hit));
 
     // Random: the answer matches a direct test (closest point inside the ellipsoid's implicit
     // function, long double), and moving by the vector separates. The minimal translation d*

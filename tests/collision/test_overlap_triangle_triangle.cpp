@@ -7,13 +7,13 @@
 #include <glm/geometric.hpp>
 
 #include "collision/overlap.hpp"
+#include "float_specials.hpp"
 #include "random_cases.hpp"
 #include "tri_tri_reference.hpp"
 
 using namespace collision;
 
 namespace {
-const float qnan = std::numeric_limits<float>::quiet_NaN();
 bool both_ways(const Triangle& a, const Triangle& b) {
     const bool ab = overlap(a, b), ba = overlap(b, a);
     CHECK(ab == ba);
@@ -34,7 +34,7 @@ TEST_CASE("triangle-triangle: crossing, apart, touching, vertex on face, degener
     CHECK_FALSE((both_ways(t, Triangle{{0, 0, 1}, {2, 0, 1}, {0, 2, 1}})));
     // Degenerate: zero area, NaN.
     CHECK_FALSE((both_ways(t, Triangle{{0, 0, -1}, {0, 0, 0}, {0, 0, 1}})));
-    CHECK_FALSE((both_ways(t, Triangle{{qnan, 0, 0}, {1, 0, 0}, {0, 1, 1}})));
+    CHECK_FALSE((both_ways(t, Triangle{{k_nan, 0, 0}, {1, 0, 0}, {0, 1, 1}})));
 }
 
 TEST_CASE("triangle-triangle: the coplanar case the thesis skips", "[overlap][tri_tri][coplanar]") {
@@ -83,7 +83,7 @@ TEST_CASE("plane-plane: the intersection line, parallel planes, degenerate", "[o
     CHECK_FALSE((intersect(Plane{{0, 1, 0}, {0, 1, 0}}, Plane{{0, 5, 0}, {0, -1, 0}})));
     CHECK_FALSE((intersect(Plane{{0, 1, 0}, {0, 1, 0}}, Plane{{0, 1, 0}, {0, 1, 0}})));
     CHECK_FALSE((intersect(Plane{{0, 1, 0}, {0, 0, 0}}, Plane{{0, 1, 0}, {1, 0, 0}})));
-    CHECK_FALSE((intersect(Plane{{0, qnan, 0}, {0, 1, 0}}, Plane{{0, 1, 0}, {1, 0, 0}})));
+    CHECK_FALSE((intersect(Plane{{0, k_nan, 0}, {0, 1, 0}}, Plane{{0, 1, 0}, {1, 0, 0}})));
 
     // Random: the point lies on both planes and the direction in both, to the error the
     // geometry allows (float rounding of inputs/outputs amplified by 1 / sin(angle)).

@@ -10,13 +10,13 @@
 
 #include "collision/overlap.hpp"
 #include "collision/swept.hpp"
+#include "float_specials.hpp"
 #include "random_cases.hpp"
 #include "swept_check.hpp"
 
 using namespace collision;
 
 namespace {
-const float qnan = std::numeric_limits<float>::quiet_NaN();
 
 // Aimed roughly at each other so about half the cases hit.
 template <class Shape>
@@ -52,7 +52,7 @@ TEST_CASE("swept box-box: faces, edges, tangent sliding, start overlap, degenera
     REQUIRE(r.hit);
     CHECK(r.t == Approx(0.5f));
     CHECK_FALSE(sweep(Aabb{{-5, 0, 0}, {1, -1, 1}}, {10, 0, 0}, still).hit);
-    CHECK_FALSE(sweep(Aabb{{-5, 0, 0}, {1, 1, 1}}, {qnan, 0, 0}, still).hit);
+    CHECK_FALSE(sweep(Aabb{{-5, 0, 0}, {1, 1, 1}}, {k_nan, 0, 0}, still).hit);
 }
 
 TEST_CASE("swept cylinder-cylinder: side, cap, rim, parallel to the axis, start overlap", "[swept][cylinder]") {
@@ -79,7 +79,7 @@ TEST_CASE("swept cylinder-cylinder: side, cap, rim, parallel to the axis, start 
     CHECK(r.t == 0.0f);
     CHECK(r.normal == glm::vec3(0, 1, 0));
     CHECK_FALSE(sweep(Cylinder{{-5, 0, 0}, 0, 1}, {10, 0, 0}, still).hit);
-    CHECK_FALSE(sweep(Cylinder{{-5, 0, 0}, 1, 1}, {10, 0, 0}, Cylinder{{0, 0, 0}, 1, qnan}).hit);
+    CHECK_FALSE(sweep(Cylinder{{-5, 0, 0}, 1, 1}, {10, 0, 0}, Cylinder{{0, 0, 0}, 1, k_nan}).hit);
 }
 
 TEST_CASE("swept capsule-capsule: side, rounded ends, coaxial, start overlap, degenerate", "[swept][capsule]") {
@@ -109,7 +109,7 @@ TEST_CASE("swept capsule-capsule: side, rounded ends, coaxial, start overlap, de
     CHECK(r.t == 0.0f);
     CHECK(r.normal.x == Approx(1.0f));
     CHECK_FALSE(sweep(Capsule{{-5, 0, 0}, -0.5f, 1}, {10, 0, 0}, still).hit);
-    CHECK_FALSE(sweep(Capsule{{-5, 0, 0}, 0.5f, 1}, {10, qnan, 0}, still).hit);
+    CHECK_FALSE(sweep(Capsule{{-5, 0, 0}, 0.5f, 1}, {10, k_nan, 0}, still).hit);
 }
 
 TEST_CASE("swept box-box agrees with the discrete test on 10,000 random cases", "[swept][box][random]") {

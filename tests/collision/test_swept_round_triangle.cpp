@@ -10,6 +10,7 @@
 
 #include "collision/overlap.hpp"
 #include "collision/swept.hpp"
+#include "float_specials.hpp"
 #include "random_cases.hpp"
 #include "swept_check.hpp"
 
@@ -17,7 +18,6 @@ using namespace collision;
 
 namespace {
 const Triangle floor_tri{{-2, 0, -2}, {0, 0, 3}, {2, 0, -2}};  // y = 0, front face -y
-const float qnan = std::numeric_limits<float>::quiet_NaN();
 }  // namespace
 
 TEST_CASE("swept sphere-triangle: face from either side, edge, vertex, in-plane path", "[swept][sphere_triangle]") {
@@ -58,7 +58,7 @@ TEST_CASE("swept sphere-triangle: miss, tangent, start overlap, degenerate", "[s
     CHECK(r.normal == glm::vec3(0, 1, 0));
     CHECK_FALSE(sweep(Sphere{{0, 5, 0}, 0}, {0, -10, 0}, floor_tri).hit);
     CHECK_FALSE(sweep(Sphere{{0, 5, 0}, 1}, {0, -10, 0}, Triangle{{0, 0, 0}, {1, 0, 0}, {2, 0, 0}}).hit);
-    CHECK_FALSE(sweep(Sphere{{0, 5, 0}, 1}, {0, qnan, 0}, floor_tri).hit);
+    CHECK_FALSE(sweep(Sphere{{0, 5, 0}, 1}, {0, k_nan, 0}, floor_tri).hit);
 }
 
 TEST_CASE("swept ellipsoid-triangle: scaling keeps the time exact", "[swept][ellipsoid]") {
