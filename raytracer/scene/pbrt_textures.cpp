@@ -17,17 +17,20 @@ using nlohmann::json;
 
 FileNames::FileNames(const std::filesystem::path& main_file, const std::filesystem::path& output_dir) {
     std::error_code ec;
-    base_ = std::filesystem::absolute(main_file, ec).parent_path().lexically_normal();
+    base_ = main_file.parent_path();
     out_ = std::filesystem::absolute(output_dir.empty() ? std::filesystem::path(".") : output_dir, ec).lexically_normal();
 }
 
 std::filesystem::path FileNames::resolve(const std::string& name) const {
+    // As the user spelled the main file (relative to the working folder when it was): messages
+    // then name files the way the user sees them.
     const std::filesystem::path p(name);
     return (p.is_absolute() ? p : base_ / p).lexically_normal();
 }
 
 std::string FileNames::json_path(const std::string& name) const {
-    const std::filesystem::path p = resolve(name);
+    std::error_code ec;
+    const std::filesystem::path p = std::filesystem::absolute(resolve(name), ec).lexically_normal();
     const std::filesystem::path rel = p.lexically_relative(out_);
     return (rel.empty() ? p : rel).generic_string();
 }
