@@ -5,6 +5,8 @@
 
 #include <cmath>
 
+#include <glm/geometric.hpp>
+
 #include "pbrt_test_support.hpp"
 #include "raytracer/input_error.hpp"
 
@@ -222,4 +224,32 @@ TEST_CASE("pbrt warnings: one per kind, naming the first place; --strict makes t
     }
     // A scene using only supported features converts cleanly under --strict.
     CHECK(convert_text(dir, world_with("Shape \"sphere\""), true).warnings.empty());
+}
+
+TEST_CASE("pbrt scenes shaped like Bitterli's exports: a Transform camera that flips x, converted without a warning", "[pbrt]") {
+    const TempDir dir;
+    // The header of the "veach-mis" scene (Bitterli's rendering resources, pbrt-v4 version): the
+    // camera matrix has determinant -1, so the world is taken as it is.
+    const auto c = convert_text(dir, "Integrator \"path\" \"integer maxdepth\" [ 3 ]\n"
+                                     "Transform [ 4.37113e-8 -0 -1 -0 -0 1 -0 -0 -1 -0 -4.37113e-8 -0 -0 -3.5 28.2792 1 ]\n"
+                                     "Sampler \"sobol\" \"integer pixelsamples\" 64\n"
+                                     "PixelFilter \"triangle\" \"float xradius\" [ 1 ] \"float yradius\" [ 1 ]\n"
+                                     "Film \"rgb\" \"string filename\" [ \"veach-mis.png\" ] \"integer yresolution\" [ 720 ] \"integer xresolution\" [ 1280 ]\n"
+                                     "Camera \"perspective\" \"float fov\" [ 20.114292 ]\nWorldBegin\n"
+                                     "MakeNamedMaterial \"Smooth\" \"string type\" [ \"conductor\" ] \"float roughness\" [ 0.01 ]\n"
+                                     "    \"bool remaproughness\" [ false ] \"rgb eta\" [ 0.2 0.92 1.1 ] \"rgb k\" [ 3.91 2.45 2.14 ]\n"
+                                     "NamedMaterial \"Smooth\"\n"
+                                     "Shape \"trianglemesh\" \"point3 P\" [ -1 0 -1 1 0 -1 1 0 1 -1 0 1 ] \"integer indices\" [ 0 1 2 0 2 3 ]\n"
+                                     "    \"normal N\" [ 0 1 0 0 1 0 0 1 0 0 1 0 ] \"point2 uv\" [ 0 0 1 0 1 1 0 1 ]\n");
+    CHECK(c.warnings.empty());
+    const json& cam = c.doc["camera"];
+    CHECK(cam["position"][0].get<double>() == Approx(28.2792));
+    CHECK(cam["position"][1].get<double>() == Approx(3.5));
+    CHECK(cam["position"][2].get<double>() == Approx(0.0).margin(1e-5));  // 4.37e-8 x 28.28 of the matrix
+    const glm::dvec3 dir_(cam["look_at"][0].get<double>() - cam["position"][0].get<double>(),
+                          cam["look_at"][1].get<double>() - cam["position"][1].get<double>(),
+                          cam["look_at"][2].get<double>() - cam["position"][2].get<double>());
+    CHECK(glm::normalize(dir_).x == Approx(-1.0));
+    CHECK(c.doc["film"]["max_depth"] == 4);
+    CHECK(c.doc["materials"]["Smooth"]["roughness"].get<double>() == Approx(0.1));
 }
