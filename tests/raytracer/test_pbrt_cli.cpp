@@ -3,11 +3,11 @@
 // one line naming file:line and writes nothing; --strict refuses what would be approximated.
 #include <catch2/catch.hpp>
 
-#include <cstdlib>
 #include <fstream>
 #include <iterator>
 #include <string>
 
+#include "cli_run.hpp"
 #include "raytracer/image/image.hpp"
 #include "scene_test_files.hpp"
 
@@ -16,24 +16,9 @@ using sweeptrace::test::TempDir;
 
 namespace {
 
-const fs::path kBinary = fs::path(SWEEPTRACE_BINARY_DIR) / "sweeptrace";
+using Run = sweeptrace::test::CliRun;
 
-struct Run {
-    int exit_code = -1;
-    std::string err;
-};
-
-Run run(const fs::path& dir, const std::string& args) {
-    const fs::path err = dir / "stderr.txt";
-    const std::string cmd = "cd '" + dir.string() + "' && '" + kBinary.string() + "' " + args + " 2> '" + err.string() + "' > /dev/null";
-    const int status = std::system(cmd.c_str());
-    Run r;
-    r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    std::ifstream in(err);
-    r.err.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-    fs::remove(err);
-    return r;
-}
+Run run(const fs::path& dir, const std::string& args) { return sweeptrace::test::run_sweeptrace(dir, args); }
 
 std::string bytes(const fs::path& p) {
     std::ifstream in(p, std::ios::binary);
