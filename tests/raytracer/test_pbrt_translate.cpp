@@ -8,6 +8,7 @@
 #include <glm/geometric.hpp>
 
 #include "pbrt_test_support.hpp"
+#include "raytracer/image/image.hpp"
 #include "raytracer/input_error.hpp"
 
 using namespace sweeptrace;
@@ -252,4 +253,27 @@ TEST_CASE("pbrt scenes shaped like Bitterli's exports: a Transform camera that f
     CHECK(glm::normalize(dir_).x == Approx(-1.0));
     CHECK(c.doc["film"]["max_depth"] == 4);
     CHECK(c.doc["materials"]["Smooth"]["roughness"].get<double>() == Approx(0.1));
+}
+
+TEST_CASE("pbrt infinite light from a 2:1 map: pbrt-v3's z-up mapping as our rotate about +y", "[pbrt]") {
+    const TempDir dir;
+    Image sky(8, 4);
+    for (auto& p : sky.pixels) p = glm::vec3(0.5f, 0.6f, 0.7f);
+    write_image(sky, dir.path() / "sky.pfm");
+    const std::string light = "WorldBegin\nAttributeBegin\nRotate -90 1 0 0\nLightSource \"infinite\" \"string filename\" \"sky.pfm\" \"float scale\" 2\nAttributeEnd\n";
+    // A plain camera: the world is mirrored, which undoes the mirror between the two mappings.
+    const auto c = convert_text(dir, light);
+    CHECK(c.warnings.empty());
+    const json& env = c.doc["background"]["environment"];
+    CHECK(env["file"] == "sky.pfm");
+    CHECK(env["scale"] == 2.0);
+    CHECK(env["rotate"].get<double>() == Approx(-90.0));
+    // A camera that flips x keeps the world: the map would need a mirror, which our environment lacks.
+    const auto f = convert_text(dir, std::string(kFlipped) + light);
+    CHECK(has_warning(f.warnings, "the map's orientation is not a turn about our +y"));
+    // A square map is pbrt-v4's equal-area mapping: its mean as a constant.
+    write_image(Image(4, 4), dir.path() / "square.pfm");
+    const auto s = convert_text(dir, "WorldBegin\nLightSource \"infinite\" \"string filename\" \"square.pfm\"\n");
+    CHECK(s.doc["background"] == json({{"color", rgb(0, 0, 0)}}));
+    CHECK(has_warning(s.warnings, "equal-area octahedral mapping"));
 }
