@@ -3,11 +3,13 @@
 // naming file:line.
 #include <catch2/catch.hpp>
 
+#include <cmath>
 #include <functional>
 
 #include "pbrt_test_support.hpp"
 #include "raytracer/input_error.hpp"
 #include "raytracer/scene/pbrt_params.hpp"
+#include "raytracer/scene/pbrt_spectra.hpp"
 #include "raytracer/scene/pbrt_tokenizer.hpp"
 
 using namespace sweeptrace;
@@ -141,4 +143,24 @@ TEST_CASE("pbrt Include: relative to the main file's folder, nested, and bounded
     CHECK_THAT(error_of([&] { convert_text(dir, "Include \"loop.pbrt\"\n"); }), Catch::Contains("nested deeper than 16"));
     CHECK_THAT(error_of([&] { convert_text(dir, "Include \"missing.pbrt\"\n"); }),
                Catch::Contains("scene.pbrt:1: Include: ") && Catch::Contains("no such file"));
+}
+
+TEST_CASE("pbrt spectra: blackbody at luminance 1, D65's temperature near white, named metals and glasses", "[pbrt]") {
+    for (double t : {1800.0, 3000.0, 6504.0, 12000.0}) {
+        const glm::dvec3 c = blackbody_rgb(t);
+        INFO("T = " << t);
+        CHECK(0.2126 * c.r + 0.7152 * c.g + 0.0722 * c.b == Approx(1.0).epsilon(0.02));  // Y of linear sRGB
+    }
+    const glm::dvec3 d65 = blackbody_rgb(6504.0);
+    CHECK(std::fabs(d65.r - d65.b) < 0.12);  // D65's correlated colour temperature: nearly white
+    const glm::dvec3 warm = blackbody_rgb(2000.0);
+    CHECK(warm.r > warm.g);
+    CHECK(warm.g > warm.b);
+    std::string part;
+    CHECK(named_metal("metal-CuZn-k", part) == std::optional<std::string>("CuZn"));
+    CHECK(part == "k");
+    CHECK_FALSE(named_metal("metal-Fe-eta", part));
+    CHECK(*named_glass_ior("glass-BK7") == Approx(1.5168));
+    CHECK_FALSE(named_glass_ior("glass-unknown"));
+    CHECK(sampled_rgb({400, 0.0, 700, 1.0}).g == Approx(0.5));  // 550 nm, halfway
 }
