@@ -25,8 +25,10 @@ std::string bytes(const fs::path& p) {
     return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
 }
 
-// A small scene with a texture file in a subfolder, to check relative paths after conversion.
-const char* kScene = R"(LookAt 0 1 -4  0 0.5 0  0 1 0
+// A small scene with a texture and a PLY mesh in subfolders (relative paths after conversion),
+// conductors named and by rgb eta/k. A flipped camera (det -1), so the mesh needs no mirror.
+const char* kScene = R"(Scale -1 1 1
+LookAt 0 1 -4  0 0.5 0  0 1 0
 Camera "perspective" "float fov" 45
 Film "rgb" "integer xresolution" 24 "integer yresolution" 16
 Sampler "independent" "integer pixelsamples" 2
@@ -46,6 +48,19 @@ AttributeBegin
   Translate 0 0.5 0
   Shape "sphere" "float radius" 0.5
 AttributeEnd
+MakeNamedMaterial "gold" "string type" "conductor" "spectrum eta" "metal-Au-eta" "spectrum k" "metal-Au-k" "float roughness" 0.05
+MakeNamedMaterial "copper" "string type" "conductor" "rgb eta" [0.2 0.9 1.1] "rgb k" [3.9 2.4 2.2]
+AttributeBegin
+  NamedMaterial "gold"
+  Translate -1.2 0 0.3
+  Scale 0.5 0.5 0.5
+  Shape "plymesh" "string filename" "meshes/tet.ply"
+AttributeEnd
+AttributeBegin
+  NamedMaterial "copper"
+  Translate -0.6 0.3 -1
+  Shape "sphere" "float radius" 0.3
+AttributeEnd
 AttributeBegin
   AreaLightSource "diffuse" "rgb L" [3 3 3]
   Translate 1.2 0.4 0.5
@@ -61,6 +76,9 @@ void write_scene(const TempDir& dir) {
     fs::create_directories(dir.path() / "in/textures");
     sweeptrace::write_image(tex, dir.path() / "in/textures/t.png");
     fs::create_directories(dir.path() / "out/deeper");
+    dir.write("in/meshes/tet.ply", "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\nproperty float z\n"
+                                   "element face 4\nproperty list uchar int vertex_indices\nend_header\n"
+                                   "0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n");
 }
 
 }  // namespace
@@ -74,6 +92,8 @@ TEST_CASE("pbrt CLI: convert writes JSON that renders bit-identical to the .pbrt
     CHECK(c.err.empty());  // every feature of this scene is supported
     const std::string json = bytes(dir.path() / "out/deeper/scene.json");
     CHECK(json.find("\"../../in/textures/t.png\"") != std::string::npos);
+    CHECK(json.find("\"../../in/meshes/tet.ply\"") != std::string::npos);
+    CHECK(json.find("\"metal\": \"Au\"") != std::string::npos);
     REQUIRE(run(dir.path(), "render in/scene.pbrt -o a.pfm --quiet --threads 2").exit_code == 0);
     REQUIRE(run(dir.path(), "render out/deeper/scene.json -o b.pfm --quiet --threads 1").exit_code == 0);
     const std::string a = bytes(dir.path() / "a.pfm"), b = bytes(dir.path() / "b.pfm");
