@@ -1,4 +1,4 @@
-// `sweeptrace render SCENE.json [options]`: load, build the acceleration structure, render with a
+// `sweeptrace render SCENE.json|SCENE.pbrt [options]`: load (a .pbrt through the pbrt-v4 importer), build the acceleration structure, render with a
 // progress display, write the image atomically. Ctrl-C or SIGTERM stops after the samples
 // finished so far, writes them, and exits 130 / 143; a second signal kills at once (the atomic
 // write still leaves no partial file, cli/interrupt.hpp).
@@ -11,6 +11,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -29,6 +30,7 @@
 #include "raytracer/render/tone_map.hpp"
 #include "raytracer/scene/emitter_check.hpp"
 #include "raytracer/scene/load_scene.hpp"
+#include "raytracer/scene/pbrt_import.hpp"
 
 namespace sweeptrace {
 
@@ -50,6 +52,7 @@ struct RenderArgs {
     bool quiet = false;
     std::string samples;  // "A:B": render a farm part
     bool skip_existing = false;
+    bool strict = false;  // a .pbrt scene: anything approximated or ignored is an error
     CLI::Option* time_opt = nullptr;
 };
 
@@ -123,8 +126,22 @@ int run_render(const RenderArgs& a) {
         require(a.time > 0.0 && std::isfinite(a.time), "--time must be a positive number of seconds, got " + a.time_opt->as<std::string>());
 
     const std::filesystem::path scene_path(a.scene);
+    // A pbrt-v4 scene is translated first (cheap next to a render): its Film's filename is the
+    // default output, as in pbrt, and its warnings come before the render starts.
+    const bool pbrt = is_pbrt_file(scene_path);
+    std::optional<Scene> pbrt_scene;
+    std::string film_filename;
+    if (pbrt) {
+        std::vector<std::string> warnings;
+        pbrt_scene.emplace(load_pbrt_scene(scene_path, a.strict, warnings, &film_filename));
+        for (const std::string& w : warnings) std::fprintf(stderr, "sweeptrace: warning: %s\n", w.c_str());
+    } else {
+        require(!a.strict, "--strict is for .pbrt scenes (a JSON scene never approximates)");
+    }
     const std::filesystem::path out =
-        a.output.empty() ? std::filesystem::path(scene_path.stem().string() + ".png") : std::filesystem::path(a.output);
+        !a.output.empty() ? std::filesystem::path(a.output)
+        : pbrt            ? std::filesystem::path(film_filename)
+                          : std::filesystem::path(scene_path.stem().string() + ".png");
     {
         // Fail before a long render, not after it.
         std::string ext = out.extension().string();
@@ -147,7 +164,7 @@ int run_render(const RenderArgs& a) {
         }
     }
 
-    Scene scene = load_scene(scene_path);
+    Scene scene = pbrt ? std::move(*pbrt_scene) : load_scene(scene_path);
     for (const std::string& w : emitters_facing_nothing(scene)) std::fprintf(stderr, "sweeptrace: warning: %s\n", w.c_str());
     a.limits.apply(scene);
     if (!a.sampler.empty()) scene.film.sampler = a.sampler == "independent" ? SamplerKind::Independent : SamplerKind::Sobol;
@@ -234,10 +251,12 @@ int run_render(const RenderArgs& a) {
 void add_render_command(CLI::App& app, int& exit_code) {
     auto args = std::make_shared<RenderArgs>();
     auto* cmd = app.add_subcommand("render", "Render a JSON scene to an image");
-    cmd->add_option("scene", args->scene, "Scene file (JSON, see scenes/README.md)")->required();
+    cmd->add_option("scene", args->scene,
+                    "Scene file: JSON (scenes/README.md), or a pbrt-v4 scene (.pbrt, docs/pbrt-import.md), translated in memory")
+        ->required();
     cmd->add_option("-o,--output", args->output,
                     "Output image: .png (8-bit sRGB: radiance x 2^film.exposure through film.tone_curve, by default clamped to [0, 1]), .pfm or .exr (linear float). "
-                    "Default: the scene's name with .png, in the current directory");
+                    "Default: the scene's name with .png, in the current directory (a .pbrt scene: its Film's filename, pbrt.exr if none)");
     cmd->add_option("--variance", args->variance,
                     "Also write the per-pixel variance of each pixel's mean (.exr/.pfm): the samples' unbiased "
                     "variance / spp, from the same samples (needs spp >= 2); for `diff --variance-a/-b`. Exact for "
@@ -263,6 +282,8 @@ void add_render_command(CLI::App& app, int& exit_code) {
                     "Path guiding (learned during the render, unbiased): on or off (default: the scene's film.guiding)")
         ->check(CLI::IsMember({"on", "off"}));
     cmd->add_flag("--quiet", args->quiet, "No progress display and no summary");
+    cmd->add_flag("--strict", args->strict,
+                  "A .pbrt scene: refuse (exit 2) anything the translation would approximate or ignore, instead of a warning");
     cmd->add_option("--samples", args->samples,
                     "A:B: render only sample indices [A, B) of the --spp render, to a farm part (.exr) for "
                     "`sweeptrace merge`");

@@ -1,4 +1,5 @@
 #include "raytracer/scene/load_scene.hpp"
+#include "raytracer/scene/load_scene_document.hpp"
 
 #include <cctype>
 #include <initializer_list>
@@ -380,7 +381,10 @@ private:
 
 Scene load_scene(const std::filesystem::path& file) {
     const std::string text = read_text_file(file, "scene", kMaxSceneFileBytes);
-    const nlohmann::json doc = scene_json::parse(text, file);
+    return load_scene_document(scene_json::parse(text, file), file);
+}
+
+Scene load_scene_document(const nlohmann::json& doc, const std::filesystem::path& file) {
     const Node root(doc, file);
     root.require_object({"description", "camera", "film", "background", "seed", "materials", "objects", "lights"});
 

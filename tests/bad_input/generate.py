@@ -449,6 +449,59 @@ case("heatmap-is-symlink-to-a", 2, O + r"h\.png' is the image A 'a\.png'", "diff
      {"a.png": GOOD, "b.png": GOOD}, "symlink h.png a.png")
 
 
+# --- pbrt-v4 scenes (the importer, scene/pbrt_*): file:line, the fix, nothing written -------------
+PBRT_OK = 'Film "rgb" "integer xresolution" 8 "integer yresolution" 8\nWorldBegin\n'
+
+
+def pbrt_case(name, pattern, text, command="render", extra=None, args=""):
+    files = {"scene.pbrt": text}
+    files.update(extra or {})
+    out = "out.json" if command == "convert" else "out.png"
+    case(name, 2, pattern, f"{command} scene.pbrt -o {out} --quiet {args}".strip(), files)
+
+
+pbrt_case("pbrt-unknown-directive", E + r"scene\.pbrt:3: unknown directive \"Shpae\"", PBRT_OK + 'Shpae "sphere"\n')
+pbrt_case("pbrt-unclosed-bracket", E + r"scene\.pbrt:3: the values of \"float radius\" are not closed: add '\]'",
+          PBRT_OK + 'Shape "sphere" "float radius" [ 1\n')
+pbrt_case("pbrt-unclosed-bracket-convert", E + r"scene\.pbrt:3: the values of \"float radius\" are not closed",
+          PBRT_OK + 'Shape "sphere" "float radius" [ 1\n', command="convert")
+pbrt_case("pbrt-unterminated-string", E + r"scene\.pbrt:3: unterminated string", PBRT_OK + 'Shape "sphere\n')
+pbrt_case("pbrt-bad-type", E + r"scene\.pbrt:3: unknown parameter type \"flaot\"", PBRT_OK + 'Shape "sphere" "flaot radius" 1\n')
+pbrt_case("pbrt-number-is-string", E + r"scene\.pbrt:3: \"float radius\" takes finite numbers", PBRT_OK + 'Shape "sphere" "float radius" "one"\n')
+pbrt_case("pbrt-number-overflow", E + r"scene\.pbrt:3: \"float radius\" takes finite numbers", PBRT_OK + 'Shape "sphere" "float radius" 1e999\n')
+pbrt_case("pbrt-point3-count", E + r"scene\.pbrt:3: \"point3 P\" takes a multiple of 3 numbers",
+          PBRT_OK + 'Shape "trianglemesh" "point3 P" [0 0 0 1 0]\n')
+pbrt_case("pbrt-index-out-of-range", E + r"scene\.pbrt:3: Shape \"trianglemesh\": index 7 out of range",
+          PBRT_OK + 'Shape "trianglemesh" "point3 P" [0 0 0 1 0 0 0 1 0] "integer indices" [0 1 7]\n')
+pbrt_case("pbrt-shape-before-world", E + r"scene\.pbrt:1: Shape must come after WorldBegin", 'Shape "sphere"\nWorldBegin\n')
+pbrt_case("pbrt-attribute-end-unmatched", E + r"scene\.pbrt:3: AttributeEnd without a matching AttributeBegin", PBRT_OK + "AttributeEnd\n")
+pbrt_case("pbrt-named-material-missing", E + r"scene\.pbrt:4: NamedMaterial \"steel\": no material of that name",
+          PBRT_OK + 'NamedMaterial "steel"\nShape "sphere"\n')
+pbrt_case("pbrt-texture-missing", E + r"scene\.pbrt:3: \"texture reflectance\": no spectrum texture named \"wood\"",
+          PBRT_OK + 'Material "diffuse" "texture reflectance" "wood"\n')
+pbrt_case("pbrt-include-missing", E + r"scene\.pbrt:3: Include: .*nothere\.pbrt: cannot read pbrt scene: no such file",
+          PBRT_OK + 'Include "nothere.pbrt"\n')
+pbrt_case("pbrt-include-cycle", E + r"loop\.pbrt:1: Include nested deeper than 16 files",
+          PBRT_OK + 'Include "loop.pbrt"\n', extra={"loop.pbrt": 'Include "loop.pbrt"\n'})
+pbrt_case("pbrt-plymesh-missing", E + r"scene\.pbrt:3: Shape \"plymesh\": \"gone\.ply\" not found",
+          PBRT_OK + 'Shape "plymesh" "string filename" "gone.ply"\n')
+pbrt_case("pbrt-lookat-degenerate", E + r"scene\.pbrt:1: LookAt: the eye and the point looked at must differ",
+          'LookAt 0 0 0  0 0 0  0 1 0\nWorldBegin\n')
+pbrt_case("pbrt-fov-180", E + r"scene\.pbrt:1: Camera \"perspective\": \"fov\" must be strictly between 0 and 180",
+          'Camera "perspective" "float fov" 180\nWorldBegin\n')
+pbrt_case("pbrt-binary-file", E + r"scene\.pbrt:1: control byte 1", "Shape\x01\x02")
+pbrt_case("pbrt-strict-unsupported", E + r"scene\.pbrt:3: Shape \"curve\" is not supported \(ignored\) \(--strict makes this an error\)",
+          PBRT_OK + 'Shape "curve"\nShape "sphere"\n', args="--strict")
+pbrt_case("pbrt-strict-unsupported-convert", E + r"scene\.pbrt:3: MakeNamedMedium: participating media are not supported",
+          PBRT_OK + 'MakeNamedMedium "fog" "string type" "homogeneous"\n', command="convert", args="--strict")
+case("pbrt-convert-not-pbrt", 2, E + r"convert reads pbrt-v4 scenes \(\.pbrt\), got 'scene\.json'", "convert scene.json -o out.json",
+     {"scene.json": scene()})
+case("pbrt-convert-out-not-json", 2, E + r"output 'out\.png': write the scene to a \.json file", "convert scene.pbrt -o out.png",
+     {"scene.pbrt": PBRT_OK})
+case("pbrt-convert-out-is-input", 2, E + r"output 'scene\.json' is the scene 'scene\.pbrt'", "convert scene.pbrt -o scene.json",
+     {"scene.pbrt": PBRT_OK}, "symlink scene.json scene.pbrt")
+
+
 def main():
     with open(os.path.join(HERE, "manifest.tsv"), "w") as f:
         f.write("# name\texit\tpattern (Python re, searched in the one stderr line)\targuments\tsetup\n")

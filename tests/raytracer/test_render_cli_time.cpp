@@ -10,29 +10,16 @@
 #include <fstream>
 #include <string>
 
+#include "cli_run.hpp"
 #include "raytracer/image/image.hpp"
 
 namespace fs = std::filesystem;
 
 namespace {
 
-const fs::path kBinary = fs::path(SWEEPTRACE_BINARY_DIR) / "sweeptrace";
+using Run = sweeptrace::test::CliRun;
 
-struct Run {
-    int exit_code = -1;
-    std::string err;
-};
-
-Run run(const fs::path& dir, const std::string& args) {
-    const fs::path err = dir / "stderr.txt";
-    const std::string cmd = "cd '" + dir.string() + "' && '" + kBinary.string() + "' " + args + " 2> stderr.txt > /dev/null";
-    const int status = std::system(cmd.c_str());
-    Run r;
-    r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    std::ifstream in(err);
-    r.err.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-    return r;
-}
+Run run(const fs::path& dir, const std::string& args) { return sweeptrace::test::run_sweeptrace(dir, args); }
 
 fs::path scene_dir(const std::string& name) {
     const fs::path d = fs::path(SWEEPTRACE_BINARY_DIR) / "render-cli-time-tests" / name;

@@ -1,0 +1,172 @@
+// pbrt-v4's LightSource statements as our "lights" and "background" (scenes/README.md "Lights",
+// "Environment"). Brightness: pbrt-v4 divides each light's spectrum by its luminance-per-unit
+// (for "rgb" values: by the colour space illuminant's, so rgb stays rgb) and multiplies "scale";
+// "power" (point, spot) and "illuminance" (distant, infinite) then set the scale from the
+// illuminant's luminance 1: intensity = I power / (4 pi) for a point, I power / (2 pi (1 - (cos
+// start + cos end) / 2)) for a spot, irradiance = L illuminance for a distant light, radiance =
+// L illuminance / pi for a constant infinite light.
+//
+// Environment maps: pbrt-v4's image infinite light reads a square image in its equal-area
+// octahedral mapping, which our environment (equirectangular) cannot hold: such a map becomes a
+// constant background of its mean (warned). A 2:1 image is taken as pbrt-v3's equirectangular
+// map: +z up in light space, u = phi / 2 pi from +x toward +y, v = theta / pi from +z. Ours has +y
+// up, u = 0.5 from -z, turning right-handed toward +x; as a map of directions the two differ by
+// (x, y, z)_pbrt = (z, -x, y)_ours, a mirror, which the world mirror (or the light's transform)
+// must undo: the light's transform is written as our "rotate" about +y when it is one, else the
+// nearest such turn is used and the warning says so.
+#include <algorithm>
+#include <cmath>
+
+#include <glm/geometric.hpp>
+#include <glm/matrix.hpp>
+#include <glm/common.hpp>
+#include <glm/vector_relational.hpp>
+
+#include "raytracer/input_error.hpp"
+#include "raytracer/scene/load_image_file.hpp"
+#include "raytracer/scene/pbrt_world.hpp"
+
+namespace sweeptrace::pbrt {
+
+using nlohmann::json;
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+json vec(const glm::dvec3& v) { return {v.x, v.y, v.z}; }
+
+void add_background(WorldContext& w, const Where& at, const glm::dvec3& radiance) {
+    json& bg = w.doc["background"];
+    if (bg.is_null()) {
+        bg = {{"color", vec(radiance)}};
+    } else if (bg.contains("color")) {
+        const glm::dvec3 old(bg["color"][0].get<double>(), bg["color"][1].get<double>(), bg["color"][2].get<double>());
+        bg["color"] = vec(old + radiance);
+    } else {
+        w.diag.warn(at, "two infinite lights", "a second infinite light beside an environment map is not supported (ignored)");
+    }
+}
+
+void infinite(WorldContext& w, const LightRecord& l, const std::string& what, double scale) {
+    const ParamList& p = l.statement.params;
+    Diagnostics& d = w.diag;
+    const Where& at = l.statement.where;
+    p.find("portal");  // portals guide sampling only: the image is the same without
+    const double illuminance = p.get_float("illuminance", -1.0, d);
+    const std::string file = p.get_string("filename", "", d);
+    if (file.empty()) {
+        glm::dvec3 radiance = w.materials.emitted(p, "L", what) * scale;
+        if (illuminance > 0.0) radiance *= illuminance / kPi;
+        add_background(w, at, radiance);
+        return;
+    }
+    if (p.has("L")) d.fail(at, what + ": give either \"L\" or \"filename\", not both");
+    if (illuminance > 0.0) d.warn(at, "environment illuminance", what + ": \"illuminance\" with an image is not supported (\"scale\" alone used)");
+    const std::filesystem::path path = w.files.resolve(file);
+    const std::shared_ptr<const Image> image =
+        read_image_path(file, path, "environment image", [&](const std::string& m) { d.fail(at, what + ": " + m); });
+    if (image->width == image->height) {
+        glm::dvec3 mean(0.0);
+        for (const glm::vec3& px : image->pixels) mean += glm::dvec3(px);
+        mean /= double(image->pixels.size());
+        d.warn(at, "equal-area environment", what + ": a square map is pbrt-v4's equal-area octahedral mapping, which we do not read: a constant of its mean radiance instead");
+        add_background(w, at, mean * scale);
+        return;
+    }
+    if (!w.doc["background"].is_null()) {
+        d.warn(at, "two infinite lights", "a second infinite light beside another is not supported (ignored)");
+        return;
+    }
+    // Our direction d (world, mirrored) -> pbrt's light space: inverse(ctm) * mirror^-1 * d; it must
+    // equal P * Ry(-rotate) * d with P = (x, y, z) -> (z, -x, y). So Ry(-rotate) = P^-1 * that.
+    glm::dmat3 p_map(0.0);  // columns: images of our x, y, z
+    p_map[0] = {0.0, -1.0, 0.0};
+    p_map[1] = {0.0, 0.0, 1.0};
+    p_map[2] = {1.0, 0.0, 0.0};
+    glm::dmat3 light(l.ctm);
+    const double s = std::cbrt(std::fabs(glm::determinant(light)));
+    if (s > 0.0) light /= s;
+    const glm::dmat3 q = glm::inverse(p_map) * glm::inverse(light) * glm::inverse(glm::dmat3(w.mirror));
+    // Ry(a) has columns (cos a, 0, -sin a), (0, 1, 0), (sin a, 0, cos a); q should be Ry(-rotate).
+    const double a = std::atan2(-q[0][2], q[0][0]);
+    glm::dmat3 ry(1.0);
+    ry[0] = {std::cos(a), 0.0, -std::sin(a)};
+    ry[2] = {std::sin(a), 0.0, std::cos(a)};
+    double err = 0.0;
+    for (int c = 0; c < 3; ++c) err = std::max(err, glm::length(q[c] - ry[c]));
+    if (err > 1e-6)
+        d.warn(at, "environment orientation", what + ": the map's orientation is not a turn about our +y (its light transform tilts it or mirrors it): the nearest turn is used");
+    json env{{"file", w.files.json_path(file)}, {"rotate", -a * 180.0 / kPi}};
+    if (scale != 1.0) env["scale"] = scale;
+    w.doc["background"] = {{"environment", env}};
+}
+
+}  // namespace
+
+void write_light(WorldContext& w, const LightRecord& l) {
+    const Statement& s = l.statement;
+    const ParamList& p = s.params;
+    Diagnostics& d = w.diag;
+    const std::string what = "LightSource \"" + excerpt(s.type) + "\"";
+    const glm::dmat4 m = w.mirror * l.ctm;
+    double scale = p.get_float("scale", 1.0, d);
+    auto point_of = [&](const char* name, const glm::dvec3& fallback) {
+        return glm::dvec3(m * glm::dvec4(p.get_point3(name, d).value_or(fallback), 1.0));
+    };
+    json light;
+    if (s.type == "point" || s.type == "spot") {
+        const glm::dvec3 from = point_of("from", glm::dvec3(0.0));
+        glm::dvec3 intensity = w.materials.emitted(p, "I", what) * scale;
+        const double power = p.get_float("power", -1.0, d);
+        light = {{"type", s.type}, {"position", vec(from)}};
+        if (s.type == "point") {
+            if (power > 0.0) intensity *= power / (4.0 * kPi);
+        } else {
+            const glm::dvec3 to = point_of("to", glm::dvec3(0.0, 0.0, 1.0));
+            double cone = p.get_float("coneangle", 30.0, d);
+            const double delta = p.get_float("conedeltaangle", 5.0, d);
+            if (!(cone > 0.0)) d.fail(s.where, what + ": \"coneangle\" must be > 0");
+            if (cone > 90.0) {
+                d.warn(s.where, "spot over 90", what + ": a cone wider than 90 degrees is narrowed to 90 (our limit)");
+                cone = 90.0;
+            }
+            const double start = std::clamp(cone - delta, 0.0, cone);
+            if (power > 0.0) {
+                const double cs = std::cos(start * kPi / 180.0), ce = std::cos(cone * kPi / 180.0);
+                intensity *= power / (2.0 * kPi * ((1.0 - cs) + (cs - ce) / 2.0));
+            }
+            if (to == from) d.fail(s.where, what + ": \"from\" and \"to\" must differ");
+            light["direction"] = vec(to - from);
+            light["cone_angle"] = cone;
+            light["falloff_start"] = start;
+        }
+        light["intensity"] = vec(intensity);
+        if (intensity == glm::dvec3(0.0)) {
+            d.warn(s.where, "black light", what + ": emits nothing (left out)");
+            light = nullptr;
+        }
+    } else if (s.type == "distant") {
+        const glm::dvec3 from = point_of("from", glm::dvec3(0.0)), to = point_of("to", glm::dvec3(0.0, 0.0, 1.0));
+        glm::dvec3 irradiance = w.materials.emitted(p, "L", what) * scale;
+        if (const double e = p.get_float("illuminance", -1.0, d); e > 0.0) irradiance *= e;
+        if (to == from) d.fail(s.where, what + ": \"from\" and \"to\" must differ");
+        light = {{"type", "directional"}, {"direction", vec(to - from)}, {"irradiance", vec(irradiance)}};
+        if (irradiance == glm::dvec3(0.0)) {
+            d.warn(s.where, "black light", what + ": emits nothing (left out)");
+            light = nullptr;
+        }
+    } else if (s.type == "infinite") {
+        infinite(w, l, what, scale);
+    } else {
+        d.warn(s.where, "light " + s.type, what + " is not supported (ignored)");
+        for (const Param& q : p.params) q.used = true;
+    }
+    if (!light.is_null()) {
+        light["name"] = what + " (" + s.where.short_text() + ")";
+        w.doc["lights"].push_back(light);
+    }
+    p.warn_unused(what, d);
+}
+
+}  // namespace sweeptrace::pbrt

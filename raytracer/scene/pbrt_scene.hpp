@@ -1,0 +1,56 @@
+#pragma once
+// What the pbrt parser hands the JSON writer: each statement that makes something (camera, film,
+// a shape, a light), with the transformation matrix and attributes in force where it was written,
+// and the materials and textures already translated to our JSON (they do not depend on where they
+// are used). The writer decides the world's handedness only once it has seen every shape
+// (pbrt_world.hpp), so shapes are kept here, not written as they are read.
+#include <filesystem>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <glm/mat4x4.hpp>
+#include <nlohmann/json.hpp>
+
+#include "raytracer/scene/pbrt_diagnostics.hpp"
+#include "raytracer/scene/pbrt_params.hpp"
+
+namespace sweeptrace::pbrt {
+
+// A directive with a type name and parameters: `Shape "sphere" "float radius" 2`.
+struct Statement {
+    std::string type;
+    ParamList params;
+    Where where;
+};
+
+struct AreaLight {
+    Statement statement;
+};
+
+struct ShapeRecord {
+    Statement statement;
+    glm::dmat4 ctm{1.0};  // object to world
+    bool reverse_orientation = false;
+    std::string material;  // a key of PbrtScene::materials
+    std::optional<AreaLight> area_light;
+};
+
+struct LightRecord {
+    Statement statement;
+    glm::dmat4 ctm{1.0};
+};
+
+struct PbrtScene {
+    std::filesystem::path main_file;  // relative file names resolve from its folder (as pbrt-v4 does)
+    std::optional<Statement> camera, film, sampler, filter, integrator;
+    glm::dmat4 camera_from_world{1.0};
+    std::vector<ShapeRecord> shapes;
+    std::vector<LightRecord> lights;
+    std::map<std::string, nlohmann::json> materials;  // our JSON material by its name in the output
+    // Materials that make a shape invisible to light (pbrt's "interface"): shapes using one are left out.
+    std::map<std::string, bool> invisible;
+};
+
+}  // namespace sweeptrace::pbrt

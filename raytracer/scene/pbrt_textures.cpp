@@ -1,0 +1,214 @@
+// pbrt-v4 textures and spectra as our JSON's values (the texture half of MaterialTranslator).
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <system_error>
+
+#include <glm/common.hpp>
+#include <glm/vector_relational.hpp>
+
+#include "raytracer/input_error.hpp"
+#include "raytracer/scene/pbrt_materials.hpp"
+#include "raytracer/scene/pbrt_spectra.hpp"
+
+namespace sweeptrace::pbrt {
+
+using nlohmann::json;
+
+FileNames::FileNames(const std::filesystem::path& main_file, const std::filesystem::path& output_dir) {
+    std::error_code ec;
+    base_ = main_file.parent_path();
+    out_ = std::filesystem::absolute(output_dir.empty() ? std::filesystem::path(".") : output_dir, ec).lexically_normal();
+}
+
+std::filesystem::path FileNames::resolve(const std::string& name) const {
+    // As the user spelled the main file (relative to the working folder when it was): messages
+    // then name files the way the user sees them.
+    const std::filesystem::path p(name);
+    return (p.is_absolute() ? p : base_ / p).lexically_normal();
+}
+
+std::string FileNames::json_path(const std::string& name) const {
+    std::error_code ec;
+    const std::filesystem::path p = std::filesystem::absolute(resolve(name), ec).lexically_normal();
+    const std::filesystem::path rel = p.lexically_relative(out_);
+    return (rel.empty() ? p : rel).generic_string();
+}
+
+namespace {
+
+json rgb_json(const glm::dvec3& c) { return json::array({c.r, c.g, c.b}); }
+
+std::string lower_extension(const std::string& file) {
+    std::string ext = std::filesystem::path(file).extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char ch) { return static_cast<char>(std::tolower(ch)); });
+    return ext;
+}
+
+bool is_eight_bit(const std::string& ext) { return ext == ".png" || ext == ".jpg" || ext == ".jpeg"; }
+bool is_linear_format(const std::string& ext) { return ext == ".exr" || ext == ".hdr" || ext == ".pfm"; }
+
+}  // namespace
+
+glm::dvec3 MaterialTranslator::spectrum_rgb(const SpectrumValue& v, const std::string& what) {
+    switch (v.kind) {
+    case SpectrumValue::Kind::Rgb: return v.rgb;
+    case SpectrumValue::Kind::Blackbody: return blackbody_rgb(v.samples[0]);
+    case SpectrumValue::Kind::Sampled:
+        diag_.warn(v.where, "sampled spectrum", what + ": a sampled spectrum is approximated by its values at 610, 550 and 465 nm");
+        return sampled_rgb(v.samples);
+    case SpectrumValue::Kind::Named:
+        if (v.name.rfind("stdillum-", 0) == 0) {
+            if (v.name != "stdillum-D65")
+                diag_.warn(v.where, "illuminant " + v.name, what + ": illuminant \"" + excerpt(v.name) + "\" is approximated as white (D65)");
+            return glm::dvec3(1.0);
+        }
+        diag_.warn(v.where, "named spectrum " + v.name,
+                   what + ": named spectrum \"" + excerpt(v.name) + "\" is not supported here (grey 0.5 instead)");
+        return glm::dvec3(0.5);
+    case SpectrumValue::Kind::Texture: break;
+    }
+    return glm::dvec3(0.5);
+}
+
+json MaterialTranslator::colour(const ParamList& p, const std::string& name, const glm::dvec3& fallback, bool albedo,
+                                const std::string& what) {
+    const std::optional<SpectrumValue> v = p.get_spectrum(name, diag_);
+    auto clamp_albedo = [&](glm::dvec3 c, const Where& where) {
+        if (albedo && (glm::any(glm::greaterThan(c, glm::dvec3(1.0))) || glm::any(glm::lessThan(c, glm::dvec3(0.0))))) {
+            diag_.warn(where, "albedo outside [0, 1]", what + ": \"" + name + "\" outside [0, 1] is clamped to it");
+            c = glm::clamp(c, glm::dvec3(0.0), glm::dvec3(1.0));
+        }
+        return rgb_json(c);
+    };
+    if (!v) return rgb_json(fallback);
+    if (v->kind != SpectrumValue::Kind::Texture) return clamp_albedo(spectrum_rgb(*v, what), v->where);
+    const auto it = spectrum_textures_.find(v->name);
+    if (it == spectrum_textures_.end()) {
+        if (float_textures_.count(v->name)) {
+            // pbrt-v4 reads a float texture here too only by name clash; say so and use it as grey.
+            diag_.fail(v->where, "\"texture " + name + "\" names a float texture \"" + excerpt(v->name) +
+                                     "\": define it with Texture \"" + excerpt(v->name) + "\" \"spectrum\" ...");
+        }
+        diag_.fail(v->where, "\"texture " + name + "\": no spectrum texture named \"" + excerpt(v->name) +
+                                 "\" (define it with Texture before the material)");
+    }
+    if (it->second.is_array()) return clamp_albedo(glm::dvec3(it->second[0], it->second[1], it->second[2]), v->where);
+    return it->second;
+}
+
+glm::dvec3 MaterialTranslator::emitted(const ParamList& p, const std::string& name, const std::string& what) {
+    const std::optional<SpectrumValue> v = p.get_spectrum(name, diag_);
+    if (!v) return glm::dvec3(1.0);  // the colour space's illuminant, luminance 1
+    if (v->kind == SpectrumValue::Kind::Texture) diag_.fail(v->where, what + ": \"" + name + "\" cannot be a texture");
+    return glm::max(spectrum_rgb(*v, what), glm::dvec3(0.0));
+}
+
+void MaterialTranslator::define_texture(const std::string& name, const std::string& kind, const Statement& s) {
+    const ParamList& p = s.params;
+    const bool is_float = kind == "float";
+    if (!is_float && kind != "spectrum")
+        diag_.fail(s.where, "Texture \"" + excerpt(name) + "\": the second argument is \"float\" or \"spectrum\", got \"" +
+                                excerpt(kind) + "\"");
+    const std::string what = "Texture \"" + excerpt(name) + "\" (" + s.type + ")";
+    const json grey = is_float ? json(0.5) : rgb_json(glm::dvec3(0.5));
+    auto value_of = [&](const std::string& param, double fallback, bool float_param = false) -> json {
+        if (is_float || float_param) {
+            std::string tex;
+            const std::optional<double> x = p.get_float_or_texture(param, tex, diag_);
+            if (!x) return fallback;
+            if (tex.empty()) return *x;
+            const auto it = float_textures_.find(tex);
+            if (it == float_textures_.end()) diag_.fail(s.where, what + ": no float texture named \"" + excerpt(tex) + "\"");
+            return it->second;
+        }
+        const std::optional<SpectrumValue> v = p.get_spectrum(param, diag_);
+        if (!v) return rgb_json(glm::dvec3(fallback));
+        if (v->kind != SpectrumValue::Kind::Texture) return rgb_json(spectrum_rgb(*v, what));
+        const auto it = spectrum_textures_.find(v->name);
+        if (it == spectrum_textures_.end()) diag_.fail(v->where, what + ": no spectrum texture named \"" + excerpt(v->name) + "\"");
+        return it->second;
+    };
+    auto is_constant = [](const json& j) { return j.is_number() || j.is_array(); };
+    auto times = [](const json& a, double k) -> json {
+        if (a.is_number()) return a.get<double>() * k;
+        return json::array({a[0].get<double>() * k, a[1].get<double>() * k, a[2].get<double>() * k});
+    };
+    if (const std::string mapping = p.get_string("mapping", "uv", diag_); mapping != "uv")
+        diag_.warn(s.where, "texture mapping " + mapping, what + ": mapping \"" + excerpt(mapping) + "\" is not supported (uv used)");
+    json out = grey;
+    if (s.type == "constant") {
+        out = value_of("value", 1.0);
+    } else if (s.type == "scale") {
+        // pbrt-v4: "scale" is a float texture whatever the kind of "tex".
+        const json tex = value_of("tex", 1.0), scale = value_of("scale", 1.0, true);
+        if (is_constant(tex) && scale.is_number()) out = times(tex, scale.get<double>());
+        else if (!is_constant(tex) && scale.is_number() && tex.contains("checker")) {
+            out = tex;
+            out["checker"]["a"] = times(tex["checker"]["a"], scale.get<double>());
+            out["checker"]["b"] = times(tex["checker"]["b"], scale.get<double>());
+        } else {
+            if (!(scale.is_number() && scale.get<double>() == 1.0))
+                diag_.warn(s.where, "texture scale of an image", what + ": scaling an image texture is not supported (the image is used unscaled)");
+            out = is_constant(tex) ? scale : tex;
+        }
+    } else if (s.type == "checkerboard") {
+        const json a = value_of("tex1", 1.0), b = value_of("tex2", 0.0);
+        const double us = p.get_float("uscale", 1.0, diag_), vs = p.get_float("vscale", 1.0, diag_);
+        const double ud = p.get_float("udelta", 0.0, diag_), vd = p.get_float("vdelta", 0.0, diag_);
+        if (p.get_int("dimension", 2, diag_) != 2)
+            diag_.warn(s.where, "checkerboard 3D", what + ": a 3D checkerboard is drawn as the 2D one in uv");
+        if (us != vs || ud != 0.0 || vd != 0.0)
+            diag_.warn(s.where, "checkerboard uv scale", what + ": different uscale/vscale or a udelta/vdelta are not supported (uscale used for both)");
+        if (!is_constant(a) || !is_constant(b)) {
+            diag_.warn(s.where, "checkerboard of textures", what + ": checks made of textures are not supported (their defaults 1 and 0 used)");
+        }
+        out = json{{"checker",
+                    {{"a", is_constant(a) ? a : (is_float ? json(1.0) : rgb_json(glm::dvec3(1.0)))},
+                     {"b", is_constant(b) ? b : (is_float ? json(0.0) : rgb_json(glm::dvec3(0.0)))},
+                     {"scale", us > 0.0 ? us : 1.0}}}};
+    } else if (s.type == "imagemap") {
+        const std::string file = p.get_string("filename", "", diag_);
+        if (file.empty()) diag_.fail(s.where, what + ": needs \"string filename\"");
+        const std::string ext = lower_extension(file);
+        std::error_code ec;
+        if (!std::filesystem::is_regular_file(files_.resolve(file), ec))
+            diag_.fail(s.where, what + ": image \"" + excerpt(file) + "\" not found (looked for " + files_.resolve(file).string() + ")");
+        const std::string encoding = p.get_string("encoding", is_linear_format(ext) ? "linear" : "sRGB", diag_);
+        const std::string wrap = p.get_string("wrap", "repeat", diag_);
+        if (!is_eight_bit(ext) && !is_linear_format(ext)) {
+            diag_.warn(s.where, "image format " + ext, what + ": image format \"" + excerpt(ext) +
+                                                            "\" is not read (png, jpg, exr, hdr, pfm are); a constant 0.5 instead");
+        } else {
+            // Our loader decodes an 8-bit image as sRGB for colours and reads it as data for numbers.
+            const bool matches = is_linear_format(ext) || (is_float ? encoding == "linear" : encoding == "sRGB");
+            if (!matches)
+                diag_.warn(s.where, "image encoding", what + ": encoding \"" + excerpt(encoding) + "\" is approximated (an 8-bit image is read as " +
+                                                          (is_float ? "linear data" : "sRGB") + " for this use)");
+            json image{{"file", files_.json_path(file)}};
+            if (wrap == "clamp") image["wrap"] = "clamp";
+            else if (wrap == "black") {
+                diag_.warn(s.where, "wrap black", what + ": wrap \"black\" is approximated by \"clamp\"");
+                image["wrap"] = "clamp";
+            } else if (wrap != "repeat")
+                diag_.warn(s.where, "wrap " + wrap, what + ": wrap \"" + excerpt(wrap) + "\" is not supported (repeat used)");
+            out = json{{"image", image}};
+        }
+        if (p.get_float("scale", 1.0, diag_) != 1.0)
+            diag_.warn(s.where, "imagemap scale", what + ": \"scale\" is not supported (the image is used unscaled)");
+        if (p.get_bool("invert", false, diag_)) diag_.warn(s.where, "imagemap invert", what + ": \"invert\" is not supported (ignored)");
+        if (p.get_float("uscale", 1.0, diag_) != 1.0 || p.get_float("vscale", 1.0, diag_) != 1.0 ||
+            p.get_float("udelta", 0.0, diag_) != 0.0 || p.get_float("vdelta", 0.0, diag_) != 0.0)
+            diag_.warn(s.where, "imagemap uv scale", what + ": uscale/vscale/udelta/vdelta are not supported (ignored)");
+        // Filtering (MIP maps, EWA) changes only how texels are averaged: ours is bilinear.
+        p.find("filter");
+        p.find("maxanisotropy");
+    } else {
+        diag_.warn(s.where, "texture " + s.type, "Texture class \"" + excerpt(s.type) + "\" is not supported (a constant 0.5 instead)");
+        for (const Param& q : p.params) q.used = true;
+    }
+    p.warn_unused(what, diag_);
+    (is_float ? float_textures_ : spectrum_textures_)[name] = out;
+}
+
+}  // namespace sweeptrace::pbrt

@@ -1,0 +1,109 @@
+#include "raytracer/scene/pbrt_world.hpp"
+
+#include <cmath>
+
+#include <glm/matrix.hpp>
+#include <glm/common.hpp>
+#include <glm/vector_relational.hpp>
+
+#include "raytracer/input_error.hpp"
+#include "raytracer/scene/pbrt_transform.hpp"
+
+namespace sweeptrace::pbrt {
+
+using nlohmann::json;
+
+std::optional<json> transform_json(const glm::dmat4& m) {
+    const std::optional<AffineSteps> s = split_affine(m);
+    if (!s) return std::nullopt;
+    json steps = json::array();
+    auto rotate = [&](const glm::dmat3& r) {
+        glm::dvec3 axis;
+        double degrees = 0.0;
+        axis_angle(r, axis, degrees);
+        if (degrees != 0.0) steps.push_back({{"rotate", {{"axis", {axis.x, axis.y, axis.z}}, {"degrees", degrees}}}});
+    };
+    rotate(s->pre_rotation);
+    if (s->scale != glm::dvec3(1.0)) {
+        if (s->scale.x == s->scale.y && s->scale.y == s->scale.z) steps.push_back({{"scale", s->scale.x}});
+        else steps.push_back({{"scale", {s->scale.x, s->scale.y, s->scale.z}}});
+    }
+    rotate(s->rotation);
+    if (s->translation != glm::dvec3(0.0))
+        steps.push_back({{"translate", {s->translation.x, s->translation.y, s->translation.z}}});
+    return steps;
+}
+
+std::optional<std::string> WorldContext::material_for(const ShapeRecord& s, double area) {
+    const auto it = scene.materials.find(s.material);
+    if (it == scene.materials.end())
+        diag.fail(s.statement.where, "NamedMaterial \"" + excerpt(s.material) + "\": no material of that name (define it with MakeNamedMaterial)");
+    const bool invisible = scene.invisible.at(s.material);
+    if (!s.area_light) {
+        if (invisible) return std::nullopt;
+        doc["materials"][s.material] = it->second;
+        return s.material;
+    }
+    const Statement& light = s.area_light->statement;
+    const ParamList& p = light.params;
+    const std::string what = "AreaLightSource \"" + excerpt(light.type) + "\"";
+    if (light.type != "diffuse") {
+        diag.warn(light.where, "area light " + light.type, what + " is not supported (the shape does not emit)");
+        for (const Param& q : p.params) q.used = true;
+        if (invisible) return std::nullopt;
+        doc["materials"][s.material] = it->second;
+        return s.material;
+    }
+    glm::dvec3 l = materials.emitted(p, "L", what) * p.get_float("scale", 1.0, diag);
+    const bool two_sided = p.get_bool("twosided", false, diag);
+    std::string key = s.material + " + light (" + light.where.short_text() + ")";
+    if (const double power = p.get_float("power", -1.0, diag); power > 0.0) {
+        // pbrt-v4: radiance scaled so the shape emits `power` watts: L * power / (sides pi area),
+        // the spectrum's own brightness normalised to 1 for rgb (its illuminant's).
+        if (area > 0.0) l *= power / ((two_sided ? 2.0 : 1.0) * 3.14159265358979323846 * area);
+        key += " shape (" + s.statement.where.short_text() + ")";
+    }
+    if (p.has("filename")) {
+        p.find("filename");
+        diag.warn(light.where, "area light image", what + ": an emission image \"filename\" is not supported (ignored: uniform L)");
+    }
+    p.warn_unused(what, diag);
+    json m = invisible ? json{{"type", "emissive"}} : it->second;
+    if (l == glm::dvec3(0.0)) {
+        if (invisible) return std::nullopt;
+        doc["materials"][s.material] = it->second;
+        return s.material;
+    }
+    m["emission"] = {l.r, l.g, l.b};
+    if (two_sided) m["two_sided"] = true;
+    doc["materials"][key] = m;
+    return key;
+}
+
+json write_world(const PbrtScene& scene, MaterialTranslator& materials, const FileNames& files, Diagnostics& diag,
+                 std::string& film_filename) {
+    WorldContext w{scene, materials, files, diag, glm::dmat4(1.0), nlohmann::json::object(), 0};
+    w.doc = json::object();
+    w.doc["description"] = "converted from the pbrt-v4 scene " + scene.main_file.filename().string() + " by sweeptrace";
+    w.doc["materials"] = json::object();
+    w.doc["objects"] = json::array();
+    const glm::dmat4 world_from_camera = glm::inverse(scene.camera_from_world);
+    if (det3(world_from_camera) > 0.0) {
+        bool has_mesh_file = false;
+        for (const ShapeRecord& s : scene.shapes) has_mesh_file |= s.statement.type == "plymesh";
+        if (has_mesh_file) {
+            const Where at = scene.camera ? scene.camera->where : scene.shapes.front().statement.where;
+            diag.warn(at, "mirrored image",
+                      "pbrt's camera space is left-handed and this scene does not flip it (no `Scale -1 1 1`); its plymesh files "
+                      "cannot be mirrored in our JSON, so the image is pbrt's mirrored left to right");
+        } else {
+            w.mirror[0][0] = -1.0;
+        }
+    }
+    write_camera_and_film(w, film_filename);
+    for (const ShapeRecord& s : scene.shapes) write_shape(w, s);
+    for (const LightRecord& l : scene.lights) write_light(w, l);
+    return w.doc;
+}
+
+}  // namespace sweeptrace::pbrt

@@ -1,0 +1,57 @@
+#pragma once
+// PbrtScene -> our scene JSON document. One decision is made for the whole scene here: handedness.
+//
+// pbrt's camera space is left-handed (x to the image's right, y up, z forward: a plain `LookAt`
+// puts world +x on the right when looking down +z with +y up), ours is right-handed (right =
+// forward x up). When pbrt's world-from-camera matrix keeps orientation (det > 0, a plain
+// LookAt), the same world seen by our camera is the mirror image of pbrt's; exporters that
+// start with `Scale -1 1 1` (det < 0; Bitterli's scenes, Blender's exporter) need nothing.
+// So for det > 0 the whole world, camera, lights and shapes, is mirrored (x -> -x) on the way in,
+// which makes the image pbrt's. A shape whose mirror we cannot write (our JSON transforms do not
+// mirror) is drawn by an equal shape: spheres, disks and cylinders are symmetric in their own x,
+// triangles are written vertex by vertex. A mesh file cannot be mirrored, so with any plymesh in
+// such a scene the world is kept and the warning says the image is pbrt's mirrored left to right.
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "raytracer/scene/pbrt_diagnostics.hpp"
+#include "raytracer/scene/pbrt_materials.hpp"
+#include "raytracer/scene/pbrt_scene.hpp"
+
+namespace sweeptrace::pbrt {
+
+// At most this many triangles written one by one (trianglemesh, bilinearmesh): our JSON has no
+// inline meshes, and each JSON triangle costs about 1 KB while loading.
+inline constexpr std::size_t kMaxInlineTriangles = 200000;
+
+struct WorldContext {
+    const PbrtScene& scene;
+    MaterialTranslator& materials;
+    const FileNames& files;
+    Diagnostics& diag;
+    glm::dmat4 mirror{1.0};  // applied to the whole world: identity or x -> -x
+    nlohmann::json doc;
+    std::size_t triangles = 0;
+
+    // The output name of the material a shape uses, with its area light's emission added (a new
+    // material per material and light); nullopt when the shape is invisible (pbrt's "interface").
+    // `area` is the shape's world area, for "power".
+    std::optional<std::string> material_for(const ShapeRecord& s, double area);
+};
+
+// Our JSON for the scene; `film_filename` gets the Film's "filename" (pbrt's default "pbrt.exr").
+nlohmann::json write_world(const PbrtScene& scene, MaterialTranslator& materials, const FileNames& files, Diagnostics& diag,
+                           std::string& film_filename);
+
+// Parts, each in its own file: camera, film, sampler, filter, integrator (pbrt_camera.cpp);
+// one shape (pbrt_shapes.cpp); one light (pbrt_lights.cpp).
+void write_camera_and_film(WorldContext& w, std::string& film_filename);
+void write_shape(WorldContext& w, const ShapeRecord& shape);
+void write_light(WorldContext& w, const LightRecord& light);
+
+// A transform's JSON steps (rotate, scale, rotate, translate; identities left out), nullopt
+// when it mirrors or is singular.
+std::optional<nlohmann::json> transform_json(const glm::dmat4& m);
+
+}  // namespace sweeptrace::pbrt

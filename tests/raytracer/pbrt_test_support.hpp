@@ -1,0 +1,41 @@
+#pragma once
+// pbrt scenes written for the tests: the text in a temporary folder, converted to our JSON (as
+// `sweeptrace convert` does, without loading it) or loaded as a Scene. A camera that keeps pbrt's
+// orientation (the default) mirrors the world x -> -x (scene/pbrt_world.hpp), which the
+// expectations take into account; kFlipped starts a scene with `Scale -1 1 1` so nothing is
+// mirrored.
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "raytracer/scene/pbrt_import.hpp"
+#include "scene_test_files.hpp"
+
+namespace sweeptrace::test {
+
+inline constexpr const char* kFlipped = "Scale -1 1 1\n";
+
+struct Converted {
+    nlohmann::json doc;
+    std::vector<std::string> warnings;
+};
+
+inline Converted convert_text(const TempDir& dir, const std::string& text, bool strict = false) {
+    const auto file = dir.write("scene.pbrt", text);
+    const PbrtConversion c = convert_pbrt(file, dir.path() / "scene.json", strict, false);
+    return {nlohmann::json::parse(c.json_text), c.warnings};
+}
+
+// A world block with one shape of material `white`, for tests of everything around it.
+inline std::string world_with(const std::string& body) {
+    return std::string("WorldBegin\nMakeNamedMaterial \"white\" \"string type\" \"diffuse\"\nNamedMaterial \"white\"\n") + body + "\n";
+}
+
+inline bool has_warning(const std::vector<std::string>& warnings, const std::string& part) {
+    for (const std::string& w : warnings)
+        if (w.find(part) != std::string::npos) return true;
+    return false;
+}
+
+}  // namespace sweeptrace::test

@@ -1,0 +1,283 @@
+// What the pbrt importer writes for each supported shape, material, texture, light and film
+// setting (the JSON `sweeptrace convert` shows), and its warnings: one per kind, naming
+// file:line and what was done instead, errors under --strict.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+
+#include <glm/geometric.hpp>
+
+#include "pbrt_test_support.hpp"
+#include "raytracer/image/image.hpp"
+#include "raytracer/input_error.hpp"
+
+using namespace sweeptrace;
+using sweeptrace::test::convert_text;
+using sweeptrace::test::has_warning;
+using sweeptrace::test::kFlipped;
+using sweeptrace::test::TempDir;
+using sweeptrace::test::world_with;
+using nlohmann::json;
+
+namespace {
+
+json material_of(const TempDir& dir, const std::string& material) {
+    const auto c = convert_text(dir, std::string(kFlipped) + "WorldBegin\n" + material + "\nShape \"sphere\"\n");
+    const std::string name = c.doc["objects"][0]["material"];
+    return c.doc["materials"][name];
+}
+
+json rgb(double r, double g, double b) { return json::array({r, g, b}); }
+
+}  // namespace
+
+TEST_CASE("pbrt materials: diffuse, dielectric, thindielectric, coateddiffuse, interface", "[pbrt]") {
+    const TempDir dir;
+    CHECK(material_of(dir, "Material \"diffuse\" \"rgb reflectance\" [0.1 0.2 0.3]") == json({{"type", "diffuse"}, {"albedo", rgb(0.1, 0.2, 0.3)}}));
+    CHECK(material_of(dir, "Material \"diffuse\"") == json({{"type", "diffuse"}, {"albedo", rgb(0.5, 0.5, 0.5)}}));
+    CHECK(material_of(dir, "Material \"dielectric\" \"float eta\" 1.33") == json({{"type", "dielectric"}, {"ior", 1.33}}));
+    CHECK(material_of(dir, "Material \"thindielectric\"") == json({{"type", "thin_dielectric"}, {"ior", 1.5}}));
+    // Rough: pbrt's alpha = sqrt(roughness) (remapped), ours alpha = r^2: r = roughness^(1/4).
+    const json rough = material_of(dir, "Material \"dielectric\" \"float roughness\" 0.0625");
+    CHECK(rough["type"] == "rough_dielectric");
+    CHECK(rough["roughness"].get<double>() == Approx(0.5));
+    const json raw = material_of(dir, "Material \"dielectric\" \"float roughness\" 0.0625 \"bool remaproughness\" false");
+    CHECK(raw["roughness"].get<double>() == Approx(0.25));  // alpha = 0.0625 itself
+    const json coated = material_of(dir, "Material \"coateddiffuse\" \"rgb reflectance\" [0.4 0.5 0.6] \"float roughness\" 0");
+    CHECK(coated == json({{"type", "coated_diffuse"}, {"albedo", rgb(0.4, 0.5, 0.6)}, {"ior", 1.5}, {"roughness", 0.0}}));
+    // An interface marks a medium boundary: the shape is left out.
+    const auto c = convert_text(dir, std::string(kFlipped) + "WorldBegin\nMaterial \"interface\"\nShape \"sphere\"\n");
+    CHECK(c.doc["objects"].empty());
+    CHECK(c.warnings.empty());
+}
+
+TEST_CASE("pbrt materials: conductor as a named metal, as eta/k rgb, from reflectance", "[pbrt]") {
+    const TempDir dir;
+    CHECK(material_of(dir, "Material \"conductor\" \"spectrum eta\" \"metal-Au-eta\" \"spectrum k\" \"metal-Au-k\" \"float roughness\" 0") ==
+          json({{"type", "conductor"}, {"metal", "Au"}, {"roughness", 0.0}}));
+    CHECK(material_of(dir, "Material \"conductor\"")["metal"] == "Cu");  // pbrt-v4's default
+    for (const char* m : {"Ag", "Al", "Au", "Cu", "MgO", "TiO2"}) {
+        const std::string s = std::string("Material \"conductor\" \"spectrum eta\" \"metal-") + m + "-eta\" \"spectrum k\" \"metal-" + m + "-k\"";
+        CHECK(material_of(dir, s)["metal"] == m);
+    }
+    // Brass is not among our named metals: copper, with a warning.
+    const auto brass = convert_text(dir, std::string(kFlipped) + "WorldBegin\nMaterial \"conductor\" \"spectrum eta\" \"metal-CuZn-eta\" \"spectrum k\" \"metal-CuZn-k\"\nShape \"sphere\"\n");
+    CHECK(brass.doc["materials"][brass.doc["objects"][0]["material"].get<std::string>()]["metal"] == "Cu");
+    CHECK(has_warning(brass.warnings, "brass (metal-CuZn) is not among our named metals"));
+    const json rgbk = material_of(dir, "Material \"conductor\" \"rgb eta\" [0.2 0.9 1.1] \"rgb k\" [3.9 2.4 2.2] \"float roughness\" 0.01");
+    CHECK(rgbk["eta"] == rgb(0.2, 0.9, 1.1));
+    CHECK(rgbk["k"] == rgb(3.9, 2.4, 2.2));
+    CHECK(rgbk["roughness"].get<double>() == Approx(std::pow(0.01, 0.25)));
+    // reflectance r: eta 1, k = 2 sqrt(r) / sqrt(1 - r), whose normal-incidence Fresnel is r.
+    const json refl = material_of(dir, "Material \"conductor\" \"rgb reflectance\" [0.5 0.5 0.5]");
+    CHECK(refl["eta"] == rgb(1, 1, 1));
+    const double k = refl["k"][0].get<double>();
+    CHECK(k == Approx(2.0 * std::sqrt(0.5) / std::sqrt(0.5)));
+    CHECK(((1 - 1) * (1 - 1) + k * k) / ((1 + 1) * (1 + 1) + k * k) == Approx(0.5));
+}
+
+TEST_CASE("pbrt materials: anisotropic roughness and mix are approximated with a warning", "[pbrt]") {
+    const TempDir dir;
+    const auto c = convert_text(dir, std::string(kFlipped) +
+                                         "WorldBegin\nMaterial \"conductor\" \"float uroughness\" 0.01 \"float vroughness\" 0.04 \"bool remaproughness\" false\n"
+                                         "Shape \"sphere\"\n");
+    const json m = c.doc["materials"][c.doc["objects"][0]["material"].get<std::string>()];
+    CHECK(m["roughness"].get<double>() == Approx(std::sqrt(std::sqrt(0.01 * 0.04))));
+    CHECK(has_warning(c.warnings, "scene.pbrt:3: material \"conductor\": uroughness != vroughness"));
+    const auto mix = convert_text(dir, world_with("MakeNamedMaterial \"a\" \"string type\" \"dielectric\"\n"
+                                                  "MakeNamedMaterial \"m\" \"string type\" \"mix\" \"string materials\" [\"white\" \"a\"] \"float amount\" 0.8\n"
+                                                  "NamedMaterial \"m\"\nShape \"sphere\""));
+    CHECK(mix.doc["materials"]["m"]["type"] == "dielectric");
+    CHECK(has_warning(mix.warnings, "a mix is approximated by the material of the larger weight (\"a\")"));
+}
+
+TEST_CASE("pbrt textures: imagemap, checkerboard, scale, constant", "[pbrt]") {
+    const TempDir dir;
+    dir.write("wood.png", "not read by the converter");
+    const auto c = convert_text(dir, std::string(kFlipped) +
+                                         "WorldBegin\nTexture \"w\" \"spectrum\" \"imagemap\" \"string filename\" \"wood.png\" \"string wrap\" \"clamp\"\n"
+                                         "Texture \"c\" \"spectrum\" \"checkerboard\" \"float uscale\" 4 \"float vscale\" 4 \"rgb tex1\" [1 0 0] \"rgb tex2\" [0 0 1]\n"
+                                         "Texture \"half\" \"spectrum\" \"scale\" \"texture tex\" \"c\" \"float scale\" 0.5\n"
+                                         "Texture \"k\" \"float\" \"constant\" \"float value\" 0.0625\n"
+                                         "Material \"diffuse\" \"texture reflectance\" \"w\"\nShape \"sphere\"\n"
+                                         "Material \"diffuse\" \"texture reflectance\" \"half\"\nShape \"sphere\"\n"
+                                         "Material \"dielectric\" \"texture roughness\" \"k\"\nShape \"sphere\"\n");
+    auto mat = [&](int i) { return c.doc["materials"][c.doc["objects"][i]["material"].get<std::string>()]; };
+    CHECK(mat(0)["albedo"] == json({{"image", {{"file", "wood.png"}, {"wrap", "clamp"}}}}));
+    CHECK(mat(1)["albedo"] == json({{"checker", {{"a", rgb(0.5, 0, 0)}, {"b", rgb(0, 0, 0.5)}, {"scale", 4.0}}}}));
+    CHECK(mat(2)["roughness"].get<double>() == Approx(0.5));
+    CHECK(c.warnings.empty());
+}
+
+TEST_CASE("pbrt shapes: sphere, disk, cylinder, trianglemesh, bilinearmesh, plymesh", "[pbrt]") {
+    const TempDir dir;
+    dir.write("m.ply", "ply\n");
+    const auto c = convert_text(dir, std::string(kFlipped) +
+                                         "WorldBegin\nShape \"sphere\" \"float radius\" 2\n"
+                                         "Shape \"disk\" \"float radius\" 3 \"float height\" 1\n"
+                                         "Shape \"cylinder\" \"float radius\" 0.5 \"float zmin\" 0 \"float zmax\" 4\n"
+                                         "Shape \"trianglemesh\" \"point3 P\" [0 0 0 1 0 0 0 1 0] \"integer indices\" [0 1 2]\n"
+                                         "Shape \"bilinearmesh\" \"point3 P\" [0 0 0 1 0 0 0 1 0 1 1 0]\n"
+                                         "Translate 0 0 7\nShape \"plymesh\" \"string filename\" \"m.ply\"\n");
+    const json& o = c.doc["objects"];
+    REQUIRE(o.size() == 7);
+    CHECK(o[0]["type"] == "sphere");
+    CHECK(o[0]["radius"] == 2.0);
+    CHECK(o[1] == json({{"type", "disk"}, {"center", {0.0, 0.0, 1.0}}, {"normal", {0.0, 0.0, 1.0}}, {"radius", 3.0}, {"material", o[1]["material"]}}));
+    CHECK(o[2]["type"] == "cylinder");
+    CHECK(o[2]["height"] == 4.0);
+    CHECK(o[2]["center"] == json({0.0, 2.0, 0.0}));
+    CHECK(o[2]["transform"][0]["rotate"]["degrees"].get<double>() == Approx(90.0));
+    CHECK(o[3]["type"] == "triangle");
+    CHECK(o[3]["a"] == json({0.0, 0.0, 0.0}));
+    CHECK(o[3]["b"] == json({1.0, 0.0, 0.0}));
+    CHECK(o[3]["c"] == json({0.0, 1.0, 0.0}));
+    // The patch p00 p10 p01 p11 as (p00 p10 p11), (p00 p11 p01).
+    CHECK(o[4]["c"] == json({1.0, 1.0, 0.0}));
+    CHECK(o[5]["b"] == json({1.0, 1.0, 0.0}));
+    CHECK(o[6] == json({{"type", "mesh"}, {"file", "m.ply"}, {"material", o[6]["material"]}, {"transform", {{{"translate", {0.0, 0.0, 7.0}}}}}}));
+    CHECK(has_warning(c.warnings, "scene.pbrt:5: Shape \"cylinder\": pbrt's cylinder is open"));
+}
+
+TEST_CASE("pbrt shapes: the emitting side of triangles follows ReverseOrientation and the world mirror", "[pbrt]") {
+    const TempDir dir;
+    auto front_z = [&](const std::string& prefix, const std::string& attrs) {
+        const auto c = convert_text(dir, prefix + "WorldBegin\nAreaLightSource \"diffuse\"\n" + attrs +
+                                             "Shape \"trianglemesh\" \"point3 P\" [0 0 0 1 0 0 0 1 0] \"integer indices\" [0 1 2]\n");
+        const json& t = c.doc["objects"][0];
+        auto v = [&](const char* k) { return glm::dvec3(t[k][0], t[k][1], t[k][2]); };
+        return glm::cross(v("b") - v("a"), v("c") - v("a")).z;  // pbrt's normal: +z for this order
+    };
+    CHECK(front_z(kFlipped, "") > 0.0);
+    CHECK(front_z(kFlipped, "ReverseOrientation\n") < 0.0);
+    // A transform that swaps handedness turns pbrt's normal over (the plane z = 0 itself is kept).
+    CHECK(front_z(kFlipped, "Scale 1 1 -1\n") < 0.0);
+    // No `Scale -1 1 1`: the world is mirrored in x, which keeps a normal along z.
+    CHECK(front_z("", "") > 0.0);
+}
+
+TEST_CASE("pbrt lights: area, point, spot, distant, infinite", "[pbrt]") {
+    const TempDir dir;
+    const auto c = convert_text(dir, std::string(kFlipped) +
+                                         "WorldBegin\n"
+                                         "LightSource \"point\" \"rgb I\" [1 2 3] \"float scale\" 2 \"point3 from\" [1 2 3]\n"
+                                         "LightSource \"spot\" \"point3 from\" [0 5 0] \"point3 to\" [0 0 0] \"float coneangle\" 40 \"float conedeltaangle\" 10\n"
+                                         "LightSource \"distant\" \"point3 from\" [0 1 0] \"point3 to\" [0 0 0] \"rgb L\" [3 3 3]\n"
+                                         "LightSource \"infinite\" \"rgb L\" [0.1 0.2 0.3]\n"
+                                         "AttributeBegin\nAreaLightSource \"diffuse\" \"rgb L\" [4 5 6] \"float scale\" 0.5 \"bool twosided\" true\n"
+                                         "Shape \"sphere\"\nAttributeEnd\n");
+    const json& l = c.doc["lights"];
+    REQUIRE(l.size() == 3);
+    CHECK(l[0]["type"] == "point");
+    CHECK(l[0]["intensity"] == rgb(2, 4, 6));
+    CHECK(l[0]["position"] == rgb(1, 2, 3));
+    CHECK(l[1]["type"] == "spot");
+    CHECK(l[1]["direction"] == rgb(0, -5, 0));
+    CHECK(l[1]["cone_angle"] == 40.0);
+    CHECK(l[1]["falloff_start"] == 30.0);
+    CHECK(l[1]["intensity"] == rgb(1, 1, 1));
+    CHECK(l[2] == json({{"type", "directional"}, {"direction", rgb(0, -1, 0)}, {"irradiance", rgb(3, 3, 3)}, {"name", l[2]["name"]}}));
+    CHECK(c.doc["background"] == json({{"color", rgb(0.1, 0.2, 0.3)}}));
+    const json m = c.doc["materials"][c.doc["objects"][0]["material"].get<std::string>()];
+    CHECK(m["emission"] == rgb(2, 2.5, 3));
+    CHECK(m["two_sided"] == true);
+    CHECK(m["albedo"] == rgb(0.5, 0.5, 0.5));  // an area light keeps its surface's material
+    // power: radiance so that the one-sided disk of area pi emits 10 W: L 10 / (pi * pi).
+    const auto p = convert_text(dir, std::string(kFlipped) + "WorldBegin\nAreaLightSource \"diffuse\" \"float power\" 10\nShape \"disk\"\n");
+    const json pm = p.doc["materials"][p.doc["objects"][0]["material"].get<std::string>()];
+    CHECK(pm["emission"][0].get<double>() == Approx(10.0 / (M_PI * M_PI)));
+}
+
+TEST_CASE("pbrt film, sampler, integrator and pixel filter", "[pbrt]") {
+    const TempDir dir;
+    const auto c = convert_text(dir, "Film \"rgb\" \"integer xresolution\" 64 \"integer yresolution\" 48 \"string filename\" \"out.exr\"\n"
+                                     "Sampler \"independent\" \"integer pixelsamples\" 8\nIntegrator \"path\" \"integer maxdepth\" 3\n"
+                                     "PixelFilter \"triangle\" \"float xradius\" 1.5 \"float yradius\" 1.5\nWorldBegin\n");
+    const json& f = c.doc["film"];
+    CHECK(f["width"] == 64);
+    CHECK(f["height"] == 48);
+    CHECK(f["spp"] == 8);
+    CHECK(f["sampler"] == "independent");
+    CHECK(f["max_depth"] == 4);  // pbrt's maxdepth counts bounces, ours vertices after the camera
+    CHECK(f["filter"] == json({{"type", "tent"}, {"radius", 1.5}}));
+    // pbrt-v4's defaults: 1280x720, 16 spp, maxdepth 5, a Gaussian filter of radius 1.5.
+    const auto d = convert_text(dir, "WorldBegin\n");
+    CHECK(d.doc["film"] == json({{"width", 1280}, {"height", 720}, {"spp", 16}, {"max_depth", 6},
+                                 {"filter", {{"type", "gaussian"}, {"radius", 1.5}, {"sigma", 0.5}}}}));
+    CHECK(d.doc["camera"]["fov"].get<double>() == Approx(90.0));  // 720 < 1280: fov spans y
+    const auto mit = convert_text(dir, "PixelFilter \"mitchell\" \"float B\" 0 \"float C\" 0.5\nWorldBegin\n");
+    CHECK(mit.doc["film"]["filter"] == json({{"type", "mitchell"}, {"radius", 2.0}, {"b", 0.0}, {"c", 0.5}}));
+    const auto box = convert_text(dir, "PixelFilter \"box\"\nWorldBegin\n");
+    CHECK(box.doc["film"]["filter"] == json({{"type", "box"}, {"radius", 0.5}}));
+}
+
+TEST_CASE("pbrt warnings: one per kind, naming the first place; --strict makes them errors", "[pbrt]") {
+    const TempDir dir;
+    const std::string text = world_with("Shape \"curve\" \"point3 P\" [0 0 0 1 1 1 2 2 2 3 3 3]\nShape \"curve\"\n"
+                                        "Shape \"sphere\" \"float zmax\" 0.5 \"float frobs\" 2\nMakeNamedMedium \"fog\" \"string type\" \"homogeneous\"");
+    const auto c = convert_text(dir, text);
+    REQUIRE(c.warnings.size() == 4);
+    CHECK(c.warnings[0] == "" + (dir.path() / "scene.pbrt").string() + ":4: Shape \"curve\" is not supported (ignored) (and 1 more like it)");
+    CHECK(has_warning(c.warnings, ":6: Shape \"sphere\": a partial shape"));
+    CHECK(has_warning(c.warnings, ":6: Shape \"sphere\": parameter \"float frobs\" is not supported (ignored)"));
+    CHECK(has_warning(c.warnings, ":7: MakeNamedMedium: participating media are not supported"));
+    try {
+        convert_text(dir, text, true);
+        FAIL("--strict accepted an unsupported shape");
+    } catch (const InputError& e) {
+        CHECK_THAT(std::string(e.what()), Catch::EndsWith("scene.pbrt:4: Shape \"curve\" is not supported (ignored) (--strict makes this an error)"));
+    }
+    // A scene using only supported features converts cleanly under --strict.
+    CHECK(convert_text(dir, world_with("Shape \"sphere\""), true).warnings.empty());
+}
+
+TEST_CASE("pbrt scenes shaped like Bitterli's exports: a Transform camera that flips x, converted without a warning", "[pbrt]") {
+    const TempDir dir;
+    // The header of the "veach-mis" scene (Bitterli's rendering resources, pbrt-v4 version): the
+    // camera matrix has determinant -1, so the world is taken as it is.
+    const auto c = convert_text(dir, "Integrator \"path\" \"integer maxdepth\" [ 3 ]\n"
+                                     "Transform [ 4.37113e-8 -0 -1 -0 -0 1 -0 -0 -1 -0 -4.37113e-8 -0 -0 -3.5 28.2792 1 ]\n"
+                                     "Sampler \"sobol\" \"integer pixelsamples\" 64\n"
+                                     "PixelFilter \"triangle\" \"float xradius\" [ 1 ] \"float yradius\" [ 1 ]\n"
+                                     "Film \"rgb\" \"string filename\" [ \"veach-mis.png\" ] \"integer yresolution\" [ 720 ] \"integer xresolution\" [ 1280 ]\n"
+                                     "Camera \"perspective\" \"float fov\" [ 20.114292 ]\nWorldBegin\n"
+                                     "MakeNamedMaterial \"Smooth\" \"string type\" [ \"conductor\" ] \"float roughness\" [ 0.01 ]\n"
+                                     "    \"bool remaproughness\" [ false ] \"rgb eta\" [ 0.2 0.92 1.1 ] \"rgb k\" [ 3.91 2.45 2.14 ]\n"
+                                     "NamedMaterial \"Smooth\"\n"
+                                     "Shape \"trianglemesh\" \"point3 P\" [ -1 0 -1 1 0 -1 1 0 1 -1 0 1 ] \"integer indices\" [ 0 1 2 0 2 3 ]\n"
+                                     "    \"normal N\" [ 0 1 0 0 1 0 0 1 0 0 1 0 ] \"point2 uv\" [ 0 0 1 0 1 1 0 1 ]\n");
+    CHECK(c.warnings.empty());
+    const json& cam = c.doc["camera"];
+    CHECK(cam["position"][0].get<double>() == Approx(28.2792));
+    CHECK(cam["position"][1].get<double>() == Approx(3.5));
+    CHECK(cam["position"][2].get<double>() == Approx(0.0).margin(1e-5));  // 4.37e-8 x 28.28 of the matrix
+    const glm::dvec3 dir_(cam["look_at"][0].get<double>() - cam["position"][0].get<double>(),
+                          cam["look_at"][1].get<double>() - cam["position"][1].get<double>(),
+                          cam["look_at"][2].get<double>() - cam["position"][2].get<double>());
+    CHECK(glm::normalize(dir_).x == Approx(-1.0));
+    CHECK(c.doc["film"]["max_depth"] == 4);
+    CHECK(c.doc["materials"]["Smooth"]["roughness"].get<double>() == Approx(0.1));
+}
+
+TEST_CASE("pbrt infinite light from a 2:1 map: pbrt-v3's z-up mapping as our rotate about +y", "[pbrt]") {
+    const TempDir dir;
+    Image sky(8, 4);
+    for (auto& p : sky.pixels) p = glm::vec3(0.5f, 0.6f, 0.7f);
+    write_image(sky, dir.path() / "sky.pfm");
+    const std::string light = "WorldBegin\nAttributeBegin\nRotate -90 1 0 0\nLightSource \"infinite\" \"string filename\" \"sky.pfm\" \"float scale\" 2\nAttributeEnd\n";
+    // A plain camera: the world is mirrored, which undoes the mirror between the two mappings.
+    const auto c = convert_text(dir, light);
+    CHECK(c.warnings.empty());
+    const json& env = c.doc["background"]["environment"];
+    CHECK(env["file"] == "sky.pfm");
+    CHECK(env["scale"] == 2.0);
+    CHECK(env["rotate"].get<double>() == Approx(-90.0));
+    // A camera that flips x keeps the world: the map would need a mirror, which our environment lacks.
+    const auto f = convert_text(dir, std::string(kFlipped) + light);
+    CHECK(has_warning(f.warnings, "the map's orientation is not a turn about our +y"));
+    // A square map is pbrt-v4's equal-area mapping: its mean as a constant.
+    write_image(Image(4, 4), dir.path() / "square.pfm");
+    const auto s = convert_text(dir, "WorldBegin\nLightSource \"infinite\" \"string filename\" \"square.pfm\"\n");
+    CHECK(s.doc["background"] == json({{"color", rgb(0, 0, 0)}}));
+    CHECK(has_warning(s.warnings, "equal-area octahedral mapping"));
+}
