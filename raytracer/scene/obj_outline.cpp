@@ -5,27 +5,9 @@
 #include <string_view>
 
 #include "raytracer/input_error.hpp"
+#include "raytracer/scene/text_file.hpp"
 
 namespace sweeptrace {
-
-namespace {
-
-bool blank(char c) { return c == ' ' || c == '\t'; }
-
-// The whitespace-separated words of one line (tinyobjloader separates by space and tab only).
-std::vector<std::string_view> words(std::string_view line) {
-    std::vector<std::string_view> out;
-    std::size_t i = 0;
-    while (i < line.size()) {
-        while (i < line.size() && blank(line[i])) ++i;
-        const std::size_t start = i;
-        while (i < line.size() && !blank(line[i])) ++i;
-        if (i > start) out.push_back(line.substr(start, i - start));
-    }
-    return out;
-}
-
-}  // namespace
 
 // Not "nan", "inf" or hex, which strtod would take and tinyobjloader would read as 0.
 bool obj_decimal(std::string_view w) {

@@ -24,7 +24,6 @@ using nlohmann::json;
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 
 long long clamped(Diagnostics& d, const Where& at, const std::string& what, long long v, long long lo, long long hi) {
     if (v >= lo && v <= hi) return v;

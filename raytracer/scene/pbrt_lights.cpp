@@ -32,7 +32,6 @@ using nlohmann::json;
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 
 json vec(const glm::dvec3& v) { return {v.x, v.y, v.z}; }
 

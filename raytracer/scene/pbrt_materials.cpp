@@ -13,9 +13,9 @@ namespace sweeptrace::pbrt {
 
 using nlohmann::json;
 
-namespace {
-
 json rgb_json(const glm::dvec3& c) { return json::array({c.r, c.g, c.b}); }
+
+namespace {
 
 }  // namespace
 

@@ -8,12 +8,16 @@
 #include <map>
 #include <string>
 
+#include <glm/vec3.hpp>
 #include <nlohmann/json.hpp>
 
 #include "raytracer/scene/pbrt_diagnostics.hpp"
 #include "raytracer/scene/pbrt_scene.hpp"
 
 namespace sweeptrace::pbrt {
+
+// An RGB triple as our JSON writes colours: [r, g, b].
+nlohmann::json rgb_json(const glm::dvec3& c);
 
 // A file named in the scene: resolved from the main file's folder (as pbrt-v4 resolves every
 // relative name), written relative to the output's folder.

@@ -18,6 +18,10 @@
 
 namespace sweeptrace::pbrt {
 
+// pbrt files give angles in degrees; the importer converts in double (geometry/warps.hpp's kPi is
+// the renderer's float one).
+inline constexpr double kPi = 3.14159265358979323846;
+
 // A directive with a type name and parameters: `Shape "sphere" "float radius" 2`.
 struct Statement {
     std::string type;

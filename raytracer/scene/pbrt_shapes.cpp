@@ -28,7 +28,6 @@ using nlohmann::json;
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 
 glm::dmat4 object_mirror_x() {
     glm::dmat4 m(1.0);

@@ -37,7 +37,6 @@ std::string FileNames::json_path(const std::string& name) const {
 
 namespace {
 
-json rgb_json(const glm::dvec3& c) { return json::array({c.r, c.g, c.b}); }
 
 std::string lower_extension(const std::string& file) {
     std::string ext = std::filesystem::path(file).extension().string();

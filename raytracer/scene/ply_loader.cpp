@@ -72,17 +72,6 @@ std::string shown(double v) {
 
 bool is_integer(Scalar t) { return t != Scalar::Float32 && t != Scalar::Float64; }
 
-std::vector<std::string_view> words(std::string_view line) {
-    std::vector<std::string_view> out;
-    std::size_t i = 0;
-    while (i < line.size()) {
-        while (i < line.size() && (line[i] == ' ' || line[i] == '\t')) ++i;
-        const std::size_t start = i;
-        while (i < line.size() && line[i] != ' ' && line[i] != '\t') ++i;
-        if (i > start) out.push_back(line.substr(start, i - start));
-    }
-    return out;
-}
 
 struct Header {
     Format format = Format::Ascii;

@@ -47,4 +47,17 @@ std::string read_text_file(const std::filesystem::path& file, const char* what, 
     throw InputError(file.string() + ": cannot read " + what + ": " + reason_or(std::strerror(errno), "read error"));
 }
 
+std::vector<std::string_view> words(std::string_view line) {
+    const auto blank = [](char c) { return c == ' ' || c == '\t'; };
+    std::vector<std::string_view> out;
+    std::size_t i = 0;
+    while (i < line.size()) {
+        while (i < line.size() && blank(line[i])) ++i;
+        const std::size_t start = i;
+        while (i < line.size() && !blank(line[i])) ++i;
+        if (i > start) out.push_back(line.substr(start, i - start));
+    }
+    return out;
+}
+
 }  // namespace sweeptrace

@@ -2,6 +2,8 @@
 #include <cstdint>
 #include <filesystem>
 #include <string>
+#include <string_view>
+#include <vector>
 
 namespace sweeptrace {
 
@@ -19,5 +21,9 @@ void check_input_file(const std::filesystem::path& file, const char* what, std::
 // The whole file as bytes, after check_input_file. Throws InputError as above, or when reading fails.
 std::string read_text_file(const std::filesystem::path& file, const char* what,
                            std::uintmax_t max_bytes = kMaxSceneFileBytes);
+
+// The words of one line separated by spaces and tabs only (as tinyobjloader separates an OBJ's, and
+// as PLY headers and ASCII data are written); the views point into `line`.
+std::vector<std::string_view> words(std::string_view line);
 
 }  // namespace sweeptrace
