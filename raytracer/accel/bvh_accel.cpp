@@ -33,7 +33,9 @@ BvhAccel::BvhAccel(const Scene& scene, SimdPath path)
             local = object_space_bounds(object.shape);
         }
         if (local.empty()) continue;  // a mesh without triangles: nothing to hit
-        const collision::Bounds3 world = world_bounds(object.transform, local);
+        moving_ = moving_ || object.motion.moving();
+        const collision::Bounds3 world =
+            object.motion.moving() ? motion_world_bounds(object.motion, local) : world_bounds(object.transform, local);
         boxes.push_back(world);
         centroids.push_back(0.5f * (world.lo + world.hi));
         object_of.push_back(i);
@@ -47,7 +49,8 @@ BvhAccel::BvhAccel(const Scene& scene, SimdPath path)
         const Object& object = scene.objects[object_of[p]];
         const auto* sphere = std::get_if<collision::Sphere>(&object.shape);
         top_objects_.push_back(object_of[p]);
-        top_spheres_.push_back(sphere && object.transform.identity ? *sphere : collision::Sphere{glm::vec3(0.0f), 0.0f});
+        const bool still_sphere = sphere && object.transform.identity && !object.motion.moving();
+        top_spheres_.push_back(still_sphere ? *sphere : collision::Sphere{glm::vec3(0.0f), 0.0f});
     }
     // Each node's children that are one-slot leaves with such a sphere, for the node-level test.
     top_child_spheres_.assign(top_.nodes.size(), ChildSpheres{});

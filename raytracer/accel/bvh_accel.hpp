@@ -2,7 +2,9 @@
 // The native two-level BVH: an 8-wide tree (wide_bvh.hpp) over the objects' world boxes on top,
 // and one WideMeshBvh per mesh below, traversed in the instancing object's space (a transformed
 // mesh is never copied or re-built). Both levels are binned-SAH binary trees collapsed to 8-wide
-// nodes; the traversal's instruction set is picked at run time (simd_path.hpp).
+// nodes; the traversal's instruction set is picked at run time (simd_path.hpp). A moving object's
+// top-level box holds it over the whole shutter (geometry/motion.hpp, motion_world_bounds), and
+// the queries with a time test it in its pose then.
 #include <memory>
 #include <vector>
 
@@ -24,6 +26,13 @@ public:
         return kernels_->top_intersect(view_, ray, hit);
     }
     bool occluded(const collision::Ray& ray) const override { return kernels_->top_occluded(view_, ray); }
+    // A scene with nothing moving takes the still queries, whatever the time.
+    bool intersect(const collision::Ray& ray, float time, SurfaceHit& hit) const override {
+        return moving_ ? kernels_->top_intersect_at(view_, ray, time, hit) : kernels_->top_intersect(view_, ray, hit);
+    }
+    bool occluded(const collision::Ray& ray, float time) const override {
+        return moving_ ? kernels_->top_occluded_at(view_, ray, time) : kernels_->top_occluded(view_, ray);
+    }
     std::size_t memory_bytes() const override;
     std::string name() const override { return "bvh"; }
 
@@ -44,6 +53,7 @@ private:
     std::vector<std::unique_ptr<WideMeshBvh>> meshes_;  // per Scene::meshes entry; null if no object uses it
     std::vector<WideMeshView> mesh_views_;              // the same, as the kernels read them
     TopLevelView view_;
+    bool moving_ = false;  // some object moves: its box holds it over the whole shutter
 };
 
 }  // namespace sweeptrace

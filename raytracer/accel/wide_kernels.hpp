@@ -55,6 +55,9 @@ struct WideKernels {
     // The Accel queries over every object.
     bool (*top_intersect)(const TopLevelView&, const collision::Ray&, SurfaceHit&);
     bool (*top_occluded)(const TopLevelView&, const collision::Ray&);
+    // The same at a shutter fraction (geometry/motion.hpp): moving objects in their pose then.
+    bool (*top_intersect_at)(const TopLevelView&, const collision::Ray&, float, SurfaceHit&);
+    bool (*top_occluded_at)(const TopLevelView&, const collision::Ray&, float);
 };
 
 extern const WideKernels kScalarKernels;

@@ -21,10 +21,23 @@ namespace sweeptrace {
 bool intersect_object(const std::vector<Object>& objects, const std::vector<Mesh>& meshes, std::uint32_t object,
                       const collision::Ray& world_ray, SurfaceHit& hit);
 
+// The same at shutter fraction `time` (motion.hpp): a moving object in its pose then, a still
+// one as above.
+bool intersect_object_at(const std::vector<Object>& objects, const std::vector<Mesh>& meshes, std::uint32_t object,
+                         const collision::Ray& world_ray, float time, SurfaceHit& hit);
+
+// The transform an object is seen through at `time`: its own, or its pose then when it moves.
+inline Transform object_transform_at(const Object& object, float time) {
+    return object.motion.moving() ? pose_at(object.motion, time) : object.transform;
+}
+
 // The object-space hit `h` on triangle `triangle` of `mesh`, instanced by `object`, as a world
 // SurfaceHit: what surface_hit_to_world gives, plus the shading normal interpolated from the
 // mesh's vertex normals (when it has them; turned into the geometric normal's hemisphere).
 void mesh_hit_to_world(const Mesh& mesh, const Object& object, std::uint32_t object_index, std::uint32_t triangle,
+                       const collision::RayHit& h, float t_shift, SurfaceHit& hit);
+// The same through `xf`, the object's pose at the ray's time.
+void mesh_hit_to_world(const Mesh& mesh, const Transform& xf, std::uint32_t object_index, std::uint32_t triangle,
                        const collision::RayHit& h, float t_shift, SurfaceHit& hit);
 
 }  // namespace sweeptrace
