@@ -364,6 +364,8 @@ bool object_intersect_at(const TopLevelView& top, std::uint32_t slot, const coll
 
 template <class K>
 bool object_occluded_at(const TopLevelView& top, std::uint32_t slot, const collision::Ray& ray, float time) {
+    float t;
+    if (top.swept[slot].sphere.radius > 0.0f) return collision::intersect_sphere_candidate(ray, top.swept[slot].at(time), t);
     const std::uint32_t index = top.objects[slot];
     const Object& object = top.scene->objects[index];
     if (!object.motion.moving()) return object_occluded<K>(top, slot, ray);
@@ -387,12 +389,27 @@ inline bool top_nearest(const TopLevelView& top, const collision::Ray& ray, Surf
     float sphere_t = 0.0f;
     bool sphere_pending = false;
     collision::Ray sphere_ray = ray;
+    [[maybe_unused]] collision::Sphere swept_at{glm::vec3(0.0f), 0.0f};  // kTimed: the pending swept sphere, if it is one
     traverse_nearest<K>(*top.tree, ray, ray.tmin, tmax, [&](std::uint32_t ref, float& t_limit) __attribute__((always_inline)) {
         const std::uint32_t first = wide_ref::first(ref), end = first + wide_ref::count(ref);
         for (std::uint32_t i = first; i < end; ++i) {
             collision::Ray clipped = ray;
             clipped.tmax = t_limit;
             float t;
+            if constexpr (kTimed) {
+                if (top.swept[i].sphere.radius > 0.0f) {  // a swept sphere: as a slot sphere, at the ray's time
+                    const collision::Sphere s = top.swept[i].at(time);
+                    if (!collision::intersect_sphere_candidate(clipped, s, t)) continue;
+                    sphere_ray = clipped;
+                    sphere_slot = i;
+                    sphere_t = t;
+                    sphere_pending = true;
+                    swept_at = s;
+                    t_limit = t < t_limit ? t : t_limit;
+                    found = true;
+                    continue;
+                }
+            }
             if (top.spheres[i].radius > 0.0f) {
                 if (!collision::intersect_sphere_candidate(clipped, top.spheres[i], t)) continue;
                 sphere_ray = clipped;
@@ -414,6 +431,12 @@ inline bool top_nearest(const TopLevelView& top, const collision::Ray& ray, Surf
             found = true;
         }
     });
+    if constexpr (kTimed) {
+        if (sphere_pending && top.swept[sphere_slot].sphere.radius > 0.0f) {
+            finish_slot_sphere(swept_at, top.objects[sphere_slot], sphere_ray, sphere_t, hit);
+            return found;
+        }
+    }
     if (sphere_pending) finish_slot_sphere(top.spheres[sphere_slot], top.objects[sphere_slot], sphere_ray, sphere_t, hit);
     return found;
 }

@@ -71,6 +71,9 @@ void run_bench(const BenchArgs& args) {
         std::printf("%-8s %10.3f %12zu %14.1f\n", accel->name().c_str(), build, accel->memory_bytes(), per_tri);
     }
 
+    if (native.time_slices() > 0)
+        std::printf("bvh: moving objects, the shutter cut into %zu time slice%s (accel/time_slices.hpp)\n",
+                    native.time_slices(), native.time_slices() == 1 ? "" : "s");
     const BenchRays bench = make_bench_rays(scene, native, args.rays, scene.seed);
     const std::vector<collision::Ray>& rays = bench.rays;
     warm_up(native, bench);

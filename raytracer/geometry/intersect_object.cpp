@@ -76,10 +76,32 @@ bool intersect_object(const std::vector<Object>& objects, const std::vector<Mesh
     return intersect_through(objects, meshes, object_index, objects[object_index].transform, world_ray, hit);
 }
 
+SweptSphere swept_sphere(const Object& object) {
+    SweptSphere out;
+    const Motion& m = object.motion;
+    const auto* sphere = std::get_if<collision::Sphere>(&object.shape);
+    if (!sphere || !m.moving() || !m.translation_only || m.keys.size() != 2) return out;
+    const glm::mat4& w = m.keys[0].to_world;
+    if (glm::vec3(w[0]) != glm::vec3(1, 0, 0) || glm::vec3(w[1]) != glm::vec3(0, 1, 0) || glm::vec3(w[2]) != glm::vec3(0, 0, 1))
+        return out;
+    out.sphere = *sphere;
+    out.from = m.parts[0].translation;
+    out.by = m.parts[1].translation - m.parts[0].translation;
+    return out;
+}
+
 bool intersect_object_at(const std::vector<Object>& objects, const std::vector<Mesh>& meshes, std::uint32_t object_index,
                          const collision::Ray& world_ray, float time, SurfaceHit& hit) {
     const Object& object = objects[object_index];
     if (!object.motion.moving()) return intersect_through(objects, meshes, object_index, object.transform, world_ray, hit);
+    if (const SweptSphere swept = swept_sphere(object); swept.sphere.radius > 0.0f) {
+        collision::RayHit h;
+        if (!collision::intersect(world_ray, swept.at(time), h)) return false;
+        surface_hit_to_world(Transform{}, h, 0.0f, hit);
+        hit.object = object_index;
+        hit.primitive = 0;
+        return true;
+    }
     return intersect_through(objects, meshes, object_index, pose_at(object.motion, time), world_ray, hit);
 }
 

@@ -211,6 +211,12 @@ Transform pose_at(const Motion& motion, float s) {
     return pose_in_segment(motion, k, x - static_cast<double>(k));
 }
 
+bool keys_equal(const std::vector<Transform>& keys) {
+    for (const Transform& k : keys)
+        if (k.to_world != keys.front().to_world) return false;
+    return true;
+}
+
 collision::Bounds3 motion_world_bounds(const Motion& motion, const collision::Bounds3& object_box, float s0, float s1) {
     if (object_box.empty()) return object_box;
     const std::size_t segments = motion.keys.size() - 1;

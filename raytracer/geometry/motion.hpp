@@ -49,6 +49,9 @@ inline constexpr int kMaxMotionKeys = 129;  // Embree's RTC_MAX_TIME_STEP_COUNT
 // The pose at shutter fraction s (clamped to [0, 1]). The motion must be moving().
 Transform pose_at(const Motion& motion, float s);
 
+// Whether the keys are all one pose (the loader then leaves the object still).
+bool keys_equal(const std::vector<Transform>& keys);
+
 // The transform with the float matrix `to_world` (affine, invertible: a pose of a valid
 // motion), its inverse computed in double from the float entries and rounded once.
 Transform affine_transform(const glm::mat4& to_world);

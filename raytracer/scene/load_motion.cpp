@@ -39,6 +39,9 @@ void read_motion(const Node& motion, const Node& object_node, Object& object, Tr
         for (std::size_t i = 0; i < n; ++i) keys.push_back(read_transform(list.element(i)));
         object.transform = keys[0];
     }
+    // Every pose the same: the object is still, and is left so (it then renders, and costs, as
+    // one without the motion block).
+    if (keys_equal(keys)) return;
     try {
         object.motion = make_motion(std::move(keys));
     } catch (const std::invalid_argument& e) {
@@ -48,6 +51,11 @@ void read_motion(const Node& motion, const Node& object_node, Object& object, Tr
 
 void check_motion(const Scene& scene, const Node& root, std::size_t json_objects) {
     const Node objects = root.at("objects");
+    for (std::size_t i = 0; i < json_objects && !scene.camera.shutter; ++i)
+        if (objects.element(i).has("motion"))  // also a motion block whose poses are all equal
+            objects.element(i).at("motion").fail(
+                "the object moves but the camera has no shutter, so nothing would: add \"shutter\": [0, 1] to camera, or "
+                "remove the motion");
     for (std::size_t i = 0; i < scene.objects.size(); ++i) {
         const Object& object = scene.objects[i];
         if (!object.motion.moving()) continue;
@@ -57,9 +65,6 @@ void check_motion(const Scene& scene, const Node& root, std::size_t json_objects
         for (std::size_t j = 0; listed >= json_objects && j < json_objects; ++j)
             if (object.name.rfind(scene.objects[j].name + " [", 0) == 0) listed = j;
         const Node at = listed < json_objects ? objects.element(listed).at("motion") : objects;
-        if (!scene.camera.shutter)
-            at.fail("the object moves but the camera has no shutter, so nothing would: add \"shutter\": [0, 1] to camera, or "
-                    "remove the motion");
         const Material& m = scene.materials[object.material];
         if (m.emission != glm::vec3(0.0f))
             at.fail("material \"" + m.name + "\" emits: moving lights are not supported (light sampling sees objects at shutter open)");

@@ -14,7 +14,8 @@
 // asked for motion and would silently get a still image); a keyframe count outside 2..129; a
 // moving object whose material emits or reads a texture (light sampling and texture lookups see
 // objects in their pose at shutter open only, so they would be wrong for a moving one).
-// Keyframes hold numbers as transforms do: non-finite ones are rejected by the reader.
+// Keyframes hold numbers as transforms do: non-finite ones are rejected by the reader. A motion
+// whose poses are all equal leaves the object still (Object::motion empty).
 #include <optional>
 
 #include "raytracer/scene/json_reader.hpp"

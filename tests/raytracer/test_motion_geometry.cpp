@@ -57,6 +57,10 @@ TEST_CASE("motion: poses are the keys at their times and T, slerp(R), S between"
         const glm::dmat4 product = glm::dmat4(pose_at(m, float(s)).to_object) * glm::dmat4(pose_at(m, float(s)).to_world);
         CHECK(max_difference(glm::mat4(product), glm::dmat4(1.0)) < 1e-5);
     }
+    // A segment whose keys are equal: its first key, bit for bit, at every time in it.
+    const Motion rest = make_motion({m.keys[0], m.keys[0], m.keys[1]});
+    CHECK(pose_at(rest, 0.3f).to_world == m.keys[0].to_world);
+    CHECK(pose_at(rest, 0.3f).to_object == m.keys[0].to_object);
     // Outside the shutter: clamped.
     CHECK(pose_at(m, -1.0f).to_world == m.keys[0].to_world);
     CHECK(pose_at(m, 2.0f).to_world == m.keys[2].to_world);

@@ -70,6 +70,8 @@ TEST_CASE("motion scene: bad input names the key", "[motion][scene][errors]") {
     CHECK_THAT(load_error(dir, scene_with(R"(, "shutter": [0, 1e39])", "")), Catch::Contains("camera.shutter[1]"));
     CHECK_THAT(load_error(dir, scene_with("", kClose)),
                Catch::Contains("objects[1].motion") && Catch::Contains("no shutter"));
+    CHECK_THAT(load_error(dir, scene_with("", R"(, "motion": { "close": [] })")),  // a still pose, still no shutter
+               Catch::Contains("objects[1].motion") && Catch::Contains("no shutter"));
     CHECK_THAT(load_error(dir, scene_with(kShutter, R"(, "motion": { "close": [{ "translate": [1e39, 0, 0] }] })")),
                Catch::Contains("objects[1].motion.close[0].translate[0]"));
     CHECK_THAT(load_error(dir, scene_with(kShutter, R"(, "motion": { "keyframes": [[{ "translate": [1, 0, 0] }]] })")),
