@@ -317,18 +317,25 @@ inline void finish_slot_sphere(const collision::Sphere& sphere, std::uint32_t in
     hit.primitive = 0;
 }
 
+// Mesh instance `index` seen through `xf` (its transform, or its pose at the ray's time).
+template <class K>
+inline bool instance_intersect(const TopLevelView& top, const MeshInstance& instance, std::uint32_t index,
+                               const Transform& xf, const collision::Ray& ray, SurfaceHit& hit) {
+    const ObjectRay local = object_ray(xf, ray);
+    collision::RayHit h;
+    std::uint32_t triangle = 0;
+    if (!mesh_intersect<K>(top.meshes[instance.mesh], local.ray, h, triangle)) return false;
+    mesh_hit_to_world(top.scene->meshes[instance.mesh], xf, index, triangle, h, local.t_shift, hit);
+    return true;
+}
+
 template <class K>
 bool object_intersect(const TopLevelView& top, std::uint32_t slot, const collision::Ray& ray, SurfaceHit& hit) {
     const std::uint32_t index = top.objects[slot];
     const Object& object = top.scene->objects[index];
     const auto* instance = std::get_if<MeshInstance>(&object.shape);
     if (!instance) return intersect_analytic_object(*top.scene, index, ray, hit);
-    const ObjectRay local = object_ray(object.transform, ray);
-    collision::RayHit h;
-    std::uint32_t triangle = 0;
-    if (!mesh_intersect<K>(top.meshes[instance->mesh], local.ray, h, triangle)) return false;
-    mesh_hit_to_world(top.scene->meshes[instance->mesh], object, index, triangle, h, local.t_shift, hit);
-    return true;
+    return instance_intersect<K>(top, *instance, index, object.transform, ray, hit);
 }
 
 template <class K>
@@ -353,13 +360,7 @@ bool object_intersect_at(const TopLevelView& top, std::uint32_t slot, const coll
     if (!object.motion.moving()) return object_intersect<K>(top, slot, ray, hit);
     const auto* instance = std::get_if<MeshInstance>(&object.shape);
     if (!instance) return intersect_object_at(top.scene->objects, top.scene->meshes, index, ray, time, hit);
-    const Transform xf = pose_at(object.motion, time);
-    const ObjectRay local = to_object_space(xf, ray);
-    collision::RayHit h;
-    std::uint32_t triangle = 0;
-    if (!mesh_intersect<K>(top.meshes[instance->mesh], local.ray, h, triangle)) return false;
-    mesh_hit_to_world(top.scene->meshes[instance->mesh], xf, index, triangle, h, local.t_shift, hit);
-    return true;
+    return instance_intersect<K>(top, *instance, index, pose_at(object.motion, time), ray, hit);
 }
 
 template <class K>

@@ -7,6 +7,7 @@
 #include "raytracer/input_error.hpp"
 #include "raytracer/scene/load_scene.hpp"
 #include "motion_test_scenes.hpp"
+#include "scene_load_error.hpp"
 #include "scene_test_files.hpp"
 
 using sweeptrace::InputError;
@@ -23,18 +24,11 @@ std::string scene_with(const std::string& camera_extra, const std::string& objec
                { "type": "sphere", "radius": 1, "material": "m")" + object_extra + R"( } ] })";
 }
 
-std::string load_error(const TempDir& dir, const std::string& text) {
-    const auto file = dir.write("bad.json", text);
-    try {
-        load_scene(file);
-    } catch (const InputError& e) {
-        const std::string message = e.what();
-        CHECK(message.rfind(file.string(), 0) == 0);
-        CHECK(message.find('\n') == std::string::npos);  // one line
-        return message;
-    }
-    FAIL("expected InputError for:\n" << text);
-    return {};
+// The shared check, and one line: a message must not spill over lines.
+std::string one_line_error(const TempDir& dir, const std::string& text) {
+    const std::string message = sweeptrace::test::load_error(dir, text);
+    CHECK(message.find('\n') == std::string::npos);
+    return message;
 }
 
 const char* const kShutter = R"(, "shutter": [0, 1])";
@@ -64,28 +58,28 @@ TEST_CASE("motion scene: shutter, close and keyframes load", "[motion][scene]") 
 
 TEST_CASE("motion scene: bad input names the key", "[motion][scene][errors]") {
     TempDir dir;
-    CHECK_THAT(load_error(dir, scene_with(R"(, "shutter": [1, 0])", "")),
+    CHECK_THAT(one_line_error(dir, scene_with(R"(, "shutter": [1, 0])", "")),
                Catch::Contains("camera.shutter") && Catch::Contains("open (1) is after close (0)"));
-    CHECK_THAT(load_error(dir, scene_with(R"(, "shutter": [0])", "")), Catch::Contains("camera.shutter") && Catch::Contains("[open, close]"));
-    CHECK_THAT(load_error(dir, scene_with(R"(, "shutter": [0, 1e39])", "")), Catch::Contains("camera.shutter[1]"));
-    CHECK_THAT(load_error(dir, scene_with("", kClose)),
+    CHECK_THAT(one_line_error(dir, scene_with(R"(, "shutter": [0])", "")), Catch::Contains("camera.shutter") && Catch::Contains("[open, close]"));
+    CHECK_THAT(one_line_error(dir, scene_with(R"(, "shutter": [0, 1e39])", "")), Catch::Contains("camera.shutter[1]"));
+    CHECK_THAT(one_line_error(dir, scene_with("", kClose)),
                Catch::Contains("objects[1].motion") && Catch::Contains("no shutter"));
-    CHECK_THAT(load_error(dir, scene_with("", R"(, "motion": { "close": [] })")),  // a still pose, still no shutter
+    CHECK_THAT(one_line_error(dir, scene_with("", R"(, "motion": { "close": [] })")),  // a still pose, still no shutter
                Catch::Contains("objects[1].motion") && Catch::Contains("no shutter"));
-    CHECK_THAT(load_error(dir, scene_with(kShutter, R"(, "motion": { "close": [{ "translate": [1e39, 0, 0] }] })")),
+    CHECK_THAT(one_line_error(dir, scene_with(kShutter, R"(, "motion": { "close": [{ "translate": [1e39, 0, 0] }] })")),
                Catch::Contains("objects[1].motion.close[0].translate[0]"));
-    CHECK_THAT(load_error(dir, scene_with(kShutter, R"(, "motion": { "keyframes": [[{ "translate": [1, 0, 0] }]] })")),
+    CHECK_THAT(one_line_error(dir, scene_with(kShutter, R"(, "motion": { "keyframes": [[{ "translate": [1, 0, 0] }]] })")),
                Catch::Contains("objects[1].motion.keyframes") && Catch::Contains("2 to 129") && Catch::Contains("got 1"));
     std::string many = R"(, "motion": { "keyframes": [)";
     for (int i = 0; i < 130; ++i) many += std::string(i ? "," : "") + R"([{ "translate": [0, 0, 0] }])";
-    CHECK_THAT(load_error(dir, scene_with(kShutter, many + "] }")), Catch::Contains("got 130"));
-    CHECK_THAT(load_error(dir, scene_with(kShutter, R"(, "transform": [{ "scale": 2 }], "motion": { "keyframes": [[], []] })")),
+    CHECK_THAT(one_line_error(dir, scene_with(kShutter, many + "] }")), Catch::Contains("got 130"));
+    CHECK_THAT(one_line_error(dir, scene_with(kShutter, R"(, "transform": [{ "scale": 2 }], "motion": { "keyframes": [[], []] })")),
                Catch::Contains("objects[1].transform") && Catch::Contains("keyframes[0] is the pose at shutter open"));
-    CHECK_THAT(load_error(dir, scene_with(kShutter, R"(, "motion": { "close": [], "keyframes": [[], []] })")),
+    CHECK_THAT(one_line_error(dir, scene_with(kShutter, R"(, "motion": { "close": [], "keyframes": [[], []] })")),
                Catch::Contains("objects[1].motion") && Catch::Contains("exactly one"));
-    CHECK_THAT(load_error(dir, scene_with(kShutter, R"(, "motion": { "closed": [] })")), Catch::Contains("objects[1].motion.closed"));
-    CHECK_THAT(load_error(dir, scene_with(kShutter, R"(, "motion": { "close": [{ "scale": 0 }] })")),
+    CHECK_THAT(one_line_error(dir, scene_with(kShutter, R"(, "motion": { "closed": [] })")), Catch::Contains("objects[1].motion.closed"));
+    CHECK_THAT(one_line_error(dir, scene_with(kShutter, R"(, "motion": { "close": [{ "scale": 0 }] })")),
                Catch::Contains("objects[1].motion.close[0].scale"));
-    CHECK_THAT(load_error(dir, scene_with(kShutter, kClose, R"({ "type": "emissive", "emission": [1, 1, 1] })")),
+    CHECK_THAT(one_line_error(dir, scene_with(kShutter, kClose, R"({ "type": "emissive", "emission": [1, 1, 1] })")),
                Catch::Contains("objects[1].motion") && Catch::Contains("moving lights are not supported"));
 }
