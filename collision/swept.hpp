@@ -5,6 +5,7 @@
 // they already overlap at t = 0 the result is t = 0 with hit = true.
 // Implementations: swept_<pair>.cpp.
 #include "collision/hit.hpp"
+#include "collision/ray.hpp"
 #include "collision/shapes.hpp"
 
 namespace collision {
@@ -18,5 +19,18 @@ TimeOfImpact sweep(const Ellipsoid& moving, const glm::vec3& motion, const Trian
 // Translational triangle-triangle, which the thesis could not solve: the first contact is a
 // vertex-face contact (6 vertex paths) or an edge-edge contact (9 edge pairs).
 TimeOfImpact sweep(const Triangle& moving, const glm::vec3& motion, const Triangle& still);
+
+// A closed time interval [t0, t1] within [0, 1]; hit = false when empty.
+struct TimeInterval {
+    bool hit = false;
+    float t0 = 0.0f, t1 = 0.0f;
+};
+
+// The times at which a sphere moving by `motion` over the step meets the line through `line`
+// (origin + s dir for every s: its tmin and tmax are not applied), the sphere's silhouette seen
+// along a ray: in the ray's frame the centre's distance to the line is quadratic in t.
+// Motion blur's closed form: a camera ray sees a linearly moving sphere for t1 - t0 of the
+// shutter (swept_sphere_ray.cpp states the bound).
+TimeInterval sweep_interval(const Sphere& moving, const glm::vec3& motion, const Ray& line);
 
 }  // namespace collision

@@ -26,6 +26,23 @@ public:
             if (intersect_object(scene_.objects, scene_.meshes, i, ray, unused)) return true;
         return false;
     }
+    bool intersect(const collision::Ray& ray, float time, SurfaceHit& hit) const override {
+        collision::Ray clipped = ray;
+        bool found = false;
+        for (std::uint32_t i = 0; i < scene_.objects.size(); ++i) {
+            if (intersect_object_at(scene_.objects, scene_.meshes, i, clipped, time, hit)) {
+                clipped.tmax = hit.t < clipped.tmax ? hit.t : clipped.tmax;
+                found = true;
+            }
+        }
+        return found;
+    }
+    bool occluded(const collision::Ray& ray, float time) const override {
+        SurfaceHit unused;
+        for (std::uint32_t i = 0; i < scene_.objects.size(); ++i)
+            if (intersect_object_at(scene_.objects, scene_.meshes, i, ray, time, unused)) return true;
+        return false;
+    }
     std::size_t memory_bytes() const override { return sizeof(*this); }
     std::string name() const override { return "brute-force"; }
 

@@ -1,6 +1,8 @@
 #include "raytracer/accel/embree_accel.hpp"
 
+#include <algorithm>
 #include <atomic>
+#include <cmath>
 #include <limits>
 #include <stdexcept>
 #include <string>
@@ -28,6 +30,7 @@ struct HitContext {
 struct UserObject {
     const Scene* scene;
     std::uint32_t object;
+    std::vector<collision::Bounds3> step_bounds;  // a moving object's box per Embree time step
 };
 
 class EmbreeAccel final : public Accel {
@@ -39,6 +42,8 @@ public:
 
     bool intersect(const collision::Ray& ray, SurfaceHit& hit) const override;
     bool occluded(const collision::Ray& ray) const override;
+    bool intersect(const collision::Ray& ray, float time, SurfaceHit& hit) const override;
+    bool occluded(const collision::Ray& ray, float time) const override;
     std::size_t memory_bytes() const override;
     std::string name() const override { return robust_ ? "embree-robust" : "embree"; }
 
@@ -46,6 +51,7 @@ private:
     void build(const EmbreeOptions& options);
     void release();
     void check(const char* what) const;
+    void set_instance_motion(RTCGeometry instance, const Motion& motion) const;
 
     const Scene& scene_;
     bool robust_;
@@ -66,10 +72,13 @@ collision::Ray to_ray(const RTCRay& r) {
     return collision::Ray{{r.org_x, r.org_y, r.org_z}, {r.dir_x, r.dir_y, r.dir_z}, r.tnear, r.tfar};
 }
 
+// A moving object has Embree time steps; its box at each (motion_step_bounds) interpolates
+// linearly to hold it between them, which is how Embree's motion blur BVH reads them.
 void user_bounds(const RTCBoundsFunctionArguments* args) {
     const auto* user = static_cast<const UserObject*>(args->geometryUserPtr);
     const Object& object = user->scene->objects[user->object];
-    const collision::Bounds3 b = world_bounds(object.transform, object_space_bounds(object.shape));
+    const collision::Bounds3 b = !user->step_bounds.empty() ? user->step_bounds[args->timeStep]
+                                                            : world_bounds(object.transform, object_space_bounds(object.shape));
     *args->bounds_o = RTCBounds{b.lo.x, b.lo.y, b.lo.z, 0.0f, b.hi.x, b.hi.y, b.hi.z, 0.0f};
 }
 
@@ -78,7 +87,9 @@ void user_intersect(const RTCIntersectFunctionNArguments* args) {
     const auto* user = static_cast<const UserObject*>(args->geometryUserPtr);
     auto* rayhit = reinterpret_cast<RTCRayHit*>(args->rayhit);
     SurfaceHit hit;
-    if (!intersect_object(user->scene->objects, user->scene->meshes, user->object, to_ray(rayhit->ray), hit)) return;
+    if (!intersect_object_at(user->scene->objects, user->scene->meshes, user->object, to_ray(rayhit->ray),
+                             rayhit->ray.time, hit))
+        return;
     rayhit->ray.tfar = hit.t;
     rayhit->hit.geomID = args->geomID;
     rayhit->hit.primID = args->primID;
@@ -96,7 +107,7 @@ void user_occluded(const RTCOccludedFunctionNArguments* args) {
     const auto* user = static_cast<const UserObject*>(args->geometryUserPtr);
     auto* ray = reinterpret_cast<RTCRay*>(args->ray);
     SurfaceHit hit;
-    if (intersect_object(user->scene->objects, user->scene->meshes, user->object, to_ray(*ray), hit))
+    if (intersect_object_at(user->scene->objects, user->scene->meshes, user->object, to_ray(*ray), ray->time, hit))
         ray->tfar = -std::numeric_limits<float>::infinity();  // Embree's "occluded" mark
 }
 
@@ -155,10 +166,16 @@ void EmbreeAccel::build(const EmbreeOptions& options) {
             }
             geometry = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_INSTANCE);
             rtcSetGeometryInstancedScene(geometry, mesh_scene);
-            rtcSetGeometryTransform(geometry, 0, RTC_FORMAT_FLOAT4X4_COLUMN_MAJOR, &object.transform.to_world[0][0]);
+            if (object.motion.moving()) set_instance_motion(geometry, object.motion);
+            else rtcSetGeometryTransform(geometry, 0, RTC_FORMAT_FLOAT4X4_COLUMN_MAJOR, &object.transform.to_world[0][0]);
         } else {
-            user_objects_.push_back(UserObject{&scene, i});
+            user_objects_.push_back(UserObject{&scene, i, {}});
             geometry = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_USER);
+            if (object.motion.moving()) {
+                const int steps = motion_time_steps(object.motion);
+                user_objects_.back().step_bounds = motion_step_bounds(object.motion, object_space_bounds(object.shape), steps);
+                rtcSetGeometryTimeStepCount(geometry, static_cast<unsigned>(steps));
+            }
             rtcSetGeometryUserPrimitiveCount(geometry, 1);
             rtcSetGeometryUserData(geometry, &user_objects_.back());
             rtcSetGeometryBoundsFunction(geometry, user_bounds, nullptr);
@@ -173,6 +190,43 @@ void EmbreeAccel::build(const EmbreeOptions& options) {
     }
     rtcCommitScene(top_);
     check("building the scene");
+}
+
+// A moving mesh instance: one Embree time step per key. Translation only: the key matrices, which
+// Embree interpolates linearly, as pose_at does. With rotation: Embree's quaternion decomposition
+// (M = T R U, U upper triangular: scale, skew, shift), which it interpolates as pose_at does (T
+// and U linear, R by slerp) when every key's stretch S is diagonal, U = S; the rotation's sign
+// is the one make_motion aligned along the shorter arc. A stretch with off-diagonal terms (a
+// shear, or a non-uniform scale applied after a rotation) has no such U: the keys are then
+// given as matrices, and between keys Embree's pose departs from the native one.
+void EmbreeAccel::set_instance_motion(RTCGeometry instance, const Motion& motion) const {
+    const auto steps = static_cast<unsigned>(motion.keys.size());
+    rtcSetGeometryTimeStepCount(instance, steps);
+    // Diagonal up to the float rounding of the key matrices (a float rotation times a scale has
+    // a polar stretch with off-diagonal terms of a few 1e-8 of its diagonal).
+    bool diagonal = true;
+    for (const PoseParts& p : motion.parts) {
+        const double scale = std::max({std::abs(p.stretch[0][0]), std::abs(p.stretch[1][1]), std::abs(p.stretch[2][2])});
+        for (int c = 0; c < 3; ++c)
+            for (int r = 0; r < 3; ++r)
+                if (r != c && std::abs(p.stretch[c][r]) > 1e-6 * scale) diagonal = false;
+    }
+    for (unsigned k = 0; k < steps; ++k) {
+        if (motion.translation_only || !diagonal) {
+            rtcSetGeometryTransform(instance, k, RTC_FORMAT_FLOAT4X4_COLUMN_MAJOR, &motion.keys[k].to_world[0][0]);
+            continue;
+        }
+        const PoseParts& p = motion.parts[k];
+        RTCQuaternionDecomposition q;
+        rtcInitQuaternionDecomposition(&q);
+        rtcQuaternionDecompositionSetScale(&q, static_cast<float>(p.stretch[0][0]), static_cast<float>(p.stretch[1][1]),
+                                           static_cast<float>(p.stretch[2][2]));
+        rtcQuaternionDecompositionSetQuaternion(&q, static_cast<float>(p.rotation[0]), static_cast<float>(p.rotation[1]),
+                                                static_cast<float>(p.rotation[2]), static_cast<float>(p.rotation[3]));
+        rtcQuaternionDecompositionSetTranslation(&q, static_cast<float>(p.translation.x), static_cast<float>(p.translation.y),
+                                                 static_cast<float>(p.translation.z));
+        rtcSetGeometryTransformQuaternion(instance, k, &q);
+    }
 }
 
 EmbreeAccel::~EmbreeAccel() { release(); }
@@ -195,11 +249,14 @@ void EmbreeAccel::check(const char* what) const {
                                  what);
 }
 
-bool EmbreeAccel::intersect(const collision::Ray& ray, SurfaceHit& hit) const {
+bool EmbreeAccel::intersect(const collision::Ray& ray, SurfaceHit& hit) const { return intersect(ray, 0.0f, hit); }
+
+bool EmbreeAccel::intersect(const collision::Ray& ray, float time, SurfaceHit& hit) const {
     SurfaceHit analytic;
     HitContext context{{}, &analytic};
     rtcInitIntersectContext(&context.embree);
     RTCRayHit rh = to_embree_ray_hit(ray);
+    rh.ray.time = time;
     rtcIntersect1(top_, &context.embree, &rh);
     if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return false;
     if (rh.hit.instID[0] == RTC_INVALID_GEOMETRY_ID) {  // an analytic object: its callback's hit
@@ -219,14 +276,17 @@ bool EmbreeAccel::intersect(const collision::Ray& ray, SurfaceHit& hit) const {
     candidate.b0 = 1.0f - rh.hit.u - rh.hit.v;
     collision::RayHit h;
     collision::finish_triangle_hit(tri.a, tri.b, tri.c, candidate, h);
-    mesh_hit_to_world(mesh, object, object_index, rh.hit.primID, h, 0.0f, hit);
+    mesh_hit_to_world(mesh, object_transform_at(object, time), object_index, rh.hit.primID, h, 0.0f, hit);
     return true;
 }
 
-bool EmbreeAccel::occluded(const collision::Ray& ray) const {
+bool EmbreeAccel::occluded(const collision::Ray& ray) const { return occluded(ray, 0.0f); }
+
+bool EmbreeAccel::occluded(const collision::Ray& ray, float time) const {
     HitContext context{{}, nullptr};
     rtcInitIntersectContext(&context.embree);
     RTCRay r = to_embree_ray(ray);
+    r.time = time;
     rtcOccluded1(top_, &context.embree, &r);
     return r.tfar == -std::numeric_limits<float>::infinity();
 }

@@ -9,6 +9,7 @@
 #include "collision/shapes.hpp"
 #include "raytracer/accel/simd_path.hpp"
 #include "raytracer/accel/wide_bvh.hpp"
+#include "raytracer/geometry/intersect_object.hpp"
 #include "raytracer/geometry/surface_hit.hpp"
 #include "raytracer/scene/scene.hpp"
 
@@ -41,6 +42,9 @@ struct TopLevelView {
     const collision::Sphere* spheres = nullptr;
     const WideMeshView* meshes = nullptr;
     const ChildSpheres* child_spheres = nullptr;  // per tree node
+    // A moving scene's time slices: per slot its swept sphere (radius 0 for every other object),
+    // tested by the timed queries like a slot sphere, at the ray's time.
+    const SweptSphere* swept = nullptr;
 };
 
 // Per lane of a node, a kernel's sphere test's t.
@@ -55,6 +59,9 @@ struct WideKernels {
     // The Accel queries over every object.
     bool (*top_intersect)(const TopLevelView&, const collision::Ray&, SurfaceHit&);
     bool (*top_occluded)(const TopLevelView&, const collision::Ray&);
+    // The same at a shutter fraction (geometry/motion.hpp): moving objects in their pose then.
+    bool (*top_intersect_at)(const TopLevelView&, const collision::Ray&, float, SurfaceHit&);
+    bool (*top_occluded_at)(const TopLevelView&, const collision::Ray&, float);
 };
 
 extern const WideKernels kScalarKernels;

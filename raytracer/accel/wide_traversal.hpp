@@ -317,18 +317,25 @@ inline void finish_slot_sphere(const collision::Sphere& sphere, std::uint32_t in
     hit.primitive = 0;
 }
 
+// Mesh instance `index` seen through `xf` (its transform, or its pose at the ray's time).
+template <class K>
+inline bool instance_intersect(const TopLevelView& top, const MeshInstance& instance, std::uint32_t index,
+                               const Transform& xf, const collision::Ray& ray, SurfaceHit& hit) {
+    const ObjectRay local = object_ray(xf, ray);
+    collision::RayHit h;
+    std::uint32_t triangle = 0;
+    if (!mesh_intersect<K>(top.meshes[instance.mesh], local.ray, h, triangle)) return false;
+    mesh_hit_to_world(top.scene->meshes[instance.mesh], xf, index, triangle, h, local.t_shift, hit);
+    return true;
+}
+
 template <class K>
 bool object_intersect(const TopLevelView& top, std::uint32_t slot, const collision::Ray& ray, SurfaceHit& hit) {
     const std::uint32_t index = top.objects[slot];
     const Object& object = top.scene->objects[index];
     const auto* instance = std::get_if<MeshInstance>(&object.shape);
     if (!instance) return intersect_analytic_object(*top.scene, index, ray, hit);
-    const ObjectRay local = object_ray(object.transform, ray);
-    collision::RayHit h;
-    std::uint32_t triangle = 0;
-    if (!mesh_intersect<K>(top.meshes[instance->mesh], local.ray, h, triangle)) return false;
-    mesh_hit_to_world(top.scene->meshes[instance->mesh], object, index, triangle, h, local.t_shift, hit);
-    return true;
+    return instance_intersect<K>(top, *instance, index, object.transform, ray, hit);
 }
 
 template <class K>
@@ -343,24 +350,67 @@ bool object_occluded(const TopLevelView& top, std::uint32_t slot, const collisio
     return intersect_analytic_object(*top.scene, index, ray, unused);
 }
 
+// The same two at shutter fraction `time`: a moving object in its pose then (one pose per
+// candidate test, geometry/motion.hpp), a still one exactly as above. Moving objects never have
+// a slot sphere (bvh_accel.cpp leaves them out), so the sphere shortcuts below stay still-only.
+template <class K>
+bool object_intersect_at(const TopLevelView& top, std::uint32_t slot, const collision::Ray& ray, float time, SurfaceHit& hit) {
+    const std::uint32_t index = top.objects[slot];
+    const Object& object = top.scene->objects[index];
+    if (!object.motion.moving()) return object_intersect<K>(top, slot, ray, hit);
+    const auto* instance = std::get_if<MeshInstance>(&object.shape);
+    if (!instance) return intersect_object_at(top.scene->objects, top.scene->meshes, index, ray, time, hit);
+    return instance_intersect<K>(top, *instance, index, pose_at(object.motion, time), ray, hit);
+}
+
+template <class K>
+bool object_occluded_at(const TopLevelView& top, std::uint32_t slot, const collision::Ray& ray, float time) {
+    float t;
+    if (top.swept[slot].sphere.radius > 0.0f) return collision::intersect_sphere_candidate(ray, top.swept[slot].at(time), t);
+    const std::uint32_t index = top.objects[slot];
+    const Object& object = top.scene->objects[index];
+    if (!object.motion.moving()) return object_occluded<K>(top, slot, ray);
+    if (const auto* instance = std::get_if<MeshInstance>(&object.shape))
+        return mesh_occluded<K>(top.meshes[instance->mesh], to_object_space(pose_at(object.motion, time), ray).ray);
+    SurfaceHit unused;
+    return intersect_object_at(top.scene->objects, top.scene->meshes, index, ray, time, unused);
+}
+
 // The nearest hit over the objects. A slot's sphere is only decided (its t) when tested; the
 // nearest one is finished once at the end, on the ray it was decided on, which gives the hit
 // the full test would have written then (sphere_candidate.hpp). Any other object's hit is
 // written when found, and a later, nearer one overwrites either.
-template <class K>
-bool top_intersect(const TopLevelView& top, const collision::Ray& ray, SurfaceHit& hit) {
+// kTimed: at shutter fraction `time` (object_intersect_at); otherwise `time` is unused and the
+// code is the still scenes' own.
+template <class K, bool kTimed>
+inline bool top_nearest(const TopLevelView& top, const collision::Ray& ray, SurfaceHit& hit, float time) {
     float tmax = ray.tmax;
     bool found = false;
     std::uint32_t sphere_slot = 0;
     float sphere_t = 0.0f;
     bool sphere_pending = false;
     collision::Ray sphere_ray = ray;
+    [[maybe_unused]] collision::Sphere swept_at{glm::vec3(0.0f), 0.0f};  // kTimed: the pending swept sphere, if it is one
     traverse_nearest<K>(*top.tree, ray, ray.tmin, tmax, [&](std::uint32_t ref, float& t_limit) __attribute__((always_inline)) {
         const std::uint32_t first = wide_ref::first(ref), end = first + wide_ref::count(ref);
         for (std::uint32_t i = first; i < end; ++i) {
             collision::Ray clipped = ray;
             clipped.tmax = t_limit;
             float t;
+            if constexpr (kTimed) {
+                if (top.swept[i].sphere.radius > 0.0f) {  // a swept sphere: as a slot sphere, at the ray's time
+                    const collision::Sphere s = top.swept[i].at(time);
+                    if (!collision::intersect_sphere_candidate(clipped, s, t)) continue;
+                    sphere_ray = clipped;
+                    sphere_slot = i;
+                    sphere_t = t;
+                    sphere_pending = true;
+                    swept_at = s;
+                    t_limit = t < t_limit ? t : t_limit;
+                    found = true;
+                    continue;
+                }
+            }
             if (top.spheres[i].radius > 0.0f) {
                 if (!collision::intersect_sphere_candidate(clipped, top.spheres[i], t)) continue;
                 sphere_ray = clipped;
@@ -369,7 +419,11 @@ bool top_intersect(const TopLevelView& top, const collision::Ray& ray, SurfaceHi
                 sphere_pending = true;
                 t += 0.0f;  // the identity's t_shift, as surface_hit_to_world adds it
             } else {
-                if (!object_intersect<K>(top, i, clipped, hit)) continue;
+                if constexpr (kTimed) {
+                    if (!object_intersect_at<K>(top, i, clipped, time, hit)) continue;
+                } else {
+                    if (!object_intersect<K>(top, i, clipped, hit)) continue;
+                }
                 sphere_pending = false;
                 t = hit.t;
             }
@@ -378,6 +432,12 @@ bool top_intersect(const TopLevelView& top, const collision::Ray& ray, SurfaceHi
             found = true;
         }
     });
+    if constexpr (kTimed) {
+        if (sphere_pending && top.swept[sphere_slot].sphere.radius > 0.0f) {
+            finish_slot_sphere(swept_at, top.objects[sphere_slot], sphere_ray, sphere_t, hit);
+            return found;
+        }
+    }
     if (sphere_pending) finish_slot_sphere(top.spheres[sphere_slot], top.objects[sphere_slot], sphere_ray, sphere_t, hit);
     return found;
 }
@@ -387,12 +447,17 @@ bool top_intersect(const TopLevelView& top, const collision::Ray& ray, SurfaceHi
 // keep; measured on scenes/spheres-field.json, native / embree occluded 1.67 -> 1.72 (medians
 // of 5 runs, interleaved). The same at the nearest-hit traversal measured slower (1.46 -> 1.37): it tests
 // spheres a nearer hit would have culled.
-template <class K>
-bool top_occluded(const TopLevelView& top, const collision::Ray& ray) {
+template <class K, bool kTimed>
+inline bool top_any(const TopLevelView& top, const collision::Ray& ray, float time) {
     auto leaf = [&](std::uint32_t ref) __attribute__((always_inline)) {
         const std::uint32_t first = wide_ref::first(ref), end = first + wide_ref::count(ref);
-        for (std::uint32_t i = first; i < end; ++i)
-            if (object_occluded<K>(top, i, ray)) return true;
+        for (std::uint32_t i = first; i < end; ++i) {
+            if constexpr (kTimed) {
+                if (object_occluded_at<K>(top, i, ray, time)) return true;
+            } else {
+                if (object_occluded<K>(top, i, ray)) return true;
+            }
+        }
         return false;
     };
     if (wide_ref::is_leaf(top.tree->root)) return leaf(top.tree->root);  // one object: no node, no sphere set-up
@@ -412,8 +477,29 @@ bool top_occluded(const TopLevelView& top, const collision::Ray& ray) {
 }
 
 template <class K>
+bool top_intersect(const TopLevelView& top, const collision::Ray& ray, SurfaceHit& hit) {
+    return top_nearest<K, false>(top, ray, hit, 0.0f);
+}
+
+template <class K>
+bool top_occluded(const TopLevelView& top, const collision::Ray& ray) {
+    return top_any<K, false>(top, ray, 0.0f);
+}
+
+template <class K>
+bool top_intersect_at(const TopLevelView& top, const collision::Ray& ray, float time, SurfaceHit& hit) {
+    return top_nearest<K, true>(top, ray, hit, time);
+}
+
+template <class K>
+bool top_occluded_at(const TopLevelView& top, const collision::Ray& ray, float time) {
+    return top_any<K, true>(top, ray, time);
+}
+
+template <class K>
 constexpr WideKernels make_kernels() {
-    return WideKernels{&mesh_intersect<K>, &mesh_occluded<K>, &top_intersect<K>, &top_occluded<K>};
+    return WideKernels{&mesh_intersect<K>,  &mesh_occluded<K>,    &top_intersect<K>,
+                       &top_occluded<K>,    &top_intersect_at<K>, &top_occluded_at<K>};
 }
 
 }  // namespace

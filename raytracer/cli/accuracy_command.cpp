@@ -6,6 +6,7 @@
 // With --tessellation: the same objects analytic and tessellated, rendered.
 // With --convergence SCENE...: image error against time, BSDF-only / NEE+MIS, BVH / Embree.
 // With --sampling SCENE...: Sobol against independent samples, adaptive against classic roulette.
+// With --motion: moving objects, the native BVH and Embree's motion blur against brute force.
 #include <filesystem>
 #include <iostream>
 #include <memory>
@@ -15,6 +16,7 @@
 #include "raytracer/accuracy/exchange.hpp"
 #include "raytracer/accuracy/legend.hpp"
 #include "raytracer/accuracy/mesh_compare.hpp"
+#include "raytracer/accuracy/motion_study.hpp"
 #include "raytracer/accuracy/render_studies.hpp"
 #include "raytracer/accuracy/report.hpp"
 #include "raytracer/accuracy/routines.hpp"
@@ -36,6 +38,7 @@ struct AccuracyOptions {
     std::string meshes;
     std::size_t inside_rays = 100000;
     bool structures = false;
+    bool motion = false;
     int max_level = 8;
     double budget = 0.5;
     bool tessellation = false;
@@ -53,8 +56,16 @@ void run(const AccuracyOptions& o) {
     }
     if (!o.methods_csv.empty() && o.meshes.empty()) throw InputError("--methods-csv: only with --meshes");
     if (int(o.structures) + int(!o.meshes.empty()) + int(o.tessellation) + int(!o.convergence.empty()) +
-            int(!o.sampling.empty()) > 1) {
-        throw InputError("--structures, --meshes, --tessellation, --convergence and --sampling: choose one");
+            int(!o.sampling.empty()) + int(o.motion) > 1) {
+        throw InputError("--structures, --meshes, --tessellation, --convergence, --sampling and --motion: choose one");
+    }
+    if (o.motion) {
+        const auto rows = accuracy::measure_motion(o.rays, o.seed);
+        accuracy::write_motion_markdown(std::cout, rows);
+        if (!o.csv.empty()) accuracy::save_file(o.csv, [&](std::ostream& f) { accuracy::write_motion_csv(f, rows); });
+        if (!o.markdown.empty())
+            accuracy::save_file(o.markdown, [&](std::ostream& f) { accuracy::write_motion_markdown(f, rows); });
+        return;
     }
     if (!o.sampling.empty()) {
         std::vector<std::filesystem::path> scenes(o.sampling.begin(), o.sampling.end());
@@ -159,6 +170,8 @@ void add_accuracy_command(CLI::App& app, int& exit_code) {
         ->check(CLI::Range(0, 100000000));
     cmd->add_option("--methods-csv", options->methods_csv,
                     "With --meshes: write per-method speed, build time and leaks as CSV to this file");
+    cmd->add_flag("--motion", options->motion,
+                  "Moving objects: native BVH and Embree motion blur against brute force on random (ray, time) pairs");
     cmd->add_flag("--structures", options->structures,
                   "Brute force, 8 octants, hashed grid, BVH and Embree on icospheres of 320 .. 1.3M triangles");
     cmd->add_option("--max-level", options->max_level, "With --structures: finest icosphere level (8 = 1.3M triangles)")

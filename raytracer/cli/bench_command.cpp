@@ -5,7 +5,8 @@
 // hit, to a key light), their ratio, bytes per triangle; then samples/s of a short render at 1
 // and up to --threads threads. It prints figures; it asserts nothing. `sweeptrace bench --meshes
 // DIR` does the same per OBJ file of DIR (bench_meshes.hpp). Ray rates are per second of the
-// tracing thread's CPU time (bench_rays.hpp).
+// tracing thread's CPU time (bench_rays.hpp). A scene with a camera shutter is timed with each ray at
+// a random time in it (the queries of moving objects).
 #include <cstdio>
 #include <memory>
 #include <string>
@@ -70,22 +71,26 @@ void run_bench(const BenchArgs& args) {
         std::printf("%-8s %10.3f %12zu %14.1f\n", accel->name().c_str(), build, accel->memory_bytes(), per_tri);
     }
 
+    if (native.time_slices() > 0)
+        std::printf("bvh: moving objects, the shutter cut into %zu time slice%s (accel/time_slices.hpp)\n",
+                    native.time_slices(), native.time_slices() == 1 ? "" : "s");
     const BenchRays bench = make_bench_rays(scene, native, args.rays, scene.seed);
     const std::vector<collision::Ray>& rays = bench.rays;
     warm_up(native, bench);
     warm_up(*embree, bench);
-    const PairTimes isect = time_intersect(native, *embree, rays, args.repeat);
+    const PairTimes isect = time_intersect(native, *embree, rays, args.repeat, bench.ray_times);
     const TraceResult &a = isect.native, &b = isect.embree;
     const double mrays = 1e-6 * static_cast<double>(rays.size());
-    std::printf("%zu rays (%d primary + %zu bounce), single-threaded, median of %d pass%s:\n", rays.size(), args.rays,
-                rays.size() - static_cast<std::size_t>(args.rays), args.repeat, args.repeat == 1 ? "" : "es");
+    std::printf("%zu rays (%d primary + %zu bounce), single-threaded, median of %d pass%s%s:\n", rays.size(), args.rays,
+                rays.size() - static_cast<std::size_t>(args.rays), args.repeat, args.repeat == 1 ? "" : "es",
+                bench.ray_times.empty() ? "" : ", each at a random time in the shutter (motion blur)");
     std::printf("%-8s %14s %15s %10s\n", "accel", "Mrays/s (cpu)", "Mrays/s (wall)", "hits");
     std::printf("%-8s %14.3f %15.3f %10zu\n", native.name().c_str(), mrays / a.cpu, mrays / a.wall, a.hits);
     std::printf("%-8s %14.3f %15.3f %10zu\n", embree->name().c_str(), mrays / b.cpu, mrays / b.wall, b.hits);
     std::printf("native / embree: %.2fx (cpu time), %.2fx (wall time)\n", b.cpu / a.cpu, b.wall / a.wall);
     // Shadow rays (a segment from each primary hit to a key light): occluded(), and intersect()
     // on the same segments for the any-hit traversal's gain.
-    const ShadowTimes shadow = time_shadow(native, *embree, bench.shadow, args.repeat);
+    const ShadowTimes shadow = time_shadow(native, *embree, bench.shadow, args.repeat, bench.shadow_times);
     const TraceResult &ao = shadow.native_occluded, &bo = shadow.embree_occluded;
     const TraceResult &as = shadow.native_intersect, &bs = shadow.embree_intersect;
     const double mshadow = 1e-6 * static_cast<double>(bench.shadow.size());
@@ -96,7 +101,7 @@ void run_bench(const BenchArgs& args) {
                 native.name().c_str(), mshadow / ao.cpu, embree->name().c_str(), mshadow / bo.cpu, bo.cpu / ao.cpu,
                 as.cpu / ao.cpu, bs.cpu / bo.cpu);
     // The shadow rays a render also traces: from each bounce hit to the key light.
-    const ShadowTimes second = time_shadow(native, *embree, bench.shadow_bounce, args.repeat);
+    const ShadowTimes second = time_shadow(native, *embree, bench.shadow_bounce, args.repeat, bench.shadow_bounce_times);
     const double mbounce = 1e-6 * static_cast<double>(bench.shadow_bounce.size());
     if (!bench.shadow_bounce.empty())
         std::printf("%zu shadow rays from the bounce hits, %zu / %zu occluded:\noccluded: %s %.3f, %s %.3f Mrays/s (cpu); "

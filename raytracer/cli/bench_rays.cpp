@@ -51,8 +51,11 @@ BenchRays make_bench_rays(const Scene& scene, const Accel& accel, int primaries,
     const KeyLight light(scene.camera);
     std::mt19937_64 rng(seed);
     std::mt19937_64 bounce_rng(seed ^ 0x9e3779b97f4a7c15ull);  // the bounce vertices' light samples
+    // Times from their own stream, so a still scene's rays are the ones they were.
+    std::mt19937_64 time_rng(seed ^ 0x7f4a7c159e3779b9ull);
     std::uniform_real_distribution<float> u(0.0f, 1.0f);
     std::normal_distribution<float> gauss(0.0f, 1.0f);
+    const bool timed = scene.camera.shutter;
     BenchRays out;
     out.rays.reserve(2 * static_cast<std::size_t>(primaries));
     out.shadow.reserve(static_cast<std::size_t>(primaries));
@@ -60,18 +63,26 @@ BenchRays make_bench_rays(const Scene& scene, const Accel& accel, int primaries,
         const collision::Ray primary = camera.generate(u(rng) * static_cast<float>(scene.film.width),
                                                       u(rng) * static_cast<float>(scene.film.height), u(rng), u(rng));
         out.rays.push_back(primary);
+        const float time = timed ? u(time_rng) : 0.0f;
+        if (timed) out.ray_times.push_back(time);
         SurfaceHit hit;
-        if (!accel.intersect(primary, hit)) continue;
+        if (!(timed ? accel.intersect(primary, time, hit) : accel.intersect(primary, hit))) continue;
         glm::vec3 d(gauss(rng), gauss(rng), gauss(rng));
         if (glm::dot(d, d) == 0.0f) d = hit.normal;
         if (glm::dot(d, hit.normal) < 0.0f) d = -d;
         out.rays.push_back(spawn_ray(hit, glm::normalize(d)));
         const float u1 = u(rng), u2 = u(rng);
         out.shadow.push_back(spawn_ray_to(hit, light.point(u1, u2), glm::vec3(0.0f), light.normal));
+        if (timed) {
+            out.ray_times.push_back(time);
+            out.shadow_times.push_back(time);
+        }
         SurfaceHit bounce_hit;
-        if (!accel.intersect(out.rays.back(), bounce_hit)) continue;
+        if (!(timed ? accel.intersect(out.rays.back(), time, bounce_hit) : accel.intersect(out.rays.back(), bounce_hit)))
+            continue;
         const float u3 = u(bounce_rng), u4 = u(bounce_rng);
         out.shadow_bounce.push_back(spawn_ray_to(bounce_hit, light.point(u3, u4), glm::vec3(0.0f), light.normal));
+        if (timed) out.shadow_bounce_times.push_back(time);
     }
     return out;
 }
@@ -89,6 +100,17 @@ TraceResult time_pass(const std::vector<collision::Ray>& rays, Query&& query) {
     TraceResult r;
     const double c0 = thread_cpu_seconds(), w0 = wall_seconds();
     for (const collision::Ray& ray : rays) r.hits += query(ray);
+    r.cpu = thread_cpu_seconds() - c0;
+    r.wall = wall_seconds() - w0;
+    return r;
+}
+
+// The same with each ray's time (the queries at a shutter fraction).
+template <class Query>
+TraceResult time_pass_timed(const std::vector<collision::Ray>& rays, const std::vector<float>& times, Query&& query) {
+    TraceResult r;
+    const double c0 = thread_cpu_seconds(), w0 = wall_seconds();
+    for (std::size_t i = 0; i < rays.size(); ++i) r.hits += query(rays[i], times[i]);
     r.cpu = thread_cpu_seconds() - c0;
     r.wall = wall_seconds() - w0;
     return r;
@@ -113,6 +135,28 @@ PairTimes time_alternating(const std::vector<collision::Ray>& rays, int repeats,
     return PairTimes{median_of(a), median_of(b)};
 }
 
+template <class Query>
+PairTimes time_alternating_timed(const std::vector<collision::Ray>& rays, const std::vector<float>& times, int repeats,
+                                 Query&& native, Query&& embree) {
+    std::vector<TraceResult> a, b;
+    for (int k = 0; k < std::max(1, repeats); ++k) {
+        a.push_back(time_pass_timed(rays, times, native));
+        b.push_back(time_pass_timed(rays, times, embree));
+    }
+    return PairTimes{median_of(a), median_of(b)};
+}
+
+auto intersect_at_query(const Accel& accel) {
+    return [&accel](const collision::Ray& ray, float time) {
+        SurfaceHit hit;
+        return accel.intersect(ray, time, hit);
+    };
+}
+
+auto occluded_at_query(const Accel& accel) {
+    return [&accel](const collision::Ray& ray, float time) { return accel.occluded(ray, time); };
+}
+
 auto intersect_query(const Accel& accel) {
     return [&accel](const collision::Ray& ray) {
         SurfaceHit hit;
@@ -126,17 +170,24 @@ auto occluded_query(const Accel& accel) {
 
 }  // namespace
 
-PairTimes time_intersect(const Accel& native, const Accel& embree, const std::vector<collision::Ray>& rays, int repeats) {
+PairTimes time_intersect(const Accel& native, const Accel& embree, const std::vector<collision::Ray>& rays, int repeats,
+                         const std::vector<float>& times) {
+    if (!times.empty())
+        return time_alternating_timed(rays, times, repeats, intersect_at_query(native), intersect_at_query(embree));
     return time_alternating(rays, repeats, intersect_query(native), intersect_query(embree));
 }
 
-PairTimes time_occluded(const Accel& native, const Accel& embree, const std::vector<collision::Ray>& rays, int repeats) {
+PairTimes time_occluded(const Accel& native, const Accel& embree, const std::vector<collision::Ray>& rays, int repeats,
+                        const std::vector<float>& times) {
+    if (!times.empty())
+        return time_alternating_timed(rays, times, repeats, occluded_at_query(native), occluded_at_query(embree));
     return time_alternating(rays, repeats, occluded_query(native), occluded_query(embree));
 }
 
-ShadowTimes time_shadow(const Accel& native, const Accel& embree, const std::vector<collision::Ray>& rays, int repeats) {
-    const PairTimes occluded = time_occluded(native, embree, rays, repeats);
-    const PairTimes intersect = time_intersect(native, embree, rays, repeats);
+ShadowTimes time_shadow(const Accel& native, const Accel& embree, const std::vector<collision::Ray>& rays, int repeats,
+                        const std::vector<float>& times) {
+    const PairTimes occluded = time_occluded(native, embree, rays, repeats, times);
+    const PairTimes intersect = time_intersect(native, embree, rays, repeats, times);
     return ShadowTimes{occluded.native, occluded.embree, intersect.native, intersect.embree};
 }
 
@@ -151,6 +202,14 @@ void warm_up(const Accel& accel, const BenchRays& bench) {
         const std::vector<collision::Ray> slice(rays->begin(), rays->begin() + std::min<std::size_t>(rays->size(), 10000));
         time_pass(slice, intersect_query(accel));
         time_pass(slice, occluded_query(accel));
+    }
+    if (bench.ray_times.empty()) return;
+    for (const auto& [rays, times] : {std::pair{&bench.rays, &bench.ray_times}, std::pair{&bench.shadow, &bench.shadow_times}}) {
+        const std::size_t n = std::min<std::size_t>(rays->size(), 10000);
+        const std::vector<collision::Ray> slice(rays->begin(), rays->begin() + n);
+        const std::vector<float> at(times->begin(), times->begin() + n);
+        time_pass_timed(slice, at, intersect_at_query(accel));
+        time_pass_timed(slice, at, occluded_at_query(accel));
     }
 }
 

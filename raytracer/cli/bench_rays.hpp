@@ -29,6 +29,9 @@ struct BenchRays {
     // One per bounce hit: the segment to the key light (a render's next event estimation at the
     // path's second vertex; its own light samples, so `rays` and `shadow` stay as they were).
     std::vector<collision::Ray> shadow_bounce;
+    // With a camera shutter: each ray's shutter fraction (a primary's, uniform in [0, 1), taken by
+    // its bounce and shadow rays), parallel to the lists above; empty for a still scene.
+    std::vector<float> ray_times, shadow_times, shadow_bounce_times;
 };
 
 // Primary rays through uniformly random film points, and from each primary hit (found with
@@ -48,14 +51,18 @@ struct TraceResult {
 struct PairTimes {
     TraceResult native, embree;
 };
-PairTimes time_intersect(const Accel& native, const Accel& embree, const std::vector<collision::Ray>& rays, int repeats);
-PairTimes time_occluded(const Accel& native, const Accel& embree, const std::vector<collision::Ray>& rays, int repeats);
+// `times`, when not empty, holds each ray's shutter fraction (the queries with a time are timed).
+PairTimes time_intersect(const Accel& native, const Accel& embree, const std::vector<collision::Ray>& rays, int repeats,
+                         const std::vector<float>& times = {});
+PairTimes time_occluded(const Accel& native, const Accel& embree, const std::vector<collision::Ray>& rays, int repeats,
+                        const std::vector<float>& times = {});
 
 // occluded() and intersect() over the same shadow rays, through the native structure and Embree.
 struct ShadowTimes {
     TraceResult native_occluded, embree_occluded, native_intersect, embree_intersect;
 };
-ShadowTimes time_shadow(const Accel& native, const Accel& embree, const std::vector<collision::Ray>& rays, int repeats);
+ShadowTimes time_shadow(const Accel& native, const Accel& embree, const std::vector<collision::Ray>& rays, int repeats,
+                        const std::vector<float>& times = {});
 
 // The rays `accel` finds occluded, and the others (order kept in each).
 struct SplitRays {

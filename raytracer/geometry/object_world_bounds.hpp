@@ -3,7 +3,8 @@
 // light's share of the scene, whether an emitter faces anything): analytic shapes by their
 // home's object-space box, mesh instances by the box of their mesh's vertices, both mapped to
 // world with the transform's error bound (object_space.hpp, world_bounds). The acceleration
-// structures box meshes by their own BVHs instead.
+// structures box meshes by their own BVHs instead. A moving object's box holds it over the whole
+// shutter (motion.hpp, motion_world_bounds).
 #include <variant>
 #include <vector>
 
@@ -16,7 +17,8 @@ inline collision::Bounds3 object_world_bounds(const Object& obj, const std::vect
     collision::Bounds3 box = object_space_bounds(obj.shape);
     if (const auto* m = std::get_if<MeshInstance>(&obj.shape))
         for (const glm::vec3& v : meshes[m->mesh].triangles.vertices) box.extend(v);
-    return box.empty() ? box : world_bounds(obj.transform, box);
+    if (box.empty()) return box;
+    return obj.motion.moving() ? motion_world_bounds(obj.motion, box) : world_bounds(obj.transform, box);
 }
 
 }  // namespace sweeptrace

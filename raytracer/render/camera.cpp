@@ -20,6 +20,9 @@ CameraModel::CameraModel(const Camera& c, int width, int height, const FilterSpe
     lens_radius_ = 0.5f * c.aperture;
     focus_distance_ = c.focus_distance > 0.0f ? c.focus_distance : glm::length(c.look_at - c.position);
     near_clip_ = c.near_clip;
+    shutter_ = c.shutter;
+    shutter_open_ = c.shutter_open;
+    shutter_close_ = c.shutter_close;
 }
 
 collision::Ray CameraModel::generate(float x, float y, float u1, float u2) const {

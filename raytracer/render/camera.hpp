@@ -25,6 +25,13 @@ public:
     // of the top-left pixel) and lens sample (u1, u2) in [0, 1)^2. Direction is unit length.
     collision::Ray generate(float x, float y, float u1, float u2) const;
 
+    // With a shutter (Camera::shutter), the shutter fraction a camera sample is traced at, from
+    // a uniform u in [0, 1): the time open + u (close - open) as the fraction of the shutter the
+    // objects' keyframes are spaced over (geometry/motion.hpp), u itself; a shutter that opens and
+    // closes at once gives 0 (every object at its first pose).
+    bool has_shutter() const { return shutter_; }
+    float shutter_fraction(float u) const { return shutter_open_ < shutter_close_ ? u : 0.0f; }
+
 private:
     glm::vec3 origin_;
     glm::vec3 right_, up_, forward_;  // orthonormal camera frame
@@ -33,6 +40,8 @@ private:
     float lens_radius_ = 0.0f;
     float focus_distance_ = 1.0f;
     float near_clip_ = 0.0f;
+    bool shutter_ = false;
+    float shutter_open_ = 0.0f, shutter_close_ = 0.0f;
     PixelFilter filter_;
 };
 

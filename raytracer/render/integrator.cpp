@@ -31,7 +31,9 @@ PathIntegrator::PathIntegrator(const Scene& scene, const Accel& accel, const Lig
       max_depth_(max_depth),
       sampling_(sampling),
       defect_(defect),
-      roulette_(roulette) {}
+      roulette_(roulette) {
+    for (const Object& o : scene.objects) moving_ = moving_ || (scene.camera.shutter && o.motion.moving());
+}
 
 collision::Ray PathIntegrator::continue_ray(const SurfaceHit& hit, const glm::vec3& dir) const {
     if (defect_ == PlantedDefect::NoRayOffset) return collision::Ray{hit.point, dir};  // planted: acne
@@ -51,7 +53,7 @@ collision::Ray PathIntegrator::shadow_ray(const SurfaceHit& hit, const LightSamp
 }
 
 glm::vec3 PathIntegrator::radiance(collision::Ray ray, PixelSampler& sampler, std::uint64_t& rays,
-                                   std::vector<GuideRecord>* records) const {
+                                   std::vector<GuideRecord>* records, float time) const {
     const bool nee = sampling_ == Sampling::NeeMis && !lights_.empty();
     GuidePathRecorder recorder(records);
     // Russian roulette judges a path by the throughput BSDF sampling would have given it: a
@@ -71,7 +73,7 @@ glm::vec3 PathIntegrator::radiance(collision::Ray ray, PixelSampler& sampler, st
         const int bounce = depth - 1;  // sampler dimensions: sample_dim::bounce(bounce, slot)
         SurfaceHit hit;
         ++rays;
-        if (!accel_.intersect(ray, hit)) {
+        if (!(moving_ ? accel_.intersect(ray, time, hit) : accel_.intersect(ray, hit))) {
             if (!lights_.background_is_light()) result += limit.found(beta * background_radiance(scene_.background, ray.dir), depth);
             if (lights_.has_distant())
                 result += limit.found(beta * lights_.escaped_radiance(ray.dir, nee && !full_weight ? prev_pdf : 0.0f), depth);
@@ -119,7 +121,8 @@ glm::vec3 PathIntegrator::radiance(collision::Ray ray, PixelSampler& sampler, st
                     ++rays;
                     // The MIS weight only where the light is seen: at a guided vertex it costs a
                     // descent of the guide, and a blocked sample adds (and teaches) zero.
-                    if (!accel_.occluded(shadow_ray(hit, ls))) {
+                    const collision::Ray shadow = shadow_ray(hit, ls);
+                    if (!(moving_ ? accel_.occluded(shadow, time) : accel_.occluded(shadow))) {
                         const float w =
                             ls.delta ? 1.0f : power_heuristic(ls.pdf, guide ? guided_pdf(*guide, e.pdf, ls.wi) : e.pdf);
                         result += limit.light_sample(beta * e.f_cos * ls.radiance * (w / ls.pdf), depth);

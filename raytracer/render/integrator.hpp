@@ -48,9 +48,11 @@ public:
                    PlantedDefect defect, RoulettePolicy roulette = RoulettePolicy::adaptive());
 
     // `ray` must have a unit direction. Adds every ray traced to `rays`. With `records`, what
-    // the path teaches the guide is appended there (guiding_path_recorder.hpp).
+    // the path teaches the guide is appended there (guiding_path_recorder.hpp). The whole path,
+    // shadow rays included, sees the scene at shutter fraction `time` (geometry/motion.hpp;
+    // ignored when nothing moves).
     glm::vec3 radiance(collision::Ray ray, PixelSampler& sampler, std::uint64_t& rays,
-                       std::vector<GuideRecord>* records = nullptr) const;
+                       std::vector<GuideRecord>* records = nullptr, float time = 0.0f) const;
 
     // Path guiding (guiding_sampler.hpp): at guided vertices where `guide` has learned something,
     // BSDF directions come from the BSDF + guide mixture, and its density is the BSDF strategy's
@@ -69,6 +71,7 @@ private:
     PlantedDefect defect_;
     RoulettePolicy roulette_;
     const GuidingSdTree* guide_ = nullptr;
+    bool moving_ = false;  // the camera has a shutter and some object moves: queries take the time
 };
 
 }  // namespace sweeptrace

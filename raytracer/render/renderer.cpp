@@ -175,8 +175,10 @@ private:
                 const glm::vec2 lens = sampler.get2d(sample_dim::kLens);
                 const float fx = static_cast<float>(x) + film.dx;
                 const float fy = static_cast<float>(y) + film.dy;
-                glm::vec3 l =
-                    film.weight * integrator_.radiance(camera_.generate(fx, fy, lens.x, lens.y), sampler, rays, records);
+                // Drawn only with a shutter, so still scenes take exactly the numbers they did.
+                const float time = camera_.has_shutter() ? camera_.shutter_fraction(sampler.get1d(sample_dim::kTime)) : 0.0f;
+                glm::vec3 l = film.weight *
+                              integrator_.radiance(camera_.generate(fx, fy, lens.x, lens.y), sampler, rays, records, time);
                 if (!collision::finite(l)) {
                     l = glm::vec3(0.0f);
                     ++nonfinite;

@@ -27,10 +27,16 @@ namespace sweeptrace {
 
 // The fixed dimension order of a path. The camera takes dimensions 0-3; bounce b (b = 0 at the
 // first surface hit) takes kCameraDims + b * kBounceDims + slot. A 2D slot covers two dimensions.
+// The shutter time has dimension kTime = -1, below every other: a 1D Sobol slot of its own that
+// no other decision, at any depth, can reach, drawn only when the camera has a shutter, so a scene
+// without one takes exactly the numbers it took before motion blur existed (with the Sobol
+// sampler a slot's numbers depend only on its dimension, not on what else was drawn; the
+// Independent sampler's stream is consumed in call order, and time is drawn after the camera's).
 namespace sample_dim {
 inline constexpr int kFilm = 0;  // 2D: position inside the pixel
 inline constexpr int kLens = 2;  // 2D: point on the thin lens
 inline constexpr int kCameraDims = 4;
+inline constexpr int kTime = -1;  // 1D: the time in the shutter (render/camera.hpp, shutter_fraction)
 inline constexpr int kLightChoice = 0;    // 2D: which light (x) and which triangle / face of it (y)
 inline constexpr int kLightPart = 1;      // the y of kLightChoice: each coordinate of a net is stratified
 inline constexpr int kLightPoint = 2;     // 2D: the point on it
@@ -42,6 +48,7 @@ inline constexpr int kBounceDims = 11;
 inline constexpr int kSobolBounces = 16;  // bounces 0..15 are stratified, later ones hashed
 
 inline constexpr int bounce(int b, int slot) { return kCameraDims + b * kBounceDims + slot; }
+static_assert(kTime < kFilm && kTime < kLens && kTime < bounce(0, 0), "the time slot lies outside the camera's and bounces' ranges");
 }  // namespace sample_dim
 
 class PixelSampler {

@@ -21,6 +21,7 @@
 #include "raytracer/scene/load_environment.hpp"
 #include "raytracer/scene/load_filter.hpp"
 #include "raytracer/scene/load_lights.hpp"
+#include "raytracer/scene/load_motion.hpp"
 #include "raytracer/scene/load_texture.hpp"
 #include "raytracer/scene/named_metals.hpp"
 #include "raytracer/scene/obj_materials.hpp"
@@ -39,7 +40,7 @@ using scene_json::Node;
 using scene_keys::parallel;
 
 Camera read_camera(const Node& node) {
-    node.require_object({"position", "look_at", "up", "fov", "aperture", "focus_distance", "near_clip"});
+    node.require_object({"position", "look_at", "up", "fov", "aperture", "focus_distance", "near_clip", "shutter"});
     Camera camera;
     camera.position = node.at("position").vec3();
     camera.look_at = node.at("look_at").vec3();
@@ -57,6 +58,7 @@ Camera read_camera(const Node& node) {
     if (auto aperture = node.find("aperture")) camera.aperture = aperture->number_at_least(0.0f, true);
     if (auto focus = node.find("focus_distance")) camera.focus_distance = focus->number_at_least(0.0f, false);
     if (auto near = node.find("near_clip")) camera.near_clip = near->number_at_least(0.0f, true);
+    if (auto shutter = node.find("shutter")) read_shutter(*shutter, camera);
     return camera;
 }
 
@@ -334,7 +336,7 @@ private:
             using Home = decltype(home);
             if (type_found || type != Home::kType) return;
             type_found = true;
-            std::vector<std::string_view> keys{"type", "material", "transform", "name"};
+            std::vector<std::string_view> keys{"type", "material", "transform", "name", "motion"};
             keys.insert(keys.end(), Home::kKeys.begin(), Home::kKeys.end());
             node.require_object(keys);
             object.shape = Home::read(node, *this);
@@ -366,6 +368,7 @@ private:
             object.material = it->second;
         }
         if (auto t = node.find("transform")) object.transform = read_transform(*t);
+        if (auto m = node.find("motion")) read_motion(*m, node, object, &read_transform);
         object.name = node.has("name") ? node.at("name").string() : node.path() + " (" + type + ")";
         return object;
     }
@@ -401,6 +404,7 @@ Scene load_scene_document(const nlohmann::json& doc, const std::filesystem::path
     if (auto l = root.find("lights")) scene.lights = read_lights(*l);
     check_scene_extent(scene, root);
     objects.split_obj_materials();
+    check_motion(scene, root, root.at("objects").array_size());
     return scene;
 }
 

@@ -25,6 +25,11 @@ struct Camera {
     // Primary rays start on the plane this far ahead along the view axis (smallpt's camera sits
     // outside the room and starts its rays 140 units ahead); 0 = at the eye.
     float near_clip = 0.0f;
+    // The shutter (scene key "shutter", scene/load_motion.hpp): when set, each camera ray is traced
+    // at a time drawn in [shutter_open, shutter_close] and moving objects are seen in their pose
+    // then; unset, nothing moves and no time is drawn.
+    bool shutter = false;
+    float shutter_open = 0.0f, shutter_close = 0.0f;
 };
 
 // Where a camera sample's numbers come from (render/sampler.hpp).

@@ -59,7 +59,8 @@ void check_scene_extent(const Scene& scene, const scene_json::Node& root) {
             objects.element(i).fail(std::string(mesh ? "the mesh's vertices" : "the shape's box") +
                                     " must lie within +-" + limit + " (larger ones overflow float in the BVH and the "
                                     "intersectors), it reaches " + reach_text(r_local));
-        const float r_world = reach(world_bounds(o.transform, local));
+        // A moving object over its whole shutter (every keyframe, and the poses between).
+        const float r_world = reach(o.motion.moving() ? motion_world_bounds(o.motion, local) : world_bounds(o.transform, local));
         if (!(r_world <= kMaxSceneCoordinate))
             objects.element(i).fail("with its transform, its box must lie within +-" + limit +
                                     " (larger ones overflow float in the BVH and the intersectors), it reaches " +

@@ -79,6 +79,7 @@ GOLDEN_TEST("mesh", mesh)
 GOLDEN_TEST("default", default)
 GOLDEN_TEST("showcase", showcase)
 GOLDEN_TEST("spheres-field", spheres_field)
+GOLDEN_TEST("motion", motion)
 
 // A scene added to scenes/ without a golden would go untested: every top-level scenes/*.json
 // needs its goldens.txt line, its golden and variance files, and both image tests registered.
@@ -152,4 +153,13 @@ TEST_CASE("golden mutation: one object shifted by 3 pixels is rejected", "[image
     const float pixel = 2.0f * depth * std::tan(glm::radians(0.5f * cam.vfov_degrees)) / static_cast<float>(spec.height);
     box.transform = Transform::from_matrix(glm::translate(glm::mat4(1.0f), 3.0f * pixel * right) * box.transform.to_world);
     expect_rejected(spec, scene, "mutation-object-shifted");
+}
+
+TEST_CASE("golden mutation: motion ignored is rejected", "[image][golden][mutation][motion]") {
+    // The rolling sphere rendered still at its shutter-open pose: what a renderer that dropped
+    // motion would show, in one region of the motion golden.
+    const GoldenSpec& spec = golden_spec("motion");
+    Scene scene = load_golden_scene(spec);
+    scene.objects[object_named(scene, "rolling sphere")].motion = Motion{};
+    expect_rejected(spec, scene, "mutation-motion-ignored");
 }

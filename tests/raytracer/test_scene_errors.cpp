@@ -6,6 +6,7 @@
 
 #include "raytracer/input_error.hpp"
 #include "raytracer/scene/load_scene.hpp"
+#include "scene_load_error.hpp"
 #include "scene_test_files.hpp"
 
 using sweeptrace::InputError;
@@ -27,20 +28,7 @@ std::string scene_text(const std::string& objects, const std::string& materials 
 
 const char* const kSphere = R"([{ "type": "sphere", "radius": 1, "material": "m" }])";
 
-// Loads `text` from a fresh file and returns the InputError message; fails the test if it loads.
-std::string load_error(const TempDir& dir, const std::string& text) {
-    const auto file = dir.write("bad.json", text);
-    try {
-        load_scene(file);
-    } catch (const InputError& e) {
-        const std::string message = e.what();
-        // Every message starts with the file it is about.
-        CHECK(message.rfind(file.string(), 0) == 0);
-        return message;
-    }
-    FAIL("expected InputError for:\n" << text);
-    return {};
-}
+using sweeptrace::test::load_error;
 
 }  // namespace
 
