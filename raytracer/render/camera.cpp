@@ -13,6 +13,8 @@ CameraModel::CameraModel(const Camera& c, int width, int height, const FilterSpe
     forward_ = glm::normalize(c.look_at - c.position);
     right_ = glm::normalize(glm::cross(forward_, c.up));
     up_ = glm::cross(right_, forward_);
+    // A left-handed camera draws the mirror image: only the image's x turns round, up stays.
+    if (c.left_handed) right_ = -right_;
     half_height_ = std::tan(0.5f * c.vfov_degrees * kPi / 180.0f);
     half_width_ = half_height_ * static_cast<float>(width) / static_cast<float>(height);
     inv_width_ = 1.0f / static_cast<float>(width);

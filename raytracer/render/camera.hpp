@@ -3,7 +3,8 @@
 // (by default the distance to look_at). The vertical field of view spans the film's height; the
 // horizontal extent follows the film's aspect ratio (width / height). Rays start on the plane
 // near_clip ahead of the eye along the view axis (nothing between the eye and it is seen). Film
-// positions within a pixel come from the pixel filter (film_offset).
+// positions within a pixel come from the pixel filter (film_offset). A left-handed camera
+// (Camera::left_handed) runs the image's x the other way: the mirror image of the right-handed one.
 #include <glm/vec3.hpp>
 
 #include "collision/ray.hpp"

@@ -40,7 +40,7 @@ using scene_json::Node;
 using scene_keys::parallel;
 
 Camera read_camera(const Node& node) {
-    node.require_object({"position", "look_at", "up", "fov", "aperture", "focus_distance", "near_clip", "shutter"});
+    node.require_object({"position", "look_at", "up", "fov", "aperture", "focus_distance", "near_clip", "handedness", "shutter"});
     Camera camera;
     camera.position = node.at("position").vec3();
     camera.look_at = node.at("look_at").vec3();
@@ -58,6 +58,11 @@ Camera read_camera(const Node& node) {
     if (auto aperture = node.find("aperture")) camera.aperture = aperture->number_at_least(0.0f, true);
     if (auto focus = node.find("focus_distance")) camera.focus_distance = focus->number_at_least(0.0f, false);
     if (auto near = node.find("near_clip")) camera.near_clip = near->number_at_least(0.0f, true);
+    if (auto hand = node.find("handedness")) {
+        const std::string h = hand->string();
+        if (h != "right" && h != "left") hand->fail("must be \"right\" (ours, the default) or \"left\" (pbrt's camera space), got " + hand->shown());
+        camera.left_handed = h == "left";
+    }
     if (auto shutter = node.find("shutter")) read_shutter(*shutter, camera);
     return camera;
 }
@@ -252,8 +257,9 @@ std::map<std::string, std::uint32_t> read_materials(const Node& node, std::vecto
     return index;
 }
 
-// Steps apply in list order: the first step acts on the object first.
-Transform read_transform(const Node& node) {
+// Steps apply in list order: the first step acts on the object first. `may_mirror`: negative
+// scale factors are allowed (mesh objects only, below).
+Transform read_transform_steps(const Node& node, bool may_mirror) {
     const std::size_t steps = node.array_size();
     glm::dmat4 m(1.0);
     for (std::size_t i = 0; i < steps; ++i) {
@@ -268,10 +274,18 @@ Transform read_transform(const Node& node) {
             s = rotation_matrix(glm::dvec3(r->at("axis").nonzero_vec3()), r->at("degrees").number());
         } else {
             const Node sc = step.at("scale");
-            // Positive only: a mirror would flip the front side of quads, disks and triangles.
-            const glm::vec3 f = sc.value().is_number() ? glm::vec3(sc.number_at_least(0.0f, false)) : sc.vec3();
-            for (int k = 0; k < 3; ++k)
-                if (!(f[k] > 0.0f)) sc.element(static_cast<std::size_t>(k)).number_at_least(0.0f, false);
+            // Positive only, but for meshes: a mirror would turn the front side of quads, disks and
+            // triangles, which the scene states in world terms (edge_u x edge_v, a b c); a mesh's
+            // faces keep the front its file gives them, carried like its normals (the inverse
+            // transpose), as pbrt-v4 does for a transform that swaps handedness.
+            const bool uniform = sc.value().is_number();
+            const glm::vec3 f = uniform ? glm::vec3(sc.number()) : sc.vec3();
+            for (int k = 0; k < 3; ++k) {
+                if (f[k] > 0.0f || (may_mirror && f[k] < 0.0f)) continue;
+                const Node factor = uniform ? sc : sc.element(static_cast<std::size_t>(k));
+                if (f[k] < 0.0f) factor.fail("must be > 0: only a mesh's transform may mirror (a negative scale), got " + factor.shown());
+                factor.number_at_least(0.0f, false);
+            }
             s = scale_matrix(glm::dvec3(f));
         }
         m = s * m;
@@ -282,6 +296,8 @@ Transform read_transform(const Node& node) {
         node.fail(e.what());
     }
 }
+
+Transform read_transform(const Node& node) { return read_transform_steps(node, false); }
 
 class ObjectReader {
 public:
@@ -367,7 +383,7 @@ private:
             }
             object.material = it->second;
         }
-        if (auto t = node.find("transform")) object.transform = read_transform(*t);
+        if (auto t = node.find("transform")) object.transform = read_transform_steps(*t, instance != nullptr);
         if (auto m = node.find("motion")) read_motion(*m, node, object, &read_transform);
         object.name = node.has("name") ? node.at("name").string() : node.path() + " (" + type + ")";
         return object;

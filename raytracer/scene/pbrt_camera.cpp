@@ -16,6 +16,7 @@
 #include <glm/vector_relational.hpp>
 
 #include "raytracer/input_error.hpp"
+#include "raytracer/scene/pbrt_transform.hpp"
 #include "raytracer/scene/pbrt_world.hpp"
 
 namespace sweeptrace::pbrt {
@@ -193,8 +194,10 @@ void write_camera_and_film(WorldContext& w, std::string& film_filename) {
     const double vfov = wy == 1.0 ? fov : 2.0 * std::atan(half) * 180.0 / kPi;
     if (!(vfov > 0.0 && vfov < 180.0)) d.fail(cam_at, "Camera: the vertical field of view comes out outside (0, 180) degrees");
 
-    // Pose: world-from-camera, mirrored with the world when pbrt's camera keeps orientation.
-    const glm::dmat4 wfc = w.mirror * glm::inverse(sc.camera_from_world);
+    // Pose: world-from-camera. Its columns are pbrt's image right, image up and forward in the
+    // world; when they form a right-handed frame (det > 0) the image's right is up x forward,
+    // which is our left-handed camera (pbrt_world.hpp).
+    const glm::dmat4 wfc = glm::inverse(sc.camera_from_world);
     const glm::dvec3 eye(wfc[3]);
     const glm::dvec3 forward = glm::normalize(glm::dvec3(wfc * glm::dvec4(0, 0, 1, 0)));
     glm::dvec3 up = glm::dvec3(wfc * glm::dvec4(0, 1, 0, 0));
@@ -207,6 +210,7 @@ void write_camera_and_film(WorldContext& w, std::string& film_filename) {
     const double look_distance = lens_radius > 0.0 ? focal : std::max(1.0, glm::length(eye));
     const glm::dvec3 look = eye + look_distance * forward;
     json camera{{"position", {eye.x, eye.y, eye.z}}, {"look_at", {look.x, look.y, look.z}}, {"up", {up.x, up.y, up.z}}, {"fov", vfov}};
+    if (det3(wfc) > 0.0) camera["handedness"] = "left";
     if (lens_radius > 0.0) {
         camera["aperture"] = 2.0 * lens_radius;
         camera["focus_distance"] = focal;

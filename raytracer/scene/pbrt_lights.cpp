@@ -11,9 +11,9 @@
 // constant background of its mean (warned). A 2:1 image is taken as pbrt-v3's equirectangular
 // map: +z up in light space, u = phi / 2 pi from +x toward +y, v = theta / pi from +z. Ours has +y
 // up, u = 0.5 from -z, turning right-handed toward +x; as a map of directions the two differ by
-// (x, y, z)_pbrt = (z, -x, y)_ours, a mirror, which the world mirror (or the light's transform)
-// must undo: the light's transform is written as our "rotate" about +y when it is one, else the
-// nearest such turn is used and the warning says so.
+// (x, y, z)_pbrt = (z, -x, y)_ours, a mirror, which our environment's "mirror" undoes: with the
+// light's transform the map's frame is written as our "mirror" and "rotate" about +y when it is
+// one, else the nearest such turn is used and the warning says so.
 #include <algorithm>
 #include <cmath>
 
@@ -77,8 +77,9 @@ void infinite(WorldContext& w, const LightRecord& l, const std::string& what, do
         d.warn(at, "two infinite lights", "a second infinite light beside another is not supported (ignored)");
         return;
     }
-    // Our direction d (world, mirrored) -> pbrt's light space: inverse(ctm) * mirror^-1 * d; it must
-    // equal P * Ry(-rotate) * d with P = (x, y, z) -> (z, -x, y). So Ry(-rotate) = P^-1 * that.
+    // Our direction d (the world is pbrt's) -> pbrt's light space: inverse(ctm) * d; it must equal
+    // P * S * Ry(-rotate) * d with P = (x, y, z) -> (z, -x, y) and S our "mirror" (x -> -x, or
+    // none). So S * Ry(-rotate) = P^-1 * inverse(ctm), whose determinant says whether S is needed.
     glm::dmat3 p_map(0.0);  // columns: images of our x, y, z
     p_map[0] = {0.0, -1.0, 0.0};
     p_map[1] = {0.0, 0.0, 1.0};
@@ -86,7 +87,10 @@ void infinite(WorldContext& w, const LightRecord& l, const std::string& what, do
     glm::dmat3 light(l.ctm);
     const double s = std::cbrt(std::fabs(glm::determinant(light)));
     if (s > 0.0) light /= s;
-    const glm::dmat3 q = glm::inverse(p_map) * glm::inverse(light) * glm::inverse(glm::dmat3(w.mirror));
+    glm::dmat3 q = glm::inverse(p_map) * glm::inverse(light);
+    const bool mirror = glm::determinant(q) < 0.0;
+    if (mirror)
+        for (int c = 0; c < 3; ++c) q[c][0] = -q[c][0];  // S * q: S is its own inverse
     // Ry(a) has columns (cos a, 0, -sin a), (0, 1, 0), (sin a, 0, cos a); q should be Ry(-rotate).
     const double a = std::atan2(-q[0][2], q[0][0]);
     glm::dmat3 ry(1.0);
@@ -95,8 +99,9 @@ void infinite(WorldContext& w, const LightRecord& l, const std::string& what, do
     double err = 0.0;
     for (int c = 0; c < 3; ++c) err = std::max(err, glm::length(q[c] - ry[c]));
     if (err > 1e-6)
-        d.warn(at, "environment orientation", what + ": the map's orientation is not a turn about our +y (its light transform tilts it or mirrors it): the nearest turn is used");
+        d.warn(at, "environment orientation", what + ": the map's orientation is not a turn about our +y (its light transform tilts it): the nearest turn is used");
     json env{{"file", w.files.json_path(file)}, {"rotate", -a * 180.0 / kPi}};
+    if (mirror) env["mirror"] = true;
     if (scale != 1.0) env["scale"] = scale;
     w.doc["background"] = {{"environment", env}};
 }
@@ -108,7 +113,7 @@ void write_light(WorldContext& w, const LightRecord& l) {
     const ParamList& p = s.params;
     Diagnostics& d = w.diag;
     const std::string what = "LightSource \"" + excerpt(s.type) + "\"";
-    const glm::dmat4 m = w.mirror * l.ctm;
+    const glm::dmat4& m = l.ctm;
     double scale = p.get_float("scale", 1.0, d);
     auto point_of = [&](const char* name, const glm::dvec3& fallback) {
         return glm::dvec3(m * glm::dvec4(p.get_point3(name, d).value_or(fallback), 1.0));

@@ -2,8 +2,8 @@
 // What the pbrt parser hands the JSON writer: each statement that makes something (camera, film,
 // a shape, a light), with the transformation matrix and attributes in force where it was written,
 // and the materials and textures already translated to our JSON (they do not depend on where they
-// are used). The writer decides the world's handedness only once it has seen every shape
-// (pbrt_world.hpp), so shapes are kept here, not written as they are read.
+// are used). Shapes are kept here and written after the whole file is read, so that a
+// NamedMaterial may come before its MakeNamedMaterial, as pbrt-v4 allows.
 #include <filesystem>
 #include <map>
 #include <optional>

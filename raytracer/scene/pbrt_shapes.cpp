@@ -8,8 +8,7 @@
 // Which side emits: pbrt's triangle normal is (p1 - p0) x (p2 - p0) (for p0 p1 p2 as indexed),
 // ours (b - a) x (c - a) for a b c: the same vertex order gives the same side. pbrt turns the
 // normal over under ReverseOrientation and under a transform that swaps handedness (and, with
-// "N", toward the interpolated normal); the world mirror (pbrt_world.hpp) swaps handedness too;
-// each turn here swaps b and c. A bilinear patch p00 p10 p01 p11 faces (p10 - p00) x (p01 - p00)
+// "N", toward the interpolated normal); each turn here swaps b and c. A bilinear patch p00 p10 p01 p11 faces (p10 - p00) x (p01 - p00)
 // and splits into (p00 p10 p11) and (p00 p11 p01), which face the same way.
 #include <algorithm>
 #include <cmath>
@@ -107,7 +106,7 @@ void write_mesh(WorldContext& w, const ShapeRecord& s, int corners) {
         d.fail(s.statement.where, what + ": \"uv\" must give one (u, v) per vertex of \"P\"");
     p.find("S");
     p.find("faceIndices");
-    const glm::dmat4 m = w.mirror * s.ctm;
+    const glm::dmat4& m = s.ctm;
     std::vector<glm::dvec3> world(pts.size());
     for (std::size_t i = 0; i < pts.size(); ++i) world[i] = glm::dvec3(m * glm::dvec4(pts[i], 1.0));
     double area = 0.0;  // for an area light's "power"
@@ -122,7 +121,7 @@ void write_mesh(WorldContext& w, const ShapeRecord& s, int corners) {
         d.warn(s.statement.where, "inline mesh uv", what + ": its \"uv\" are not kept (our triangles use their own barycentric uv): textures on it are approximated");
 
     const glm::dmat3 normal_m = glm::transpose(glm::inverse(glm::dmat3(m)));
-    const bool flip = (s.reverse_orientation != (det3(s.ctm) < 0.0)) != (det3(w.mirror) < 0.0);
+    const bool flip = s.reverse_orientation != (det3(s.ctm) < 0.0);
     TriangleWriter out(w, s);
     bool smooth_dropped = false, non_planar = false;
     auto shading = [&](std::initializer_list<long long> ids, glm::dvec3& sum) -> const glm::dvec3* {
@@ -165,7 +164,7 @@ void write_mesh(WorldContext& w, const ShapeRecord& s, int corners) {
 // (which the shape is symmetric in) when it would mirror. `emits_flipped` says whether pbrt's
 // emitting side is the inside / the -z side.
 void write_analytic(WorldContext& w, const ShapeRecord& s, json object, const glm::dmat4& object_to_pbrt, double area) {
-    glm::dmat4 m = w.mirror * s.ctm;
+    glm::dmat4 m = s.ctm;
     if (det3(m) < 0.0) m = m * object_mirror_x();
     m = m * object_to_pbrt;
     const std::optional<std::string> material = w.material_for(s, area);
@@ -178,8 +177,8 @@ void write_analytic(WorldContext& w, const ShapeRecord& s, json object, const gl
 }
 
 // The area scale of a transform for a surface: exact for similarities, approximated otherwise.
-double area_scale(WorldContext& w, const ShapeRecord& s) {
-    const std::optional<AffineSteps> a = split_affine(w.mirror * s.ctm * (det3(w.mirror * s.ctm) < 0 ? object_mirror_x() : glm::dmat4(1.0)));
+double area_scale(const ShapeRecord& s) {
+    const std::optional<AffineSteps> a = split_affine(s.ctm * (det3(s.ctm) < 0 ? object_mirror_x() : glm::dmat4(1.0)));
     if (!a) return 1.0;
     const glm::dvec3 k = a->scale;
     return std::cbrt(k.x * k.y * k.z) * std::cbrt(k.x * k.y * k.z);
@@ -212,17 +211,17 @@ void write_shape(WorldContext& w, const ShapeRecord& s) {
         warn_partial(w, s, zmin > -r || zmax < r || phimax < 360.0, "a full sphere instead");
         if (emits_inward)
             d.warn(s.statement.where, "inward sphere light", what + ": a sphere light turned inside out (ReverseOrientation) emits outward here");
-        write_analytic(w, s, {{"type", "sphere"}, {"radius", r}}, glm::dmat4(1.0), 4.0 * kPi * r * r * area_scale(w, s));
+        write_analytic(w, s, {{"type", "sphere"}, {"radius", r}}, glm::dmat4(1.0), 4.0 * kPi * r * r * area_scale(s));
     } else if (type == "disk") {
         const double r = p.get_float("radius", 1.0, d), h = p.get_float("height", 0.0, d);
         if (!(r > 0.0)) d.fail(s.statement.where, what + ": \"radius\" must be > 0");
         const double inner = p.get_float("innerradius", 0.0, d), phimax = p.get_float("phimax", 360.0, d);
         warn_partial(w, s, inner > 0.0 || phimax < 360.0, "a full disk instead");
-        // The disk faces +z in pbrt's object space; the world mirror and a mirroring CTM are undone
-        // in the object's x (write_analytic), which keeps that side, so only pbrt's own turn applies.
+        // The disk faces +z in pbrt's object space; a mirroring CTM is undone in the object's x
+        // (write_analytic), which keeps that side, so only pbrt's own turn applies.
         const double nz = emits_inward ? -1.0 : 1.0;
         write_analytic(w, s, {{"type", "disk"}, {"center", {0.0, 0.0, h}}, {"normal", {0.0, 0.0, nz}}, {"radius", r}}, glm::dmat4(1.0),
-                       kPi * r * r * area_scale(w, s));
+                       kPi * r * r * area_scale(s));
     } else if (type == "cylinder") {
         const double r = p.get_float("radius", 1.0, d);
         double zmin = p.get_float("zmin", -1.0, d), zmax = p.get_float("zmax", 1.0, d);
@@ -233,7 +232,7 @@ void write_shape(WorldContext& w, const ShapeRecord& s) {
         d.warn(s.statement.where, "open cylinder", what + ": pbrt's cylinder is open; ours is closed by flat caps (approximated)");
         // Our cylinder stands on y; pbrt's on z: a quarter turn about x takes y to z.
         write_analytic(w, s, {{"type", "cylinder"}, {"center", {0.0, 0.5 * (zmin + zmax), 0.0}}, {"radius", r}, {"height", zmax - zmin}},
-                       rotation_matrix({1.0, 0.0, 0.0}, 90.0), 2.0 * kPi * r * (zmax - zmin) * area_scale(w, s));
+                       rotation_matrix({1.0, 0.0, 0.0}, 90.0), 2.0 * kPi * r * (zmax - zmin) * area_scale(s));
     } else if (type == "trianglemesh") {
         write_mesh(w, s, 3);
     } else if (type == "bilinearmesh") {
@@ -253,19 +252,20 @@ void write_shape(WorldContext& w, const ShapeRecord& s) {
             d.warn(s.statement.where, "displacement", what + ": \"displacement\" is not supported (ignored)");
         }
         p.find("edgelength");
-        glm::dmat4 m = w.mirror * s.ctm;
-        if (det3(m) < 0.0) {
-            d.warn(s.statement.where, "mirrored plymesh", what + ": a mirroring transform cannot be written for a mesh file: the mesh is drawn unmirrored in its own x");
-            m = m * object_mirror_x();
-        }
-        if (emits_inward && !s.area_light->statement.params.get_bool("twosided", false, d))
+        // A mirroring CTM is written as a mirror in the mesh's own x first ({"scale": [-1, 1, 1]}, which
+        // our mesh objects allow), then the rest, which keeps orientation. Each face's front is then
+        // its file's, carried by the inverse transpose: pbrt's for a transform that swaps handedness.
+        const bool mirrors = det3(s.ctm) < 0.0;
+        const glm::dmat4 m = mirrors ? s.ctm * object_mirror_x() : s.ctm;
+        if (s.area_light && s.reverse_orientation && !s.area_light->statement.params.get_bool("twosided", false, d))
             d.warn(s.statement.where, "reversed plymesh light", what + ": ReverseOrientation of an emitting mesh file is not applied (it emits from its faces' front)");
         const std::optional<std::string> material = w.material_for(s, 0.0);
         if (!material) return;
         if (s.area_light && s.area_light->statement.params.has("power"))
             d.warn(s.statement.where, "plymesh power", what + ": \"power\" of an emitting mesh file needs its area, which the converter does not read: the light's L is used");
-        const std::optional<json> steps = transform_json(m);
+        std::optional<json> steps = transform_json(m);
         if (!steps) d.fail(s.statement.where, what + ": its transform is singular (a zero scale?)");
+        if (mirrors) steps->insert(steps->begin(), json{{"scale", {-1.0, 1.0, 1.0}}});
         json object{{"type", "mesh"}, {"file", w.files.json_path(file)}, {"material", *material}};
         if (!steps->empty()) object["transform"] = *steps;
         w.doc["objects"].push_back(std::move(object));

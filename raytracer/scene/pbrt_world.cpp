@@ -82,24 +82,11 @@ std::optional<std::string> WorldContext::material_for(const ShapeRecord& s, doub
 
 json write_world(const PbrtScene& scene, MaterialTranslator& materials, const FileNames& files, Diagnostics& diag,
                  std::string& film_filename) {
-    WorldContext w{scene, materials, files, diag, glm::dmat4(1.0), nlohmann::json::object(), 0};
+    WorldContext w{scene, materials, files, diag, nlohmann::json::object(), 0};
     w.doc = json::object();
     w.doc["description"] = "converted from the pbrt-v4 scene " + scene.main_file.filename().string() + " by sweeptrace";
     w.doc["materials"] = json::object();
     w.doc["objects"] = json::array();
-    const glm::dmat4 world_from_camera = glm::inverse(scene.camera_from_world);
-    if (det3(world_from_camera) > 0.0) {
-        bool has_mesh_file = false;
-        for (const ShapeRecord& s : scene.shapes) has_mesh_file |= s.statement.type == "plymesh";
-        if (has_mesh_file) {
-            const Where at = scene.camera ? scene.camera->where : scene.shapes.front().statement.where;
-            diag.warn(at, "mirrored image",
-                      "pbrt's camera space is left-handed and this scene does not flip it (no `Scale -1 1 1`); its plymesh files "
-                      "cannot be mirrored in our JSON, so the image is pbrt's mirrored left to right");
-        } else {
-            w.mirror[0][0] = -1.0;
-        }
-    }
     write_camera_and_film(w, film_filename);
     for (const ShapeRecord& s : scene.shapes) write_shape(w, s);
     for (const LightRecord& l : scene.lights) write_light(w, l);

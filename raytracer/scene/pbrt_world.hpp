@@ -1,16 +1,14 @@
 #pragma once
-// PbrtScene -> our scene JSON document. One decision is made for the whole scene here: handedness.
+// PbrtScene -> our scene JSON document.
 //
-// pbrt's camera space is left-handed (x to the image's right, y up, z forward: a plain `LookAt`
-// puts world +x on the right when looking down +z with +y up), ours is right-handed (right =
-// forward x up). When pbrt's world-from-camera matrix keeps orientation (det > 0, a plain
-// LookAt), the same world seen by our camera is the mirror image of pbrt's; exporters that
-// start with `Scale -1 1 1` (det < 0; Bitterli's scenes, Blender's exporter) need nothing.
-// So for det > 0 the whole world, camera, lights and shapes, is mirrored (x -> -x) on the way in,
-// which makes the image pbrt's. A shape whose mirror we cannot write (our JSON transforms do not
-// mirror) is drawn by an equal shape: spheres, disks and cylinders are symmetric in their own x,
-// triangles are written vertex by vertex. A mesh file cannot be mirrored, so with any plymesh in
-// such a scene the world is kept and the warning says the image is pbrt's mirrored left to right.
+// Handedness. pbrt's camera space is left-handed (x to the image's right, y up, z forward: a
+// plain `LookAt` puts world +x on the right when looking down +z with +y up); ours is
+// right-handed (right = forward x up), which would draw the mirror image. The world is never
+// changed for this: the camera is. When pbrt's world-from-camera matrix keeps orientation (det > 0,
+// a plain LookAt, pbrt-v4's own test scenes) our camera is written left-handed
+// (camera.handedness "left": right = up x forward), which is pbrt's camera exactly; exporters that
+// start with `Scale -1 1 1` (det < 0; Bitterli's scenes, Blender's exporter) get our right-handed
+// camera. Shapes, lights and mesh files therefore stay where pbrt puts them.
 #include <string>
 
 #include <nlohmann/json.hpp>
@@ -30,7 +28,6 @@ struct WorldContext {
     MaterialTranslator& materials;
     const FileNames& files;
     Diagnostics& diag;
-    glm::dmat4 mirror{1.0};  // applied to the whole world: identity or x -> -x
     nlohmann::json doc;
     std::size_t triangles = 0;
 

@@ -25,6 +25,11 @@ struct Camera {
     // Primary rays start on the plane this far ahead along the view axis (smallpt's camera sits
     // outside the room and starts its rays 140 units ahead); 0 = at the eye.
     float near_clip = 0.0f;
+    // Which way the image's x runs (scene key "handedness"). Right-handed, ours: the image's right
+    // is forward x up. Left-handed: up x forward, the mirror image, as pbrt's camera space (x right,
+    // y up, z forward) sees the world through a plain LookAt; the pbrt importer sets it so that a
+    // scene keeps its own world and still renders as pbrt draws it (docs/pbrt-import.md).
+    bool left_handed = false;
     // The shutter (scene key "shutter", scene/load_motion.hpp): when set, each camera ray is traced
     // at a time drawn in [shutter_open, shutter_close] and moving objects are seen in their pose
     // then; unset, nothing moves and no time is drawn.

@@ -127,6 +127,7 @@ render_case("camera-look-at-position", E + r"scene\.json: camera\.look_at: must 
             scene(camera__look_at=[0, 0, 5]))
 render_case("camera-fov-180", E + r"scene\.json: camera\.fov: must be a vertical field of view", scene(camera__fov=180))
 render_case("camera-fov-0", E + r"scene\.json: camera\.fov:", scene(camera__fov=0))
+render_case("camera-handedness-unknown", E + r"scene\.json: camera\.handedness: must be \"right\"", scene(camera__handedness="mirrored"))
 render_case("camera-up-parallel", E + r"scene\.json: camera\.up: must not be parallel", scene(camera__up=[0, 0, 1]))
 render_case("camera-position-short", E + r"scene\.json: camera\.position: must be an array of 3", scene(camera__position=[1, 2]))
 render_case("camera-position-string", E + r"scene\.json: camera\.position\[0\]: must be a number",

@@ -1,9 +1,8 @@
 #pragma once
 // pbrt scenes written for the tests: the text in a temporary folder, converted to our JSON (as
-// `sweeptrace convert` does, without loading it) or loaded as a Scene. A camera that keeps pbrt's
-// orientation (the default) mirrors the world x -> -x (scene/pbrt_world.hpp), which the
-// expectations take into account; kFlipped starts a scene with `Scale -1 1 1` so nothing is
-// mirrored.
+// `sweeptrace convert` does, without loading it) or loaded as a Scene. The world is pbrt's either
+// way; a camera that keeps pbrt's orientation (the default) becomes our left-handed camera
+// (scene/pbrt_world.hpp); kFlipped starts a scene with `Scale -1 1 1`, a right-handed one.
 #include <string>
 #include <vector>
 

@@ -26,9 +26,9 @@ std::string bytes(const fs::path& p) {
 }
 
 // A small scene with a texture and a PLY mesh in subfolders (relative paths after conversion),
-// conductors named and by rgb eta/k. A flipped camera (det -1), so the mesh needs no mirror.
-const char* kScene = R"(Scale -1 1 1
-LookAt 0 1 -4  0 0.5 0  0 1 0
+// conductors named and by rgb eta/k. A plain LookAt, as pbrt-v4's own scenes have: our camera
+// is written left-handed, the PLY mesh stays as it is.
+const char* kScene = R"(LookAt 0 1 -4  0 0.5 0  0 1 0
 Camera "perspective" "float fov" 45
 Film "rgb" "integer xresolution" 24 "integer yresolution" 16
 Sampler "independent" "integer pixelsamples" 2

@@ -125,26 +125,39 @@ TEST_CASE("pbrt camera: LookAt's eye and view direction, the fov on the shorter 
 
 TEST_CASE("pbrt camera: handedness: with a plain LookAt an object at +x is on the image's right, as in pbrt", "[pbrt]") {
     const TempDir dir;
+    // A unit cube about the origin as a PLY file: pbrt-v4's own scenes combine plain LookAt
+    // cameras with PLY meshes, which once came out mirrored.
+    dir.write("cube.ply", "ply\nformat ascii 1.0\nelement vertex 8\nproperty float x\nproperty float y\nproperty float z\n"
+                          "element face 12\nproperty list uchar int vertex_indices\nend_header\n"
+                          "-1 -1 -1\n1 -1 -1\n1 1 -1\n-1 1 -1\n-1 -1 1\n1 -1 1\n1 1 1\n-1 1 1\n"
+                          "3 0 2 1\n3 0 3 2\n3 4 5 6\n3 4 6 7\n3 0 1 5\n3 0 5 4\n3 3 7 6\n3 3 6 2\n3 0 4 7\n3 0 7 3\n3 1 2 6\n3 1 6 5\n");
     // pbrt's camera space: x right, y up, z forward. Looking down +z, world +x is to the right.
-    for (const char* prefix : {"", "Scale -1 1 1\n"}) {
-        const std::string text = std::string(prefix) +
-                                 "LookAt 0 0 -5  0 0 0  0 1 0\nCamera \"perspective\" \"float fov\" 40\n"
-                                 "Film \"rgb\" \"integer xresolution\" 16 \"integer yresolution\" 8\n"
-                                 "Sampler \"independent\" \"integer pixelsamples\" 1\nPixelFilter \"box\"\n"
-                                 "WorldBegin\nLightSource \"infinite\" \"rgb L\" [1 1 1]\n"
-                                 "Material \"diffuse\" \"rgb reflectance\" [0 0 0]\nTranslate 1.2 0 0\nShape \"sphere\" \"float radius\" 1\n";
-        const Scene s = load_text(dir, text);
-        const auto accel = make_accel(AccelKind::Bvh, s);
-        RenderOptions o;
-        o.spp = 1;
-        o.max_depth = 2;
-        const RenderResult r = render(s, *accel, o);
-        double left = 0.0, right = 0.0;  // a black sphere on a white sky: where it is, it is dark
-        for (int y = 0; y < r.image.height; ++y)
-            for (int x = 0; x < r.image.width; ++x) (x < r.image.width / 2 ? left : right) += r.image.at(x, y).g;
-        INFO("prefix '" << prefix << "': left " << left << ", right " << right);
-        // pbrt puts +x on the right for the plain LookAt; under `Scale -1 1 1` on the left.
-        if (std::string(prefix).empty()) CHECK(right < left - 10.0);
-        else CHECK(left < right - 10.0);
-    }
+    for (const char* prefix : {"", "Scale -1 1 1\n"})
+        for (const char* shape : {"Shape \"sphere\" \"float radius\" 1\n", "Scale 0.8 0.8 0.8\nShape \"plymesh\" \"string filename\" \"cube.ply\"\n"}) {
+            const std::string text = std::string(prefix) +
+                                     "LookAt 0 0 -5  0 0 0  0 1 0\nCamera \"perspective\" \"float fov\" 40\n"
+                                     "Film \"rgb\" \"integer xresolution\" 16 \"integer yresolution\" 8\n"
+                                     "Sampler \"independent\" \"integer pixelsamples\" 1\nPixelFilter \"box\"\n"
+                                     "WorldBegin\nLightSource \"infinite\" \"rgb L\" [1 1 1]\n"
+                                     "Material \"diffuse\" \"rgb reflectance\" [0 0 0]\nTranslate 1.2 0 0\n" + shape;
+            INFO("prefix '" << prefix << "', " << shape);
+            // The world is pbrt's: the object stays at +x; the camera carries the handedness.
+            const auto c = sweeptrace::test::convert_text(dir, text);
+            CHECK(c.warnings.empty());
+            CHECK(c.doc["objects"][0]["transform"].dump().find("[1.2,0.0,0.0]") != std::string::npos);
+            CHECK(c.doc["camera"].value("handedness", "right") == (std::string(prefix).empty() ? "left" : "right"));
+            const Scene s = load_text(dir, text);
+            const auto accel = make_accel(AccelKind::Bvh, s);
+            RenderOptions o;
+            o.spp = 1;
+            o.max_depth = 2;
+            const RenderResult r = render(s, *accel, o);
+            double left = 0.0, right = 0.0;  // a black object on a white sky: where it is, it is dark
+            for (int y = 0; y < r.image.height; ++y)
+                for (int x = 0; x < r.image.width; ++x) (x < r.image.width / 2 ? left : right) += r.image.at(x, y).g;
+            INFO("left " << left << ", right " << right);
+            // pbrt puts +x on the right for the plain LookAt; under `Scale -1 1 1` on the left.
+            if (std::string(prefix).empty()) CHECK(right < left - 10.0);
+            else CHECK(left < right - 10.0);
+        }
 }

@@ -10,6 +10,7 @@
 #include "pbrt_test_support.hpp"
 #include "raytracer/image/image.hpp"
 #include "raytracer/input_error.hpp"
+#include "raytracer/scene/scene_transform.hpp"
 
 using namespace sweeptrace;
 using sweeptrace::test::convert_text;
@@ -139,7 +140,24 @@ TEST_CASE("pbrt shapes: sphere, disk, cylinder, trianglemesh, bilinearmesh, plym
     CHECK(has_warning(c.warnings, "scene.pbrt:5: Shape \"cylinder\": pbrt's cylinder is open"));
 }
 
-TEST_CASE("pbrt shapes: the emitting side of triangles follows ReverseOrientation and the world mirror", "[pbrt]") {
+TEST_CASE("pbrt shapes: a plymesh under a mirroring transform is written mirrored, with no warning", "[pbrt]") {
+    const TempDir dir;
+    dir.write("m.ply", "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
+                       "element face 1\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n");
+    const std::string text = "WorldBegin\nMaterial \"diffuse\"\nTranslate 1 2 3\nRotate 30 0 1 0\nScale -2 1 1\nShape \"plymesh\" \"string filename\" \"m.ply\"\n";
+    const auto c = convert_text(dir, text);
+    CHECK(c.warnings.empty());
+    const json& steps = c.doc["objects"][0]["transform"];
+    CHECK(steps[0] == json({{"scale", {-1.0, 1.0, 1.0}}}));
+    // The object's matrix, as our loader builds it, is pbrt's CTM.
+    std::vector<std::string> warnings;
+    const Scene s = load_pbrt_scene(dir.write("scene.pbrt", text), false, warnings);
+    const glm::dmat4 ctm = translation_matrix({1, 2, 3}) * rotation_matrix({0, 1, 0}, 30.0) * scale_matrix({-2, 1, 1});
+    for (int col = 0; col < 4; ++col)
+        for (int row = 0; row < 3; ++row) CHECK(s.objects[0].transform.to_world[col][row] == Approx(ctm[col][row]).margin(1e-6));
+}
+
+TEST_CASE("pbrt shapes: the emitting side of triangles follows ReverseOrientation and mirroring transforms", "[pbrt]") {
     const TempDir dir;
     auto front_z = [&](const std::string& prefix, const std::string& attrs) {
         const auto c = convert_text(dir, prefix + "WorldBegin\nAreaLightSource \"diffuse\"\n" + attrs +
@@ -152,8 +170,12 @@ TEST_CASE("pbrt shapes: the emitting side of triangles follows ReverseOrientatio
     CHECK(front_z(kFlipped, "ReverseOrientation\n") < 0.0);
     // A transform that swaps handedness turns pbrt's normal over (the plane z = 0 itself is kept).
     CHECK(front_z(kFlipped, "Scale 1 1 -1\n") < 0.0);
-    // No `Scale -1 1 1`: the world is mirrored in x, which keeps a normal along z.
+    // The camera's handedness is the camera's: the world, and each side, stay pbrt's.
     CHECK(front_z("", "") > 0.0);
+    CHECK(front_z("", "ReverseOrientation\n") < 0.0);
+    // Mirrored in x the triangle's world winding turns, and pbrt's flip for a handedness swap
+    // turns it back: the object's own +z, as the inverse transpose carries it.
+    CHECK(front_z("", "Scale -1 1 1\n") > 0.0);
 }
 
 TEST_CASE("pbrt lights: area, point, spot, distant, infinite", "[pbrt]") {
@@ -265,16 +287,20 @@ TEST_CASE("pbrt infinite light from a 2:1 map: pbrt-v3's z-up mapping as our rot
     for (auto& p : sky.pixels) p = glm::vec3(0.5f, 0.6f, 0.7f);
     write_image(sky, dir.path() / "sky.pfm");
     const std::string light = "WorldBegin\nAttributeBegin\nRotate -90 1 0 0\nLightSource \"infinite\" \"string filename\" \"sky.pfm\" \"float scale\" 2\nAttributeEnd\n";
-    // A plain camera: the world is mirrored, which undoes the mirror between the two mappings.
-    const auto c = convert_text(dir, light);
-    CHECK(c.warnings.empty());
-    const json& env = c.doc["background"]["environment"];
-    CHECK(env["file"] == "sky.pfm");
-    CHECK(env["scale"] == 2.0);
-    CHECK(env["rotate"].get<double>() == Approx(-90.0));
-    // A camera that flips x keeps the world: the map would need a mirror, which our environment lacks.
-    const auto f = convert_text(dir, std::string(kFlipped) + light);
-    CHECK(has_warning(f.warnings, "the map's orientation is not a turn about our +y"));
+    // pbrt-v3's equirect map is the mirror image of ours: our "mirror" and a turn about +y, whichever
+    // way the camera is handed (the camera does not move the world).
+    for (const std::string prefix : {"", kFlipped}) {
+        const auto c = convert_text(dir, prefix + light);
+        CHECK(c.warnings.empty());
+        const json& env = c.doc["background"]["environment"];
+        CHECK(env["file"] == "sky.pfm");
+        CHECK(env["scale"] == 2.0);
+        CHECK(env["mirror"] == true);
+        CHECK(env["rotate"].get<double>() == Approx(90.0));
+    }
+    // A light transform that tilts the map: the nearest turn, said.
+    const auto t = convert_text(dir, "WorldBegin\nRotate 30 1 0 0\nLightSource \"infinite\" \"string filename\" \"sky.pfm\"\n");
+    CHECK(has_warning(t.warnings, "the map's orientation is not a turn about our +y"));
     // A square map is pbrt-v4's equal-area mapping: its mean as a constant.
     write_image(Image(4, 4), dir.path() / "square.pfm");
     const auto s = convert_text(dir, "WorldBegin\nLightSource \"infinite\" \"string filename\" \"square.pfm\"\n");

@@ -170,7 +170,9 @@ TEST_CASE("scene errors: transforms", "[scene][errors]") {
     CHECK_THAT(load_error(dir, with_transform(R"([{ "translate": [1, 0, 0] }, { "scale": [1, 0, 1] }])")),
                Catch::Contains("objects[0].transform[1].scale[1]: must be > 0, got 0"));
     CHECK_THAT(load_error(dir, with_transform(R"([{ "scale": -2 }])")),
-               Catch::Contains("objects[0].transform[0].scale: must be > 0, got -2"));
+               Catch::Contains("objects[0].transform[0].scale: must be > 0: only a mesh's transform may mirror (a negative scale), got -2"));
+    CHECK_THAT(load_error(dir, with_transform(R"([{ "scale": [1, -1, 1] }])")),
+               Catch::Contains("objects[0].transform[0].scale[1]: must be > 0: only a mesh's transform may mirror"));
     CHECK_THAT(load_error(dir, with_transform(R"([{ "translate": [1, 0, 0], "scale": 2 }])")),
                Catch::Contains("objects[0].transform[0]: each step has exactly one of"));
     CHECK_THAT(load_error(dir, with_transform(R"([{ "rotate": { "axis": [0, 0, 0], "degrees": 30 } }])")),
