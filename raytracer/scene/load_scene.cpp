@@ -16,6 +16,7 @@
 #include "raytracer/geometry/shape.hpp"
 #include "raytracer/input_error.hpp"
 #include "raytracer/scene/film_limits.hpp"
+#include "raytracer/scene/inline_mesh.hpp"
 #include "raytracer/scene/json_reader.hpp"
 #include "raytracer/scene/load_film_display.hpp"
 #include "raytracer/scene/load_environment.hpp"
@@ -310,10 +311,24 @@ public:
         for (std::size_t i = 0; i < n; ++i) scene_.objects.push_back(read(objects.element(i)));
     }
 
-    // The scene's index of the mesh in the OBJ or PLY file `file_node` names (by its extension,
-    // .ply in any case is PLY, anything else OBJ), loading it the first time (the mesh shape's
-    // home calls this to read its "file" key).
-    std::uint32_t mesh_index(const Node& file_node) {
+    // The scene's index of a mesh object's mesh (the mesh shape's home calls this): the mesh
+    // given inline (inline_mesh.hpp), or the one in the OBJ or PLY file its "file" names (by its
+    // extension, .ply in any case is PLY, anything else OBJ), loaded the first time.
+    std::uint32_t mesh_index(const Node& object) {
+        const std::optional<Node> file = object.find("file");
+        for (std::string_view key : kInlineMeshKeys)
+            if (object.has(key) && file) object.at(key).fail("a mesh is either a \"file\" or given inline (\"vertices\", \"indices\"), not both");
+        if (!file) {
+            if (!object.has("vertices")) object.fail("a mesh needs a \"file\" (OBJ or PLY) or its \"vertices\" and \"indices\" inline");
+            scene_.meshes.push_back(read_inline_mesh(object));
+            const auto index = static_cast<std::uint32_t>(scene_.meshes.size() - 1);
+            meshes_without_materials_.insert(index);  // no materials of its own either
+            return index;
+        }
+        return mesh_file_index(*file);
+    }
+
+    std::uint32_t mesh_file_index(const Node& file_node) {
         const std::string relative = file_node.string();
         if (relative.empty()) file_node.fail("must name an OBJ or PLY file");
         const std::filesystem::path path = scene_.source.parent_path() / relative;
@@ -333,7 +348,7 @@ public:
         }
         const auto index = static_cast<std::uint32_t>(scene_.meshes.size() - 1);
         mesh_by_file_.emplace(key, index);
-        if (ply) ply_meshes_.insert(index);
+        if (ply) meshes_without_materials_.insert(index);
         else obj_materials_.add_mesh(index, path, std::move(outline));
         return index;
     }
@@ -364,13 +379,14 @@ private:
         }
 
         const auto object_index = static_cast<std::uint32_t>(scene_.objects.size());
-        // A PLY carries no materials: its objects name one.
+        // A PLY or inline mesh carries no materials: its objects name one.
         const auto* instance = std::get_if<MeshInstance>(&object.shape);
-        const bool ply = instance && ply_meshes_.count(instance->mesh) > 0;
-        if (ply) {
-            if (auto ms = node.find("materials")) ms->fail("a PLY mesh has no materials of its own: give the object a \"material\"");
+        const bool no_own_materials = instance && meshes_without_materials_.count(instance->mesh) > 0;
+        if (no_own_materials) {
+            if (auto ms = node.find("materials"))
+                ms->fail(std::string(node.has("file") ? "a PLY" : "an inline") + " mesh has no materials of its own: give the object a \"material\"");
         }
-        if (auto own = ply ? std::nullopt : obj_materials_.from_obj(node, object.shape, object_index, scene_)) {
+        if (auto own = no_own_materials ? std::nullopt : obj_materials_.from_obj(node, object.shape, object_index, scene_)) {
             object.material = *own;
         } else {
             const Node material = node.at("material");
@@ -392,7 +408,7 @@ private:
     Scene& scene_;
     std::map<std::string, std::uint32_t> materials_;
     std::map<std::string, std::uint32_t> mesh_by_file_;
-    std::set<std::uint32_t> ply_meshes_;
+    std::set<std::uint32_t> meshes_without_materials_;
     ObjMaterials obj_materials_;
 };
 

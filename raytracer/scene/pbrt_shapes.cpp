@@ -1,16 +1,18 @@
 // pbrt-v4 shapes as our objects (scenes/README.md "Objects"). Analytic shapes stay analytic, in
 // the object space pbrt defines them in: a sphere about the origin, a disk in the plane
 // z = "height", a cylinder about the z axis (ours is about y: turned by 90 degrees about x).
-// Triangle and bilinear meshes given inline are written as our triangles, their vertices
-// transformed to the world here (our JSON has no inline meshes); a plymesh becomes a mesh object
+// Triangle and bilinear meshes given inline become inline mesh objects, their vertices
+// transformed to the world here, with their normals and uv; a plymesh becomes a mesh object
 // naming its file.
 //
 // Which side emits: pbrt's triangle normal is (p1 - p0) x (p2 - p0) (for p0 p1 p2 as indexed),
 // ours (b - a) x (c - a) for a b c: the same vertex order gives the same side. pbrt turns the
 // normal over under ReverseOrientation and under a transform that swaps handedness (and, with
-// "N", toward the interpolated normal); each turn here swaps b and c. A bilinear patch p00 p10 p01 p11 faces (p10 - p00) x (p01 - p00)
-// and splits into (p00 p10 p11) and (p00 p11 p01), which face the same way.
+// "N", toward the interpolated normal); each turn here swaps b and c. A bilinear patch
+// p00 p10 p01 p11 faces (p10 - p00) x (p01 - p00) and splits into (p00 p10 p11) and
+// (p00 p11 p01), which face the same way.
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 #include <glm/geometric.hpp>
@@ -40,46 +42,18 @@ bool reads_texture(const json& material) {
     return false;
 }
 
-// Triangles given by world-space vertices and indices, written one by one.
-class TriangleWriter {
-public:
-    TriangleWriter(WorldContext& w, const ShapeRecord& s) : w_(w), s_(s) {}
-
-    void add(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c, const glm::dvec3* shading_normal, bool flip,
-             const std::string& material) {
-        // As our loader will see them: rounded to float.
-        const glm::dvec3 fa{glm::vec3(a)}, fb{glm::vec3(b)}, fc{glm::vec3(c)};
-        const glm::dvec3 n = glm::cross(fb - fa, fc - fa);
-        if (n == glm::dvec3(0.0)) {
-            w_.diag.warn(s_.statement.where, "degenerate triangle", "Shape \"" + s_.statement.type + "\": triangles without area are left out");
-            return;
-        }
-        bool swap = flip;
-        if (shading_normal) swap = glm::dot(n, *shading_normal) < 0.0;
-        if (++w_.triangles > kMaxInlineTriangles)
-            w_.diag.fail(s_.statement.where, "more than " + std::to_string(kMaxInlineTriangles) +
-                                                 " triangles given inline (trianglemesh, bilinearmesh): write large meshes as PLY files (Shape \"plymesh\")");
-        const glm::dvec3& second = swap ? c : b;
-        const glm::dvec3& third = swap ? b : c;
-        w_.doc["objects"].push_back({{"type", "triangle"},
-                                     {"a", {a.x, a.y, a.z}},
-                                     {"b", {second.x, second.y, second.z}},
-                                     {"c", {third.x, third.y, third.z}},
-                                     {"material", material}});
-    }
-
-private:
-    WorldContext& w_;
-    const ShapeRecord& s_;
-};
-
 std::vector<glm::dvec3> points(const std::vector<double>& v) {
     std::vector<glm::dvec3> out(v.size() / 3);
     for (std::size_t i = 0; i < out.size(); ++i) out[i] = {v[3 * i], v[3 * i + 1], v[3 * i + 2]};
     return out;
 }
 
-// trianglemesh (corners 3) and bilinearmesh (corners 4): P, indices, N; checked like pbrt does.
+// trianglemesh (corners 3) and bilinearmesh (corners 4), checked like pbrt does, as one inline
+// mesh object (scene/inline_mesh.hpp) in world space: pbrt's vertex normals "N" (to the world by
+// the inverse transpose, turned over under ReverseOrientation as pbrt-v4 does) and "uv" are kept.
+// Without "uv" pbrt gives each triangle (0, 0), (1, 0), (1, 1) and each patch (0, 0), (1, 0),
+// (0, 1), (1, 1) at p00 p10 p01 p11; a textured material then gets those, its faces' vertices
+// unshared.
 void write_mesh(WorldContext& w, const ShapeRecord& s, int corners) {
     const ParamList& p = s.statement.params;
     Diagnostics& d = w.diag;
@@ -107,8 +81,9 @@ void write_mesh(WorldContext& w, const ShapeRecord& s, int corners) {
     p.find("S");
     p.find("faceIndices");
     const glm::dmat4& m = s.ctm;
+    // As our loader will see them: rounded to float.
     std::vector<glm::dvec3> world(pts.size());
-    for (std::size_t i = 0; i < pts.size(); ++i) world[i] = glm::dvec3(m * glm::dvec4(pts[i], 1.0));
+    for (std::size_t i = 0; i < pts.size(); ++i) world[i] = glm::dvec3(glm::vec3(m * glm::dvec4(pts[i], 1.0)));
     double area = 0.0;  // for an area light's "power"
     for (std::size_t f = 0; f < idx.size(); f += static_cast<std::size_t>(corners)) {
         const glm::dvec3& a = world[idx[f]];
@@ -117,47 +92,92 @@ void write_mesh(WorldContext& w, const ShapeRecord& s, int corners) {
     }
     const std::optional<std::string> material = w.material_for(s, area);
     if (!material) return;
-    if (!uv.empty() && reads_texture(w.doc["materials"][*material]))
-        d.warn(s.statement.where, "inline mesh uv", what + ": its \"uv\" are not kept (our triangles use their own barycentric uv): textures on it are approximated");
+    const bool default_uv = uv.empty() && reads_texture(w.doc["materials"][*material]);
 
-    const glm::dmat3 normal_m = glm::transpose(glm::inverse(glm::dmat3(m)));
-    const bool flip = s.reverse_orientation != (det3(s.ctm) < 0.0);
-    TriangleWriter out(w, s);
-    bool smooth_dropped = false, non_planar = false;
-    auto shading = [&](std::initializer_list<long long> ids, glm::dvec3& sum) -> const glm::dvec3* {
-        if (normals.empty()) return nullptr;
-        sum = glm::dvec3(0.0);
-        for (long long i : ids) sum += normal_m * normals[static_cast<std::size_t>(i)];
-        // pbrt-v4 turns the mesh's normals over under ReverseOrientation.
-        if (s.reverse_orientation) sum = -sum;
-        return &sum;
-    };
-    for (std::size_t f = 0; f < idx.size(); f += static_cast<std::size_t>(corners)) {
-        const long long i0 = idx[f], i1 = idx[f + 1], i2 = idx[f + 2];
-        glm::dvec3 ns;
-        if (corners == 3) {
-            const glm::dvec3* n = shading({i0, i1, i2}, ns);
-            out.add(world[i0], world[i1], world[i2], n, flip, *material);
-            if (n) {
-                const glm::dvec3 face = glm::normalize(glm::cross(world[i1] - world[i0], world[i2] - world[i0]));
-                for (long long i : {i0, i1, i2}) {
-                    const glm::dvec3 vn = glm::normalize(normal_m * normals[static_cast<std::size_t>(i)]);
-                    smooth_dropped |= std::fabs(glm::dot(vn, face)) < 0.999;
-                }
+    // Vertex normals in the world; a normal without direction drops them all (flat shading), as
+    // our loader refuses one.
+    std::vector<glm::dvec3> world_normals;
+    if (!normals.empty()) {
+        const glm::dmat3 normal_m = glm::transpose(glm::inverse(glm::dmat3(m)));
+        for (const glm::dvec3& n : normals) {
+            const glm::dvec3 t = normal_m * n;
+            const double len = glm::length(glm::dvec3(glm::vec3(t)));
+            if (!(len > 0.0) || !std::isfinite(len)) {
+                d.warn(s.statement.where, "zero mesh normal", what + ": a vertex normal \"N\" of zero length: the mesh is flat shaded");
+                world_normals.clear();
+                break;
             }
-        } else {
-            const long long i3 = idx[f + 3];  // p00 p10 p01 p11 = i0 i1 i2 i3
-            const glm::dvec3* n = shading({i0, i1, i2, i3}, ns);
-            const glm::dvec3 e = world[i3] - (world[i1] + world[i2] - world[i0]);
-            non_planar |= glm::length(e) > 1e-9 * (glm::length(world[i1] - world[i0]) + glm::length(world[i2] - world[i0]));
-            out.add(world[i0], world[i1], world[i3], n, flip, *material);
-            out.add(world[i0], world[i3], world[i2], n, flip, *material);
+            world_normals.push_back((s.reverse_orientation ? -1.0 : 1.0) * t / len);
         }
     }
-    if (smooth_dropped)
-        d.warn(s.statement.where, "inline mesh normals", what + ": its vertex normals \"N\" are not kept (our triangles are flat shaded)");
-    if (non_planar)
-        d.warn(s.statement.where, "curved bilinear patch", what + ": a non-planar patch is approximated by two triangles");
+
+    // Each triangle's corners (into `world`) and, without "uv", pbrt's default uv at each corner.
+    struct Corner {
+        long long v;
+        glm::dvec2 uv;
+    };
+    std::vector<std::array<Corner, 3>> tris;
+    bool non_planar = false;
+    for (std::size_t f = 0; f < idx.size(); f += static_cast<std::size_t>(corners)) {
+        const long long i0 = idx[f], i1 = idx[f + 1], i2 = idx[f + 2];
+        if (corners == 3) {
+            tris.push_back({Corner{i0, {0, 0}}, Corner{i1, {1, 0}}, Corner{i2, {1, 1}}});
+        } else {
+            const long long i3 = idx[f + 3];  // p00 p10 p01 p11 = i0 i1 i2 i3
+            const glm::dvec3 e = world[i3] - (world[i1] + world[i2] - world[i0]);
+            non_planar |= glm::length(e) > 1e-6 * (glm::length(world[i1] - world[i0]) + glm::length(world[i2] - world[i0]));
+            tris.push_back({Corner{i0, {0, 0}}, Corner{i1, {1, 0}}, Corner{i3, {1, 1}}});
+            tris.push_back({Corner{i0, {0, 0}}, Corner{i3, {1, 1}}, Corner{i2, {0, 1}}});
+        }
+    }
+
+    // The front: pbrt's (p1 - p0) x (p2 - p0) is ours for the same order, turned over under
+    // ReverseOrientation and a handedness swap; with "N" the side the normals are on (pbrt faces
+    // the geometric normal toward the shading one).
+    const bool flip = s.reverse_orientation != (det3(s.ctm) < 0.0);
+    json vertices = json::array(), indices = json::array(), uvs = json::array(), out_normals = json::array();
+    auto put = [](json& a, std::initializer_list<double> values) {
+        for (double x : values) a.push_back(x);
+    };
+    if (!default_uv) {
+        for (const glm::dvec3& v : world) put(vertices, {v.x, v.y, v.z});
+        for (const glm::dvec3& n : world_normals) put(out_normals, {n.x, n.y, n.z});
+        for (double x : uv) uvs.push_back(x);
+    }
+    std::size_t kept = 0, degenerate = 0;
+    for (const auto& t : tris) {
+        const glm::dvec3 n = glm::cross(world[t[1].v] - world[t[0].v], world[t[2].v] - world[t[0].v]);
+        if (n == glm::dvec3(0.0)) {
+            ++degenerate;
+            continue;
+        }
+        bool swap = flip;
+        if (!world_normals.empty()) swap = glm::dot(n, world_normals[t[0].v] + world_normals[t[1].v] + world_normals[t[2].v]) < 0.0;
+        const std::array<Corner, 3> c{t[0], swap ? t[2] : t[1], swap ? t[1] : t[2]};
+        for (const Corner& k : c) {
+            if (!default_uv) {
+                indices.push_back(k.v);
+                continue;
+            }
+            indices.push_back(vertices.size() / 3);
+            put(vertices, {world[k.v].x, world[k.v].y, world[k.v].z});
+            put(uvs, {k.uv.x, k.uv.y});
+            if (!world_normals.empty()) put(out_normals, {world_normals[k.v].x, world_normals[k.v].y, world_normals[k.v].z});
+        }
+        ++kept;
+    }
+    if (degenerate > 0) d.warn(s.statement.where, "degenerate triangle", what + ": triangles without area are left out");
+    if (non_planar) d.warn(s.statement.where, "curved bilinear patch", what + ": a non-planar patch is approximated by two triangles");
+    if (kept == 0) return;
+    w.triangles += kept;
+    if (w.triangles > kMaxInlineTriangles)
+        d.fail(s.statement.where, "more than " + std::to_string(kMaxInlineTriangles) +
+                                      " triangles given inline (trianglemesh, bilinearmesh) in all: write large meshes as PLY files (Shape \"plymesh\")");
+    json object{{"type", "mesh"}, {"vertices", std::move(vertices)}, {"indices", std::move(indices)}};
+    if (!out_normals.empty()) object["normals"] = std::move(out_normals);
+    if (!uvs.empty()) object["uvs"] = std::move(uvs);
+    object["material"] = *material;
+    w.doc["objects"].push_back(std::move(object));
 }
 
 // A sphere, disk or cylinder: the transform to the world, mirrored back in the shape's own x

@@ -19,9 +19,10 @@
 
 namespace sweeptrace::pbrt {
 
-// At most this many triangles written one by one (trianglemesh, bilinearmesh): our JSON has no
-// inline meshes, and each JSON triangle costs about 1 KB while loading.
-inline constexpr std::size_t kMaxInlineTriangles = 200000;
+// At most this many triangles given inline in all (trianglemesh, bilinearmesh), written as our
+// inline meshes: about 200 bytes each while the JSON document is built and read. The text limits
+// (pbrt_parser.hpp: 64 MiB) allow about as many; larger meshes belong in PLY files.
+inline constexpr std::size_t kMaxInlineTriangles = 4000000;
 
 struct WorldContext {
     const PbrtScene& scene;

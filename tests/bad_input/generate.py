@@ -128,6 +128,8 @@ render_case("camera-look-at-position", E + r"scene\.json: camera\.look_at: must 
 render_case("camera-fov-180", E + r"scene\.json: camera\.fov: must be a vertical field of view", scene(camera__fov=180))
 render_case("camera-fov-0", E + r"scene\.json: camera\.fov:", scene(camera__fov=0))
 render_case("camera-handedness-unknown", E + r"scene\.json: camera\.handedness: must be \"right\"", scene(camera__handedness="mirrored"))
+render_case("mesh-inline-index-out-of-range", E + r"scene\.json: objects\[0\]\.indices\[2\]: must be in \[0, 2\], got 7",
+            scene(objects=[{"type": "mesh", "material": "m", "vertices": [0, 0, 0, 1, 0, 0, 0, 1, 0], "indices": [0, 1, 7]}]))
 render_case("camera-up-parallel", E + r"scene\.json: camera\.up: must not be parallel", scene(camera__up=[0, 0, 1]))
 render_case("camera-position-short", E + r"scene\.json: camera\.position: must be an array of 3", scene(camera__position=[1, 2]))
 render_case("camera-position-string", E + r"scene\.json: camera\.position\[0\]: must be a number",

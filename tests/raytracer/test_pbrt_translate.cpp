@@ -121,7 +121,7 @@ TEST_CASE("pbrt shapes: sphere, disk, cylinder, trianglemesh, bilinearmesh, plym
                                          "Shape \"bilinearmesh\" \"point3 P\" [0 0 0 1 0 0 0 1 0 1 1 0]\n"
                                          "Translate 0 0 7\nShape \"plymesh\" \"string filename\" \"m.ply\"\n");
     const json& o = c.doc["objects"];
-    REQUIRE(o.size() == 7);
+    REQUIRE(o.size() == 6);
     CHECK(o[0]["type"] == "sphere");
     CHECK(o[0]["radius"] == 2.0);
     CHECK(o[1] == json({{"type", "disk"}, {"center", {0.0, 0.0, 1.0}}, {"normal", {0.0, 0.0, 1.0}}, {"radius", 3.0}, {"material", o[1]["material"]}}));
@@ -129,14 +129,11 @@ TEST_CASE("pbrt shapes: sphere, disk, cylinder, trianglemesh, bilinearmesh, plym
     CHECK(o[2]["height"] == 4.0);
     CHECK(o[2]["center"] == json({0.0, 2.0, 0.0}));
     CHECK(o[2]["transform"][0]["rotate"]["degrees"].get<double>() == Approx(90.0));
-    CHECK(o[3]["type"] == "triangle");
-    CHECK(o[3]["a"] == json({0.0, 0.0, 0.0}));
-    CHECK(o[3]["b"] == json({1.0, 0.0, 0.0}));
-    CHECK(o[3]["c"] == json({0.0, 1.0, 0.0}));
+    // Inline meshes: the world's vertices and pbrt's indices.
+    CHECK(o[3] == json({{"type", "mesh"}, {"vertices", {0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0, 0.0}}, {"indices", {0, 1, 2}}, {"material", o[3]["material"]}}));
     // The patch p00 p10 p01 p11 as (p00 p10 p11), (p00 p11 p01).
-    CHECK(o[4]["c"] == json({1.0, 1.0, 0.0}));
-    CHECK(o[5]["b"] == json({1.0, 1.0, 0.0}));
-    CHECK(o[6] == json({{"type", "mesh"}, {"file", "m.ply"}, {"material", o[6]["material"]}, {"transform", {{{"translate", {0.0, 0.0, 7.0}}}}}}));
+    CHECK(o[4]["indices"] == json({0, 1, 3, 0, 3, 2}));
+    CHECK(o[5] == json({{"type", "mesh"}, {"file", "m.ply"}, {"material", o[5]["material"]}, {"transform", {{{"translate", {0.0, 0.0, 7.0}}}}}}));
     CHECK(has_warning(c.warnings, "scene.pbrt:5: Shape \"cylinder\": pbrt's cylinder is open"));
 }
 
@@ -163,8 +160,11 @@ TEST_CASE("pbrt shapes: the emitting side of triangles follows ReverseOrientatio
         const auto c = convert_text(dir, prefix + "WorldBegin\nAreaLightSource \"diffuse\"\n" + attrs +
                                              "Shape \"trianglemesh\" \"point3 P\" [0 0 0 1 0 0 0 1 0] \"integer indices\" [0 1 2]\n");
         const json& t = c.doc["objects"][0];
-        auto v = [&](const char* k) { return glm::dvec3(t[k][0], t[k][1], t[k][2]); };
-        return glm::cross(v("b") - v("a"), v("c") - v("a")).z;  // pbrt's normal: +z for this order
+        auto v = [&](int corner) {
+            const int i = t["indices"][corner].get<int>();
+            return glm::dvec3(t["vertices"][3 * i], t["vertices"][3 * i + 1], t["vertices"][3 * i + 2]);
+        };
+        return glm::cross(v(1) - v(0), v(2) - v(0)).z;  // pbrt's normal: +z for this order
     };
     CHECK(front_z(kFlipped, "") > 0.0);
     CHECK(front_z(kFlipped, "ReverseOrientation\n") < 0.0);

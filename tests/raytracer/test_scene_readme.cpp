@@ -53,7 +53,9 @@ TEST_CASE("scenes README: every JSON example loads", "[scene][docs]") {
     for (const std::string& b : blocks) {
         INFO(b);
         std::string scene;
-        if (starts_with(b, "{"))
+        if (starts_with(b, "{ \"type\""))  // one object
+            scene = head + materials + R"(, "objects": [)" + b + "]}";
+        else if (starts_with(b, "{"))
             scene = b;
         else if (starts_with(b, "\"materials\""))
             scene = head + b + R"(, "objects": [] })";

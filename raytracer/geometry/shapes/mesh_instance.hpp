@@ -33,11 +33,13 @@ struct MeshInstanceShape {
     using Geometry = MeshInstance;
     static constexpr std::string_view kType = "mesh";
     // "materials": "from_obj" (the default without a "material"): the OBJ's own (scene/obj_materials.hpp).
-    static constexpr std::array<std::string_view, 2> kKeys{"file", "materials"};
-    // The loader resolves and loads the file (scene/), once however many objects instance it.
+    // Instead of "file", the mesh itself: "vertices", "indices", "normals", "uvs" (scene/inline_mesh.hpp).
+    static constexpr std::array<std::string_view, 6> kKeys{"file", "materials", "vertices", "indices", "normals", "uvs"};
+    // The loader resolves and loads the file (scene/), once however many objects instance it, or
+    // reads the inline mesh.
     template <class Node, class Loader>
     static Geometry read(const Node& node, Loader& loader) {
-        return {loader.mesh_index(node.at("file"))};
+        return {loader.mesh_index(node)};
     }
 
     // Not analytic: empty. The acceleration structures box a mesh by its own BVH.
