@@ -1,5 +1,8 @@
-// The equal-area octahedral map (render/equal_area_octahedral.hpp): it round-trips and is
-// equal-area (a plain octahedral map fails the same check).
+// The equal-area octahedral map (render/equal_area_octahedral.hpp) and the environment's map frame
+// (render/environment_light.hpp): the map round-trips and is equal-area (a plain octahedral map
+// fails the same check), the frame's orientation pinned by texels whose direction is worked out
+// by hand from w = (d'.x, -d'.z, d'.y), and the mirror is S = diag(-1, 1, 1) after the turn.
+// Sampling, rendering and loading under both layouts: test_render_environment.cpp.
 #include <catch2/catch.hpp>
 
 #include <algorithm>
@@ -8,10 +11,13 @@
 
 #include <glm/geometric.hpp>
 
+#include "environment_test_maps.hpp"
+#include "raytracer/render/environment_light.hpp"
 #include "raytracer/render/equal_area_octahedral.hpp"
 #include "raytracer/render/random.hpp"
 
 using namespace sweeptrace;
+using namespace sweeptrace::testing;
 
 namespace {
 
@@ -137,3 +143,78 @@ TEST_CASE("equal-area map: a uniform grid over the square lands uniformly on the
     CHECK(octahedral_worst > 10 * worst);
 }
 
+namespace {
+
+using Mapping = Background::EnvironmentMapping;
+
+// A black n x n map with one texel of radiance 1 (the rest 0).
+std::shared_ptr<const Image> one_bright_texel(int n, int i, int j) {
+    auto img = std::make_shared<Image>(n, n);
+    img->at(i, j) = glm::vec3(1.0f);
+    return img;
+}
+
+bool lit_toward(const Background& bg, glm::vec3 d) { return environment_radiance(bg, glm::normalize(d)).x > 0.0f; }
+
+}  // namespace
+
+TEST_CASE("environment equal-area: the map frame is w = (d'.x, -d'.z, d'.y), pinned by texels worked out by hand",
+          "[render][environment][equal-area]") {
+    // 5 x 5 texels, so each (u, v) below is inside a texel, not on an edge.
+    // Centre (1/2, 1/2): w = +z, so d' = +Y: texel (2, 2) is straight up.
+    const Background centre = env_background(one_bright_texel(5, 2, 2), 0.0f, 1.0f, Mapping::EqualArea);
+    CHECK(lit_toward(centre, {0, 1, 0}));
+    CHECK(lit_toward(centre, {0.1f, 1, -0.1f}));
+    CHECK_FALSE(lit_toward(centre, {0, -1, 0}));
+    CHECK_FALSE(lit_toward(centre, {1, 0.2f, 0}));
+    // (3/4, 1/2) in texel (3, 2): in [-1, 1]^2 (1/2, 0), r = 1/2, phi = 0, so z = 1 - r^2 = 3/4 and
+    // sin(theta) = r sqrt(2 - r^2) = sqrt(7)/4: w = (sqrt(7)/4, 0, 3/4), d' = (w.x, w.z, -w.y).
+    const float s7 = std::sqrt(7.0f) / 4.0f;
+    const Background right = env_background(one_bright_texel(5, 3, 2), 0.0f, 1.0f, Mapping::EqualArea);
+    CHECK(lit_toward(right, {s7, 0.75f, 0.0f}));
+    CHECK_FALSE(lit_toward(right, {-s7, 0.75f, 0.0f}));
+    CHECK_FALSE(lit_toward(right, {0.0f, 0.75f, s7}));
+    // Mirrored, the same texel is at S d' = (-sqrt(7)/4, 3/4, 0); turned by 90 degrees about +Y
+    // (right-handed: +X goes to -Z), unmirrored, at (0, 3/4, -sqrt(7)/4).
+    CHECK(lit_toward(env_background(one_bright_texel(5, 3, 2), 0.0f, 1.0f, Mapping::EqualArea, true), {-s7, 0.75f, 0.0f}));
+    CHECK(lit_toward(env_background(one_bright_texel(5, 3, 2), 90.0f, 1.0f, Mapping::EqualArea), {0.0f, 0.75f, -s7}));
+    // (1/2, 1/4) in texel (2, 1): in [-1, 1]^2 (0, -1/2), r = 1/2, phi = pi/2 with v < 0, so
+    // w = (0, -sqrt(7)/4, 3/4) and d' = (0, 3/4, sqrt(7)/4): the top half of the image looks toward +Z.
+    const Background top = env_background(one_bright_texel(5, 2, 1), 0.0f, 1.0f, Mapping::EqualArea);
+    CHECK(lit_toward(top, {0.0f, 0.75f, s7}));
+    CHECK_FALSE(lit_toward(top, {0.0f, 0.75f, -s7}));
+    // A corner texel (0, 0) is below: w = (-, -, -) near -z, i.e. d' = (-, -, +) near -Y.
+    const Background corner = env_background(one_bright_texel(5, 0, 0), 0.0f, 1.0f, Mapping::EqualArea);
+    CHECK(lit_toward(corner, {-0.1f, -1.0f, 0.1f}));
+    CHECK_FALSE(lit_toward(corner, {0.1f, -1.0f, 0.1f}));
+    CHECK_FALSE(lit_toward(corner, {-0.1f, -1.0f, -0.1f}));
+}
+
+TEST_CASE("environment: mirror is S = diag(-1, 1, 1) after the turn, for both layouts", "[render][environment][mirror]") {
+    const Mapping mapping = GENERATE(Mapping::Equirect, Mapping::EqualArea);
+    const int h = mapping == Mapping::Equirect ? 16 : 32;
+    const auto map = environment_test_map(32, h);
+    INFO("equal-area " << (mapping == Mapping::EqualArea));
+    // radiance_mirrored(d) = radiance(S d); with a turn, S R_y(-a) = R_y(a) S, so the mirrored map
+    // turned by a is the plain map turned by -a, seen along S d.
+    Rng rng(7, 0, 0);
+    int differs = 0;
+    for (int s = 0; s < 20000; ++s) {
+        const glm::vec3 d = glm::normalize(glm::vec3(rng.uniform() - 0.5f, rng.uniform() - 0.5f, rng.uniform() - 0.5f));
+        const glm::vec3 sd(-d.x, d.y, d.z);
+        REQUIRE(environment_radiance(env_background(map, 0.0f, 1.0f, mapping, true), d) ==
+                environment_radiance(env_background(map, 0.0f, 1.0f, mapping), sd));
+        REQUIRE(environment_radiance(env_background(map, 35.0f, 1.0f, mapping, true), d) ==
+                environment_radiance(env_background(map, -35.0f, 1.0f, mapping), sd));
+        differs += environment_radiance(env_background(map, 0.0f, 1.0f, mapping, true), d) !=
+                   environment_radiance(env_background(map, 0.0f, 1.0f, mapping), d);
+    }
+    CHECK(differs > 10000);  // the mirror does change what is seen (the test map is not symmetric)
+    if (mapping == Mapping::Equirect) {
+        // The equirect image read right to left: +X (u = 3/4) sees column u = 1/4 when mirrored.
+        auto columns = std::make_shared<Image>(4, 2);
+        for (int i = 0; i < 4; ++i) columns->at(i, 0) = columns->at(i, 1) = glm::vec3(float(i));
+        CHECK(environment_radiance(env_background(columns, 0.0f, 1.0f), {1, 0, 0.1f}).x == 3.0f);
+        CHECK(environment_radiance(env_background(columns, 0.0f, 1.0f, mapping, true), {1, 0, 0.1f}).x == 0.0f);
+    }
+}
