@@ -5,6 +5,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "raytracer/render/equal_area_octahedral.hpp"
 #include "raytracer/render/sampling.hpp"
 
 namespace sweeptrace {
@@ -20,11 +21,40 @@ glm::vec3 rotate_y(const glm::vec3& d, float degrees) {
     return {c * d.x + s * d.z, d.y, -s * d.x + c * d.z};
 }
 
-// (u, v) in [0, 1]^2 of a map-frame direction.
+// The map frame: d' = S R_y(-rotate) d, S = diag(-1, 1, 1) when mirrored; and back, d = R_y(rotate) S d'.
+glm::vec3 to_map_frame(const Background& bg, const glm::vec3& d) {
+    glm::vec3 m = rotate_y(d, -bg.rotate_degrees);
+    if (bg.mirror) m.x = -m.x;
+    return m;
+}
+
+glm::vec3 from_map_frame(const Background& bg, glm::vec3 m) {
+    if (bg.mirror) m.x = -m.x;
+    return rotate_y(m, bg.rotate_degrees);
+}
+
+// (u, v) in [0, 1]^2 of a map-frame direction, equirectangular.
 void direction_to_uv(const glm::vec3& d, float& u, float& v) {
     const float phi = std::atan2(d.x, -d.z);
     u = 0.5f + phi / (2.0f * kPi);
     v = std::acos(std::clamp(d.y, -1.0f, 1.0f)) / kPi;
+}
+
+bool is_equal_area(const Background& bg) { return bg.mapping == Background::EnvironmentMapping::EqualArea; }
+
+// (u, v) of a map-frame direction in the background's layout; equal-area through pbrt's z-up
+// light space w = (d'.x, -d'.z, d'.y).
+void map_uv(const Background& bg, const glm::vec3& m, float& u, float& v) {
+    if (!is_equal_area(bg)) return direction_to_uv(m, u, v);
+    const glm::vec2 p = equal_area_sphere_to_square({m.x, -m.z, m.y});
+    u = p.x;
+    v = p.y;
+}
+
+// The map-frame direction of an equal-area (u, v): d' = (w.x, w.z, -w.y).
+glm::vec3 equal_area_direction(float u, float v) {
+    const glm::vec3 w = equal_area_square_to_sphere({u, v});
+    return {w.x, w.z, -w.y};
 }
 
 int texel(float t, int n) { return std::clamp(static_cast<int>(t * static_cast<float>(n)), 0, n - 1); }
@@ -34,7 +64,7 @@ int texel(float t, int n) { return std::clamp(static_cast<int>(t * static_cast<f
 glm::vec3 environment_radiance(const Background& bg, const glm::vec3& dir) {
     const Image& img = *bg.environment;
     float u = 0.0f, v = 0.0f;
-    direction_to_uv(rotate_y(dir, -bg.rotate_degrees), u, v);
+    map_uv(bg, to_map_frame(bg, dir), u, v);
     return bg.scale * img.at(texel(u, img.width), texel(v, img.height));
 }
 
@@ -69,14 +99,20 @@ EnvironmentLight::EnvironmentLight(const Background& bg) : bg_(&bg) {
     height_ = img.height;
     std::vector<float> row_sums(static_cast<std::size_t>(height_));
     rows_.resize(static_cast<std::size_t>(height_));
-    const double cell = (2.0 * kPiD / width_) * (kPiD / height_);  // du dv -> d(phi) d(theta)
+    // Equal-area: every texel subtends the same solid angle, so the weight is the luminance
+    // alone (the Jacobian is the constant 4 pi) and the integral below is exact.
+    const bool equal_area = is_equal_area(bg);
+    const double cell = equal_area ? 4.0 * kPiD / (static_cast<double>(width_) * height_)
+                                   : (2.0 * kPiD / width_) * (kPiD / height_);  // du dv -> d(phi) d(theta)
     for (int j = 0; j < height_; ++j) {
-        const double sin_theta = std::sin((j + 0.5) * kPiD / height_);
+        // The row's Jacobian factor J_j: sin(theta_j) at the row's centre (equirect), 1 (equal-area).
+        const double jacobian = equal_area ? 1.0 : std::sin((j + 0.5) * kPiD / height_);
         std::vector<float> w(static_cast<std::size_t>(width_));
         for (int i = 0; i < width_; ++i) {
             const float lum = luminance(bg.scale * img.at(i, j));
-            w[static_cast<std::size_t>(i)] = static_cast<float>(lum * sin_theta);
-            integral_ += lum * sin_theta * cell;  // midpoint rule in theta: a stand-in, used only for selection
+            w[static_cast<std::size_t>(i)] = static_cast<float>(lum * jacobian);
+            // Equirect: the midpoint rule in theta, a stand-in used only for selection; equal-area: exact.
+            integral_ += lum * jacobian * cell;
         }
         rows_[static_cast<std::size_t>(j)].build(std::move(w));
         row_sums[static_cast<std::size_t>(j)] = static_cast<float>(rows_[static_cast<std::size_t>(j)].sum);
@@ -89,11 +125,19 @@ bool EnvironmentLight::sample(float u1, float u2, glm::vec3& dir, float& pdf, gl
     int row = 0, col = 0;
     const float v = marginal_.sample(u2, row);
     const float u = rows_[static_cast<std::size_t>(row)].sample(u1, col);
+    if (is_equal_area(*bg_)) {
+        // The density and radiance of the texel dir maps back to (the sampled one but for rounding
+        // on a texel's edge), so sample(), pdf() and a ray escaping along dir agree exactly.
+        dir = from_map_frame(*bg_, equal_area_direction(u, v));
+        pdf = this->pdf(dir);
+        radiance = environment_radiance(*bg_, dir);
+        return pdf > 0.0f && std::isfinite(pdf);
+    }
     const float theta = v * kPi, phi = (u - 0.5f) * 2.0f * kPi;
     const float sin_theta = std::sin(theta);
     if (!(sin_theta > 0.0f)) return false;
     const glm::vec3 local(sin_theta * std::sin(phi), std::cos(theta), -sin_theta * std::cos(phi));
-    dir = rotate_y(local, bg_->rotate_degrees);
+    dir = from_map_frame(*bg_, local);
     const float p_uv = marginal_.density(row) * rows_[static_cast<std::size_t>(row)].density(col);
     pdf = p_uv / (2.0f * kPi * kPi * sin_theta);
     radiance = environment_radiance(*bg_, dir);  // what a ray escaping along dir sees
@@ -102,13 +146,15 @@ bool EnvironmentLight::sample(float u1, float u2, glm::vec3& dir, float& pdf, gl
 
 float EnvironmentLight::pdf(const glm::vec3& dir) const {
     float u = 0.0f, v = 0.0f;
-    const glm::vec3 local = rotate_y(dir, -bg_->rotate_degrees);
-    direction_to_uv(local, u, v);
+    const glm::vec3 local = to_map_frame(*bg_, dir);
+    map_uv(*bg_, local, u, v);
     const int row = texel(v, height_), col = texel(u, width_);
+    if (marginal_.f[static_cast<std::size_t>(row)] <= 0.0f) return 0.0f;
+    const float p_uv = marginal_.density(row) * rows_[static_cast<std::size_t>(row)].density(col);
+    if (is_equal_area(*bg_)) return p_uv / (4.0f * kPi);
     // From x and z, not sqrt(1 - y^2), which cancels near the poles (1 % off at theta ~ 0.01).
     const float sin_theta = std::sqrt(local.x * local.x + local.z * local.z) / glm::length(local);
-    if (!(sin_theta > 0.0f) || marginal_.f[static_cast<std::size_t>(row)] <= 0.0f) return 0.0f;
-    const float p_uv = marginal_.density(row) * rows_[static_cast<std::size_t>(row)].density(col);
+    if (!(sin_theta > 0.0f)) return 0.0f;
     return p_uv / (2.0f * kPi * kPi * sin_theta);
 }
 

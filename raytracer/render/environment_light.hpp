@@ -1,23 +1,39 @@
 #pragma once
-// An equirectangular environment map as a light: radiance by direction, and importance sampling
-// of directions by a 2D piecewise-constant distribution over the texels (pbrt-v4's
-// ImageInfiniteLight, without its MIS compensation).
+// An environment map as a light: radiance by direction, and importance sampling of directions by
+// a 2D piecewise-constant distribution over the texels (pbrt-v4's ImageInfiniteLight, without
+// its MIS compensation). Two image layouts (Background::mapping), one map frame.
 //
-// Mapping. A world direction d is first turned into the map's frame by the inverse of the
+// Map frame. A world direction d is first turned into the map's frame by the inverse of the
 // background's rotation about +Y (a right-handed rotation by rotate_degrees, like a transform's
-// rotate about [0, 1, 0]): d' = R_y(-rotate) d. Then theta = acos(d'.y) in [0, pi] (0 = +Y, the
-// top row) and phi = atan2(d'.x, -d'.z) in (-pi, pi], and the texel coordinates are
-// u = 1/2 + phi / (2 pi) (column, left to right), v = theta / pi (row, top to bottom): the
-// image's centre looks along -Z, its right half toward +X. Radiance is the texel's value
-// (nearest, piecewise constant) times scale.
+// rotate about [0, 1, 0]), then, when mirrored, reflected by S = diag(-1, 1, 1) (x negated after
+// the turn): d' = S R_y(-rotate) d, and back d = R_y(rotate) S d'. S is not a rotation: it is
+// what pbrt-v4's equirect convention, the mirror image of ours, needs. Both layouts read (u, v)
+// in [0, 1]^2 with u along the columns left to right and v along the rows top to bottom (row 0 the
+// file's first), texel (floor(u W), floor(v H)) clamped to the image; radiance is that texel's
+// value (nearest, piecewise constant) times scale.
 //
-// Sampling. Texel (i, j) gets weight luminance(texel) sin(theta_j), theta_j at the row's centre;
-// a row is chosen by the marginal of the row sums, a column by that row's conditional, each
-// with a uniform offset inside the cell, so the density on the unit square is
-// p(u, v) = w_ij / mean(w), and on the sphere (d omega = 2 pi^2 sin(theta) du dv)
-//   p(omega) = p(u, v) / (2 pi^2 sin(theta)),
-// with theta the direction's own polar angle. pdf() evaluates exactly this for any direction,
-// so the density used in MIS is the one sampled with. Texels of weight 0 are never sampled and
+// Equirect (the default). theta = acos(d'.y) in [0, pi] (0 = +Y, the top row) and
+// phi = atan2(d'.x, -d'.z) in (-pi, pi], u = 1/2 + phi / (2 pi), v = theta / pi: the image's
+// centre looks along -Z, its right half toward +X (mirrored: toward -X, the image read right to
+// left, u -> 1 - u). d omega = 2 pi^2 sin(theta) du dv.
+//
+// Equal-area (pbrt-v4's layout, a square image). w = (d'.x, -d'.z, d'.y) is pbrt's z-up light
+// space (a proper rotation: pbrt's `Rotate -90 1 0 0` that turns a z-up map to our y-up; a
+// pbrt-v4 scene that rotates its map that way gets rotate 0 here), and (u, v) =
+// equal_area_sphere_to_square(w) (render/equal_area_octahedral.hpp, Clarberg 2008): the image's
+// centre is +Y, its four corners -Y, the diamond through its edges' midpoints the horizon; the
+// middle of its right edge, (1, 1/2), is +X, of its top edge, (1/2, 0), +Z (mirrored: the right
+// edge's middle is -X). d omega = 4 pi du dv everywhere.
+//
+// Sampling. Texel (i, j) gets weight luminance(texel) J_j with the row's Jacobian factor
+// J_j = sin(theta_j) (equirect, theta_j at the row's centre) or 1 (equal-area); a row is chosen by
+// the marginal of the row sums, a column by that row's conditional, each with a uniform offset
+// inside the cell, so the density on the unit square is p(u, v) = w_ij / mean(w), and on the sphere
+//   equirect:   p(omega) = p(u, v) / (2 pi^2 sin(theta)), theta the direction's own polar angle,
+//   equal-area: p(omega) = p(u, v) / (4 pi).
+// pdf() evaluates exactly this for any direction, so the density used in MIS is the one sampled
+// with; an equal-area sample reports pdf() and the radiance of the texel its direction maps back
+// to, the same numbers a BSDF-sampled ray along it gets. Texels of weight 0 are never sampled and
 // have pdf 0; their radiance is 0 too (RGB is non-negative and every luminance coefficient is
 // positive), so nothing is missed.
 #include <memory>
@@ -42,7 +58,7 @@ public:
 
     glm::vec3 radiance(const glm::vec3& dir) const { return environment_radiance(*bg_, dir); }
     // A direction from two uniforms in [0, 1), its solid-angle density and radiance; false for a
-    // degenerate sample (at a pole, where sin(theta) = 0).
+    // degenerate sample (equirect at a pole, where sin(theta) = 0) or one of density 0.
     bool sample(float u1, float u2, glm::vec3& dir, float& pdf, glm::vec3& radiance) const;
     float pdf(const glm::vec3& dir) const;
 

@@ -8,7 +8,15 @@
 namespace sweeptrace {
 
 void read_environment(const scene_json::Node& node, Background& background) {
-    node.require_object({"file", "rotate", "scale"});
+    node.require_object({"file", "rotate", "mirror", "mapping", "scale"});
+    Background::EnvironmentMapping mapping = Background::EnvironmentMapping::Equirect;
+    if (auto m = node.find("mapping")) {
+        const std::string name = m->string();
+        if (name == "equal-area") mapping = Background::EnvironmentMapping::EqualArea;
+        else if (name != "equirect") m->fail("unknown mapping \"" + name + "\" (known: equirect, equal-area)");
+    }
+    const auto mirror = node.find("mirror");
+    const bool mirrored = mirror && mirror->boolean();
     const scene_json::Node file = node.at("file");
     const std::string ext = std::filesystem::path(file.string()).extension().string();
     if (ext == ".png" || ext == ".PNG")
@@ -16,6 +24,10 @@ void read_environment(const scene_json::Node& node, Background& background) {
     const std::shared_ptr<const Image> map = read_image_file(file, "environment image");
     const Image& image = *map;
     if (image.width < 2 || image.height < 1) file.fail("environment image must be at least 2x1 pixels");
+    // Equal-area texels tile a square; another shape is a layout mistake (likely a 2:1 equirect map).
+    if (mapping == Background::EnvironmentMapping::EqualArea && image.width != image.height)
+        file.fail("an equal-area map must be square, got " + std::to_string(image.width) + "x" +
+                  std::to_string(image.height));
     for (std::size_t i = 0; i < image.pixels.size(); ++i)
         for (int c = 0; c < 3; ++c)
             if (!(image.pixels[i][c] >= 0.0f) || !std::isfinite(image.pixels[i][c]))
@@ -23,6 +35,8 @@ void read_environment(const scene_json::Node& node, Background& background) {
                           std::to_string(i % image.width) + ", " + std::to_string(i / image.width) + ")");
     background.kind = Background::Kind::Environment;
     background.environment = map;
+    background.mapping = mapping;
+    background.mirror = mirrored;
     if (auto r = node.find("rotate")) background.rotate_degrees = r->number();
     if (auto s = node.find("scale")) background.scale = s->number_at_least(0.0f, true);
 }

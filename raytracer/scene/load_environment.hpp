@@ -5,8 +5,8 @@
 
 namespace sweeptrace {
 
-// `node` is {"file": "x.hdr"|"x.exr"|"x.pfm", "rotate": degrees, "scale": s}; the file is
-// relative to the scene file's folder.
+// `node` is {"file": "x.hdr"|"x.exr"|"x.pfm", "rotate": degrees, "mirror": bool,
+// "mapping": "equirect"|"equal-area", "scale": s}; the file is relative to the scene file's folder.
 void read_environment(const scene_json::Node& node, Background& background);
 
 }  // namespace sweeptrace

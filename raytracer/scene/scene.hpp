@@ -75,11 +75,14 @@ struct Background {
     glm::vec3 color{0.0f};               // Constant
     glm::vec3 horizon{1.0f};             // Sky: radiance toward the horizon and below
     glm::vec3 zenith{0.5f, 0.7f, 1.0f};  // Sky: radiance straight up (+Y), blended by dir.y
-    // Environment: an equirectangular radiance map (render/environment_light.hpp states the
-    // mapping), shared, not copied, by copies of the scene; turned about +Y by rotate_degrees and
-    // multiplied by scale.
+    // Environment: a radiance map (render/environment_light.hpp states both layouts), shared,
+    // not copied, by copies of the scene; turned about +Y by rotate_degrees, its frame's x negated
+    // after the turn when mirrored, and multiplied by scale.
+    enum class EnvironmentMapping { Equirect, EqualArea };
     std::shared_ptr<const Image> environment;
+    EnvironmentMapping mapping = EnvironmentMapping::Equirect;
     float rotate_degrees = 0.0f;
+    bool mirror = false;
     float scale = 1.0f;
 };
 

@@ -286,6 +286,15 @@ TEST_CASE("scene errors: environment backgrounds", "[scene][errors][environment]
                Catch::Contains("background.environment.scale: must be >= 0, got -1"));
     CHECK_THAT(load_error(dir, with_bg(R"({ "environment": { "file": "ok.hdr", "turn": 3 } })")),
                Catch::Contains("background.environment.turn"));
+    // ok.hdr is 2 x 1: an equirect map, not pbrt's square equal-area one.
+    CHECK_THAT(load_error(dir, with_bg(R"({ "environment": { "file": "ok.hdr", "mapping": "equal-area" } })")),
+               Catch::Contains("background.environment.file: an equal-area map must be square, got 2x1"));
+    CHECK_THAT(load_error(dir, with_bg(R"({ "environment": { "file": "ok.hdr", "mapping": "octahedral" } })")),
+               Catch::Contains("background.environment.mapping: unknown mapping \"octahedral\" (known: equirect, equal-area)"));
+    CHECK_THAT(load_error(dir, with_bg(R"({ "environment": { "file": "ok.hdr", "mapping": 2 } })")),
+               Catch::Contains("background.environment.mapping: must be a string"));
+    CHECK_THAT(load_error(dir, with_bg(R"({ "environment": { "file": "ok.hdr", "mirror": "yes" } })")),
+               Catch::Contains("background.environment.mirror: must be true or false"));
 }
 
 TEST_CASE("scene errors: textures", "[scene][errors][texture]") {

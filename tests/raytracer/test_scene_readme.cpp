@@ -41,6 +41,7 @@ TEST_CASE("scenes README: every JSON example loads", "[scene][docs]") {
     std::string hdr = "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 2 +X 4\n";
     for (int i = 0; i < 8; ++i) hdr += std::string{char(128), char(128), char(128), char(129)};
     dir.write("sky.hdr", hdr);
+    sweeptrace::write_image(sweeptrace::Image(2, 2), dir.path() / "pbrt_sky.exr");  // the equal-area example's: square
     sweeptrace::write_image(sweeptrace::Image(2, 2), dir.path() / "wood.png");  // the image texture example's file
     std::string materials;
     for (const std::string& b : blocks)
