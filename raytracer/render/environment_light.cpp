@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include <glm/geometric.hpp>
+#include <glm/matrix.hpp>
 
 #include "raytracer/render/equal_area_octahedral.hpp"
 #include "raytracer/render/sampling.hpp"
@@ -21,16 +22,17 @@ glm::vec3 rotate_y(const glm::vec3& d, float degrees) {
     return {c * d.x + s * d.z, d.y, -s * d.x + c * d.z};
 }
 
-// The map frame: d' = S R_y(-rotate) d, S = diag(-1, 1, 1) when mirrored; and back, d = R_y(rotate) S d'.
+// The map frame: d' = S R^-1 d, R the turn (about +Y by rotate_degrees, or any rotation), S =
+// diag(-1, 1, 1) when mirrored; and back, d = R S d'.
 glm::vec3 to_map_frame(const Background& bg, const glm::vec3& d) {
-    glm::vec3 m = rotate_y(d, -bg.rotate_degrees);
+    glm::vec3 m = bg.turned ? glm::transpose(bg.turn) * d : rotate_y(d, -bg.rotate_degrees);
     if (bg.mirror) m.x = -m.x;
     return m;
 }
 
 glm::vec3 from_map_frame(const Background& bg, glm::vec3 m) {
     if (bg.mirror) m.x = -m.x;
-    return rotate_y(m, bg.rotate_degrees);
+    return bg.turned ? bg.turn * m : rotate_y(m, bg.rotate_degrees);
 }
 
 // (u, v) in [0, 1]^2 of a map-frame direction, equirectangular.

@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include <glm/common.hpp>
+
 #include "raytracer/render/shading_frame.hpp"
 
 namespace sweeptrace {
@@ -50,13 +52,17 @@ glm::vec2 height_slope(const Texture& t, const glm::vec2& uv) {
 
 }  // namespace
 
-glm::vec3 eval_texture(const Texture& t, const glm::vec2& uv) {
+glm::vec3 eval_texture(const Texture& t, const glm::vec2& surface_uv) {
+    const glm::vec2 uv = t.uv_scale * surface_uv + t.uv_offset;  // exact for the identity mapping
     if (t.kind == Texture::Kind::Checker) {
         const float s = std::floor(t.scale * uv.x) + std::floor(t.scale * uv.y);
         return std::fmod(std::abs(s), 2.0f) == 0.0f ? t.a : t.b;
     }
     if (!std::isfinite(uv.x) || !std::isfinite(uv.y)) return glm::vec3(0.0f);
-    return bilinear(t, uv);
+    const glm::vec3 v = bilinear(t, uv);
+    if (t.multiply == glm::vec3(1.0f) && !t.invert) return v;
+    const glm::vec3 scaled = t.multiply * v;
+    return glm::clamp(t.invert ? glm::vec3(1.0f) - scaled : scaled, glm::vec3(0.0f), glm::vec3(t.max_value));
 }
 
 glm::vec2 hit_uv(const Scene& scene, const SurfaceHit& hit) {

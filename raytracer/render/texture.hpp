@@ -10,6 +10,8 @@
 //   each axis, so equal neighbours give their value exactly; wrap "repeat" takes texel indices
 //   modulo the size, "clamp" clamps them to the edge, "mirror" reflects them at each edge (the
 //   image, then its mirror image, period 2 W).
+// Both read the pattern at the texture's uv mapping (uv_scale, uv_offset); an image's value is
+// then scaled and inverted as the texture says (scene.hpp: Texture).
 // A scalar parameter (roughness, a bump map's height) reads the mean of the three channels.
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>

@@ -4,6 +4,7 @@
 #include <string>
 
 #include "raytracer/scene/load_image_file.hpp"
+#include "raytracer/scene/scene_transform.hpp"
 
 namespace sweeptrace {
 
@@ -37,7 +38,16 @@ void read_environment(const scene_json::Node& node, Background& background) {
     background.environment = map;
     background.mapping = mapping;
     background.mirror = mirrored;
-    if (auto r = node.find("rotate")) background.rotate_degrees = r->number();
+    if (auto r = node.find("rotate")) {
+        if (r->value().is_number()) {
+            background.rotate_degrees = r->number();
+        } else {
+            // Any turn, as a transform's rotate step: for maps whose pole is not our +Y (a z-up world).
+            r->require_object({"axis", "degrees"});
+            background.turned = true;
+            background.turn = glm::mat3(rotation_matrix(glm::dvec3(r->at("axis").nonzero_vec3()), r->at("degrees").number()));
+        }
+    }
     if (auto s = node.find("scale")) background.scale = s->number_at_least(0.0f, true);
 }
 

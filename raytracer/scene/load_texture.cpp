@@ -3,9 +3,13 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <limits>
+#include <optional>
 #include <string>
 #include <system_error>
 #include <type_traits>
+
+#include <glm/common.hpp>
 
 #include "raytracer/geometry/shape.hpp"
 #include "raytracer/image/srgb.hpp"
@@ -66,12 +70,36 @@ void check_values(const Image& image, TextureUse use, const ImageFail& fail) {
         }
 }
 
+// [a, b], each finite; `nonzero`: neither 0 (a scale that would flatten the pattern to a point).
+glm::vec2 read_vec2(const scene_json::Node& node, bool nonzero) {
+    if (node.array_size() != 2) node.fail("must be an array of 2 numbers, got " + node.shown());
+    glm::vec2 v;
+    for (int i = 0; i < 2; ++i) {
+        const scene_json::Node e = node.element(static_cast<std::size_t>(i));
+        v[i] = e.number();
+        if (nonzero && v[i] == 0.0f) e.fail("must not be 0");
+    }
+    return v;
+}
+
+// The uv mapping both kinds take (scene.hpp: Texture).
+void read_uv_mapping(const scene_json::Node& node, Texture& t) {
+    if (auto s = node.find("uv_scale")) t.uv_scale = read_vec2(*s, true);
+    if (auto o = node.find("uv_offset")) t.uv_offset = read_vec2(*o, false);
+}
+
 void read_image_texture(const scene_json::Node& im, TextureUse use, const std::vector<Texture>& loaded, Texture& t) {
-    im.require_object({"file", "wrap"});
+    im.require_object({"file", "wrap", "uv_scale", "uv_offset", "multiply", "invert", "encoding"});
     const scene_json::Node file = im.at("file");
     const std::string relative = file.string();
+    std::optional<bool> linear;
+    if (auto e = im.find("encoding")) {
+        const std::string enc = e->string();
+        if (enc != "sRGB" && enc != "linear") e->fail("must be \"sRGB\" or \"linear\", got " + e->shown());
+        linear = enc == "linear";
+    }
     t = image_texture(relative, file.file().parent_path() / relative, use, loaded,
-                      [&](const std::string& message) { file.fail(message); });
+                      [&](const std::string& message) { file.fail(message); }, linear);
     if (auto w = im.find("wrap")) {
         const std::string wrap = w->string();
         if (wrap == "repeat") t.wrap = Texture::Wrap::Repeat;
@@ -79,15 +107,23 @@ void read_image_texture(const scene_json::Node& im, TextureUse use, const std::v
         else if (wrap == "mirror") t.wrap = Texture::Wrap::Mirror;
         else w->fail("unknown wrap mode \"" + wrap + "\" (known: repeat, clamp, mirror)");
     }
+    read_uv_mapping(im, t);
+    if (auto m = im.find("multiply")) t.multiply = m->value().is_number() ? glm::vec3(m->number_at_least(0.0f, true)) : m->vec3_at_least(0.0f);
+    if (auto inv = im.find("invert")) {
+        t.invert = inv->boolean();
+        // The emission light's texel sampling and its mean assume the texels are the radiance.
+        if (t.invert && use == TextureUse::Emission) inv->fail("an emission texture cannot be inverted");
+    }
 }
 
 }  // namespace
 
 Texture image_texture(const std::string& relative, const std::filesystem::path& path, TextureUse use,
-                      const std::vector<Texture>& loaded, const ImageFail& fail) {
+                      const std::vector<Texture>& loaded, const ImageFail& fail, std::optional<bool> linear) {
     Texture t;
     t.kind = Texture::Kind::Image;
-    t.linear_data = is_data(use);
+    t.linear_data = linear.value_or(is_data(use));
+    t.max_value = use == TextureUse::Emission ? std::numeric_limits<float>::infinity() : 1.0f;
     std::error_code ec;
     t.image_file = std::filesystem::weakly_canonical(path, ec);
     const bool png = is_8bit_srgb(t.image_file);  // .png or .jpg
@@ -115,11 +151,12 @@ Texture read_texture(const scene_json::Node& node, TextureUse use, const std::ve
         // A bump map's normal comes from the height's slope, which a checker has only at its
         // edges, where it is a step: no slope to take.
         if (use == TextureUse::BumpMap) c->fail("a bump map must be an image (a checker's height has no slope)");
-        c->require_object({"a", "b", "scale"});
+        c->require_object({"a", "b", "scale", "uv_scale", "uv_offset"});
         t.kind = Texture::Kind::Checker;
         if (auto a = c->find("a")) t.a = read_checker_value(*a, use);
         if (auto b = c->find("b")) t.b = read_checker_value(*b, use);
         if (auto s = c->find("scale")) t.scale = s->number_at_least(0.0f, false);
+        read_uv_mapping(*c, t);
         return t;
     }
     read_image_texture(node.at("image"), use, loaded, t);
@@ -134,7 +171,11 @@ int add_texture(const scene_json::Node& node, TextureUse use, std::vector<Textur
 glm::vec3 texture_mean(const Texture& t) {
     if (t.kind == Texture::Kind::Checker) return 0.5f * (t.a + t.b);
     glm::dvec3 sum(0.0);
-    for (const glm::vec3& p : t.image->pixels) sum += glm::dvec3(p);
+    for (const glm::vec3& p : t.image->pixels) {
+        glm::vec3 v = t.multiply * p;
+        if (t.invert) v = glm::vec3(1.0f) - v;
+        sum += glm::dvec3(glm::clamp(v, glm::vec3(0.0f), glm::vec3(t.max_value)));
+    }
     return glm::vec3(sum / static_cast<double>(t.image->pixels.size()));
 }
 

@@ -2,6 +2,7 @@
 // Texture keys (a parameter given as an object instead of its plain value), validated and loaded;
 // and the check that every textured object's shape has uv coordinates. Internal to the scene
 // loader.
+#include <optional>
 #include <vector>
 
 #include "raytracer/scene/json_reader.hpp"
@@ -22,7 +23,8 @@ enum class TextureUse {
     BumpMap,    // data in [0, 1], a height (render/shading_frame.hpp); an image, not a checker
 };
 
-// `node` is {"checker": {"a": .., "b": .., "scale": n}} or {"image": {"file": .., "wrap": ..}};
+// `node` is {"checker": {"a": .., "b": .., "scale": n, "uv_scale", "uv_offset"}} or {"image": {"file": ..,
+// "wrap": .., "uv_scale", "uv_offset", "multiply", "invert", "encoding"}} (scenes/README.md, "Textures");
 // image files are relative to the scene file's folder. An image file that one of `loaded`
 // already holds is shared, not read again (a .png read both as colour and as data is read from
 // disk once and converted).
@@ -30,8 +32,10 @@ Texture read_texture(const scene_json::Node& node, TextureUse use, const std::ve
 
 // An image texture (wrap "repeat") from a file another file names (an .mtl's map_Kd): `relative` as
 // written there, `path` where it is; shared with `loaded` as read_texture does; failures go to `fail`.
+// `linear`, when set, says how an 8-bit image is read whatever the use: its stored codes (true)
+// or sRGB-decoded (false) (an image texture's "encoding").
 Texture image_texture(const std::string& relative, const std::filesystem::path& path, TextureUse use,
-                      const std::vector<Texture>& loaded, const ImageFail& fail);
+                      const std::vector<Texture>& loaded, const ImageFail& fail, std::optional<bool> linear = std::nullopt);
 
 // read_texture appended to `textures`; returns its index.
 int add_texture(const scene_json::Node& node, TextureUse use, std::vector<Texture>& textures);

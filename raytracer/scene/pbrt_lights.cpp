@@ -6,14 +6,15 @@
 // start + cos end) / 2)) for a spot, irradiance = L illuminance for a distant light, radiance =
 // L illuminance / pi for a constant infinite light.
 //
-// Environment maps: pbrt-v4's image infinite light reads a square image in its equal-area
-// octahedral mapping, which our environment (equirectangular) cannot hold: such a map becomes a
-// constant background of its mean (warned). A 2:1 image is taken as pbrt-v3's equirectangular
-// map: +z up in light space, u = phi / 2 pi from +x toward +y, v = theta / pi from +z. Ours has +y
-// up, u = 0.5 from -z, turning right-handed toward +x; as a map of directions the two differ by
-// (x, y, z)_pbrt = (z, -x, y)_ours, a mirror, which our environment's "mirror" undoes: with the
-// light's transform the map's frame is written as our "mirror" and "rotate" about +y when it is
-// one, else the nearest such turn is used and the warning says so.
+// Environment maps. pbrt-v4's image infinite light reads a square image in its equal-area
+// octahedral mapping: our environment's "mapping": "equal-area", whose frame is pbrt's light
+// space turned by `Rotate -90 1 0 0` ((x, y, z)_pbrt = (x, -z, y)_ours, render/environment_light.hpp).
+// A 2:1 image is taken as pbrt-v3's equirectangular map: +z up in light space, u = phi / 2 pi from
+// +x toward +y, v = theta / pi from +z; ours has +y up, u = 0.5 from -z, turning right-handed
+// toward +x; as maps of directions the two differ by (x, y, z)_pbrt = (z, -x, y)_ours, a mirror,
+// which our environment's "mirror" undoes. With the light's transform, the map's frame is written
+// as our "mirror" and "rotate" about +y when it is one, else the nearest such turn is used and the
+// warning says so.
 #include <algorithm>
 #include <cmath>
 
@@ -24,6 +25,7 @@
 
 #include "raytracer/input_error.hpp"
 #include "raytracer/scene/load_image_file.hpp"
+#include "raytracer/scene/pbrt_transform.hpp"
 #include "raytracer/scene/pbrt_world.hpp"
 
 namespace sweeptrace::pbrt {
@@ -65,25 +67,24 @@ void infinite(WorldContext& w, const LightRecord& l, const std::string& what, do
     const std::filesystem::path path = w.files.resolve(file);
     const std::shared_ptr<const Image> image =
         read_image_path(file, path, "environment image", [&](const std::string& m) { d.fail(at, what + ": " + m); });
-    if (image->width == image->height) {
-        glm::dvec3 mean(0.0);
-        for (const glm::vec3& px : image->pixels) mean += glm::dvec3(px);
-        mean /= double(image->pixels.size());
-        d.warn(at, "equal-area environment", what + ": a square map is pbrt-v4's equal-area octahedral mapping, which we do not read: a constant of its mean radiance instead");
-        add_background(w, at, mean * scale);
-        return;
-    }
+    const bool equal_area = image->width == image->height;
     if (!w.doc["background"].is_null()) {
         d.warn(at, "two infinite lights", "a second infinite light beside another is not supported (ignored)");
         return;
     }
     // Our direction d (the world is pbrt's) -> pbrt's light space: inverse(ctm) * d; it must equal
-    // P * S * Ry(-rotate) * d with P = (x, y, z) -> (z, -x, y) and S our "mirror" (x -> -x, or
+    // P * S * Ry(-rotate) * d with P our map frame in pbrt's terms and S our "mirror" (x -> -x, or
     // none). So S * Ry(-rotate) = P^-1 * inverse(ctm), whose determinant says whether S is needed.
     glm::dmat3 p_map(0.0);  // columns: images of our x, y, z
-    p_map[0] = {0.0, -1.0, 0.0};
-    p_map[1] = {0.0, 0.0, 1.0};
-    p_map[2] = {1.0, 0.0, 0.0};
+    if (equal_area) {
+        p_map[0] = {1.0, 0.0, 0.0};
+        p_map[1] = {0.0, 0.0, 1.0};
+        p_map[2] = {0.0, -1.0, 0.0};
+    } else {
+        p_map[0] = {0.0, -1.0, 0.0};
+        p_map[1] = {0.0, 0.0, 1.0};
+        p_map[2] = {1.0, 0.0, 0.0};
+    }
     glm::dmat3 light(l.ctm);
     const double s = std::cbrt(std::fabs(glm::determinant(light)));
     if (s > 0.0) light /= s;
@@ -98,9 +99,24 @@ void infinite(WorldContext& w, const LightRecord& l, const std::string& what, do
     ry[2] = {std::sin(a), 0.0, std::cos(a)};
     double err = 0.0;
     for (int c = 0; c < 3; ++c) err = std::max(err, glm::length(q[c] - ry[c]));
-    if (err > 1e-6)
-        d.warn(at, "environment orientation", what + ": the map's orientation is not a turn about our +y (its light transform tilts it): the nearest turn is used");
     json env{{"file", w.files.json_path(file)}, {"rotate", -a * 180.0 / kPi}};
+    if (err > 1e-9) {
+        // Not a turn about +y (a z-up world's map, or a tilted one): the whole turn R = q^T, as
+        // our "rotate" with an axis, when q is a rotation; a light transform that shears is not.
+        const glm::dmat3 r = glm::transpose(q);
+        double ortho = 0.0;
+        const glm::dmat3 rtr = glm::transpose(r) * r;
+        for (int c = 0; c < 3; ++c) ortho = std::max(ortho, glm::length(rtr[c] - glm::dmat3(1.0)[c]));
+        if (ortho > 1e-6) {
+            d.warn(at, "environment orientation", what + ": the light's transform shears the map (not a rotation): the nearest turn about +y is used");
+        } else {
+            glm::dvec3 axis;
+            double degrees = 0.0;
+            axis_angle(r, axis, degrees);
+            env["rotate"] = {{"axis", {axis.x, axis.y, axis.z}}, {"degrees", degrees}};
+        }
+    }
+    if (equal_area) env["mapping"] = "equal-area";
     if (mirror) env["mirror"] = true;
     if (scale != 1.0) env["scale"] = scale;
     w.doc["background"] = {{"environment", env}};

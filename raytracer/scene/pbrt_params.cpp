@@ -239,9 +239,11 @@ std::optional<double> ParamList::get_float_or_texture(std::string_view name, std
     return p->numbers[0];
 }
 
-void ParamList::warn_unused(const std::string& what, Diagnostics& d) const {
+void ParamList::warn_unused(const std::string& what, Diagnostics& d, const std::string& kind) const {
     for (const Param& p : params)
-        if (!p.used) d.warn(p.where, what + " parameter " + p.name, what + ": parameter \"" + p.type + " " + p.name + "\" is not supported (ignored)");
+        if (!p.used)
+            d.warn(p.where, (kind.empty() ? what : kind) + " parameter " + p.name,
+                   what + ": parameter \"" + p.type + " " + p.name + "\" is not supported (ignored)");
 }
 
 }  // namespace sweeptrace::pbrt

@@ -59,8 +59,9 @@ public:
     // A float that may be a "texture": the texture's name in `texture`.
     std::optional<double> get_float_or_texture(std::string_view name, std::string& texture, const Diagnostics& d) const;
 
-    // Each parameter nothing read, once per (what, name): "<what>: parameter "type name" ignored".
-    void warn_unused(const std::string& what, Diagnostics& d) const;
+    // Each parameter nothing read, once per (kind, name), `kind` defaulting to `what` (give it
+    // when `what` names one instance, as a texture's name does): "<what>: parameter "type name" ignored".
+    void warn_unused(const std::string& what, Diagnostics& d, const std::string& kind = {}) const;
 };
 
 // Reads parameters from tokens[pos] on while the next token is a quoted string, advancing pos.

@@ -133,39 +133,67 @@ void MaterialTranslator::define_texture(const std::string& name, const std::stri
         if (a.is_number()) return a.get<double>() * k;
         return json::array({a[0].get<double>() * k, a[1].get<double>() * k, a[2].get<double>() * k});
     };
-    if (const std::string mapping = p.get_string("mapping", "uv", diag_); mapping != "uv")
-        diag_.warn(s.where, "texture mapping " + mapping, what + ": mapping \"" + excerpt(mapping) + "\" is not supported (uv used)");
+    // pbrt-v4's 2D mapping (imagemap, checkerboard): "uv" with uscale, vscale, udelta, vdelta is
+    // our uv_scale and uv_offset; the other mappings (spherical, cylindrical, planar) are not ours.
+    auto uv_mapping = [&](json& texture) {
+        if (const std::string mapping = p.get_string("mapping", "uv", diag_); mapping != "uv") {
+            diag_.warn(s.where, "texture mapping " + mapping, "Texture: mapping \"" + excerpt(mapping) + "\" is not supported (the surface's uv used)");
+            for (const char* q : {"v1", "v2"}) p.find(q);
+        }
+        const double su = p.get_float("uscale", 1.0, diag_), sv = p.get_float("vscale", 1.0, diag_);
+        const double du = p.get_float("udelta", 0.0, diag_), dv = p.get_float("vdelta", 0.0, diag_);
+        if (su == 0.0 || sv == 0.0) diag_.fail(s.where, what + ": \"uscale\" and \"vscale\" must not be 0");
+        if (su != 1.0 || sv != 1.0) texture["uv_scale"] = {su, sv};
+        if (du != 0.0 || dv != 0.0) texture["uv_offset"] = {du, dv};
+    };
     json out = grey;
     if (s.type == "constant") {
         out = value_of("value", 1.0);
     } else if (s.type == "scale") {
-        // pbrt-v4: "scale" is a float texture whatever the kind of "tex".
+        // pbrt-v4: "scale" is a float texture whatever the kind of "tex". Constants multiply out, a
+        // checker's colours are scaled, an image gets our "multiply".
         const json tex = value_of("tex", 1.0), scale = value_of("scale", 1.0, true);
+        auto scaled_image = [&](const json& image, const json& k) {
+            json o = image;
+            glm::dvec3 m = o["image"].contains("multiply") ? glm::dvec3(o["image"]["multiply"][0], o["image"]["multiply"][1], o["image"]["multiply"][2])
+                                                           : glm::dvec3(1.0);
+            m *= k.is_number() ? glm::dvec3(k.get<double>()) : glm::dvec3(k[0].get<double>(), k[1].get<double>(), k[2].get<double>());
+            if (glm::any(glm::lessThan(m, glm::dvec3(0.0))))
+                diag_.fail(s.where, what + ": a negative scale of an image texture (our textures take factors >= 0)");
+            o["image"]["multiply"] = rgb_json(m);
+            return o;
+        };
         if (is_constant(tex) && scale.is_number()) out = times(tex, scale.get<double>());
         else if (!is_constant(tex) && scale.is_number() && tex.contains("checker")) {
             out = tex;
             out["checker"]["a"] = times(tex["checker"]["a"], scale.get<double>());
             out["checker"]["b"] = times(tex["checker"]["b"], scale.get<double>());
+        } else if (!is_constant(tex) && scale.is_number() && tex.contains("image")) {
+            out = scaled_image(tex, scale);
+        } else if (is_constant(tex) && !is_constant(scale) && scale.contains("image")) {
+            out = scaled_image(scale, tex);  // a constant colour times a float image
         } else {
-            if (!(scale.is_number() && scale.get<double>() == 1.0))
-                diag_.warn(s.where, "texture scale of an image", what + ": scaling an image texture is not supported (the image is used unscaled)");
+            diag_.warn(s.where, "texture scale of textures", what + ": a texture scaled by another texture is not supported (the first one, unscaled)");
             out = is_constant(tex) ? scale : tex;
         }
     } else if (s.type == "checkerboard") {
         const json a = value_of("tex1", 1.0), b = value_of("tex2", 0.0);
-        const double us = p.get_float("uscale", 1.0, diag_), vs = p.get_float("vscale", 1.0, diag_);
-        const double ud = p.get_float("udelta", 0.0, diag_), vd = p.get_float("vdelta", 0.0, diag_);
         if (p.get_int("dimension", 2, diag_) != 2)
             diag_.warn(s.where, "checkerboard 3D", what + ": a 3D checkerboard is drawn as the 2D one in uv");
-        if (us != vs || ud != 0.0 || vd != 0.0)
-            diag_.warn(s.where, "checkerboard uv scale", what + ": different uscale/vscale or a udelta/vdelta are not supported (uscale used for both)");
         if (!is_constant(a) || !is_constant(b)) {
             diag_.warn(s.where, "checkerboard of textures", what + ": checks made of textures are not supported (their defaults 1 and 0 used)");
         }
         out = json{{"checker",
                     {{"a", is_constant(a) ? a : (is_float ? json(1.0) : rgb_json(glm::dvec3(1.0)))},
                      {"b", is_constant(b) ? b : (is_float ? json(0.0) : rgb_json(glm::dvec3(0.0)))},
-                     {"scale", us > 0.0 ? us : 1.0}}}};
+                     {"scale", 1.0}}}};
+        json& c = out["checker"];
+        uv_mapping(c);
+        // Equal u and v scales without offsets: our checker's own "scale", as people write it.
+        if (c.contains("uv_scale") && !c.contains("uv_offset") && c["uv_scale"][0] == c["uv_scale"][1] && c["uv_scale"][0].get<double>() > 0.0) {
+            c["scale"] = c["uv_scale"][0];
+            c.erase("uv_scale");
+        }
     } else if (s.type == "imagemap") {
         const std::string file = p.get_string("filename", "", diag_);
         if (file.empty()) diag_.fail(s.where, what + ": needs \"string filename\"");
@@ -178,12 +206,8 @@ void MaterialTranslator::define_texture(const std::string& name, const std::stri
         if (!is_eight_bit(ext) && !is_linear_format(ext)) {
             diag_.warn(s.where, "image format " + ext, what + ": image format \"" + excerpt(ext) +
                                                             "\" is not read (png, jpg, exr, hdr, pfm are); a constant 0.5 instead");
+            for (const char* q : {"scale", "invert", "mapping", "uscale", "vscale", "udelta", "vdelta", "v1", "v2"}) p.find(q);
         } else {
-            // Our loader decodes an 8-bit image as sRGB for colours and reads it as data for numbers.
-            const bool matches = is_linear_format(ext) || (is_float ? encoding == "linear" : encoding == "sRGB");
-            if (!matches)
-                diag_.warn(s.where, "image encoding", what + ": encoding \"" + excerpt(encoding) + "\" is approximated (an 8-bit image is read as " +
-                                                          (is_float ? "linear data" : "sRGB") + " for this use)");
             json image{{"file", files_.json_path(file)}};
             if (wrap == "clamp") image["wrap"] = "clamp";
             else if (wrap == "black") {
@@ -191,14 +215,24 @@ void MaterialTranslator::define_texture(const std::string& name, const std::stri
                 image["wrap"] = "clamp";
             } else if (wrap != "repeat")
                 diag_.warn(s.where, "wrap " + wrap, what + ": wrap \"" + excerpt(wrap) + "\" is not supported (repeat used)");
+            // An 8-bit image's reading: ours by default is sRGB for colours and data for numbers;
+            // pbrt's "encoding" (default sRGB for 8-bit files) says which, for either kind.
+            if (is_eight_bit(ext)) {
+                if (encoding == "sRGB" || encoding == "linear") {
+                    if ((encoding == "linear") != is_float) image["encoding"] = encoding;
+                } else {
+                    diag_.warn(s.where, "image encoding", what + ": encoding \"" + excerpt(encoding) + "\" is approximated by sRGB");
+                    if (is_float) image["encoding"] = "sRGB";
+                }
+            }
+            if (const double k = p.get_float("scale", 1.0, diag_); k != 1.0) {
+                if (k < 0.0) diag_.fail(s.where, what + ": a negative \"scale\" (our textures take factors >= 0)");
+                image["multiply"] = rgb_json(glm::dvec3(k));
+            }
+            if (p.get_bool("invert", false, diag_)) image["invert"] = true;
+            uv_mapping(image);
             out = json{{"image", image}};
         }
-        if (p.get_float("scale", 1.0, diag_) != 1.0)
-            diag_.warn(s.where, "imagemap scale", what + ": \"scale\" is not supported (the image is used unscaled)");
-        if (p.get_bool("invert", false, diag_)) diag_.warn(s.where, "imagemap invert", what + ": \"invert\" is not supported (ignored)");
-        if (p.get_float("uscale", 1.0, diag_) != 1.0 || p.get_float("vscale", 1.0, diag_) != 1.0 ||
-            p.get_float("udelta", 0.0, diag_) != 0.0 || p.get_float("vdelta", 0.0, diag_) != 0.0)
-            diag_.warn(s.where, "imagemap uv scale", what + ": uscale/vscale/udelta/vdelta are not supported (ignored)");
         // Filtering (MIP maps, EWA) changes only how texels are averaged: ours is bilinear.
         p.find("filter");
         p.find("maxanisotropy");
@@ -206,7 +240,7 @@ void MaterialTranslator::define_texture(const std::string& name, const std::stri
         diag_.warn(s.where, "texture " + s.type, "Texture class \"" + excerpt(s.type) + "\" is not supported (a constant 0.5 instead)");
         for (const Param& q : p.params) q.used = true;
     }
-    p.warn_unused(what, diag_);
+    p.warn_unused(what, diag_, "Texture (" + s.type + ")");
     (is_float ? float_textures_ : spectrum_textures_)[name] = out;
 }
 

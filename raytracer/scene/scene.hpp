@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include <glm/mat3x3.hpp>
+#include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
 #include "raytracer/geometry/object.hpp"
@@ -76,12 +78,15 @@ struct Background {
     glm::vec3 horizon{1.0f};             // Sky: radiance toward the horizon and below
     glm::vec3 zenith{0.5f, 0.7f, 1.0f};  // Sky: radiance straight up (+Y), blended by dir.y
     // Environment: a radiance map (render/environment_light.hpp states both layouts), shared,
-    // not copied, by copies of the scene; turned about +Y by rotate_degrees, its frame's x negated
-    // after the turn when mirrored, and multiplied by scale.
+    // not copied, by copies of the scene; turned about +Y by rotate_degrees (or, with `turned`, by
+    // the rotation `turn`: a "rotate" given as an axis and degrees), its frame's x negated after
+    // the turn when mirrored, and multiplied by scale.
     enum class EnvironmentMapping { Equirect, EqualArea };
     std::shared_ptr<const Image> environment;
     EnvironmentMapping mapping = EnvironmentMapping::Equirect;
     float rotate_degrees = 0.0f;
+    bool turned = false;
+    glm::mat3 turn{1.0f};  // map frame -> world, a rotation
     bool mirror = false;
     float scale = 1.0f;
 };
@@ -101,6 +106,14 @@ struct Texture {
     // Image: the texel values are the file's stored numbers (a data map: roughness, normals), not
     // sRGB-decoded colours; scene/load_texture.hpp says which parameters read data.
     bool linear_data = false;
+    // Both kinds, as pbrt-v4's uv mapping and image texture have them: a lookup at uv reads the
+    // pattern at (uv_scale.x u + uv_offset.x, uv_scale.y v + uv_offset.y); an image's value is then
+    // multiplied by `multiply`, turned to 1 - value with `invert`, and kept in [0, max_value] (the
+    // parameter's range). The defaults change nothing.
+    glm::vec2 uv_scale{1.0f}, uv_offset{0.0f};
+    glm::vec3 multiply{1.0f};
+    bool invert = false;
+    float max_value = 1.0f;
 };
 
 struct Material {

@@ -10,6 +10,7 @@
 #include "pbrt_test_support.hpp"
 #include "raytracer/image/image.hpp"
 #include "raytracer/input_error.hpp"
+#include "raytracer/render/environment_light.hpp"
 #include "raytracer/scene/scene_transform.hpp"
 
 using namespace sweeptrace;
@@ -298,12 +299,70 @@ TEST_CASE("pbrt infinite light from a 2:1 map: pbrt-v3's z-up mapping as our rot
         CHECK(env["mirror"] == true);
         CHECK(env["rotate"].get<double>() == Approx(90.0));
     }
-    // A light transform that tilts the map: the nearest turn, said.
+    // A light transform that tilts the map: the whole turn, as an axis and degrees.
     const auto t = convert_text(dir, "WorldBegin\nRotate 30 1 0 0\nLightSource \"infinite\" \"string filename\" \"sky.pfm\"\n");
-    CHECK(has_warning(t.warnings, "the map's orientation is not a turn about our +y"));
-    // A square map is pbrt-v4's equal-area mapping: its mean as a constant.
+    CHECK(t.warnings.empty());
+    CHECK(t.doc["background"]["environment"]["rotate"].contains("axis"));
+    // One that shears it is no rotation: the nearest turn about +y, said.
+    const auto h = convert_text(dir, "WorldBegin\nConcatTransform [1 0 0 0  0.5 1 0 0  0 0 1 0  0 0 0 1]\n"
+                                     "LightSource \"infinite\" \"string filename\" \"sky.pfm\"\n");
+    CHECK(has_warning(h.warnings, "the light's transform shears the map"));
+    // A square map is pbrt-v4's equal-area mapping: ours, turned to pbrt's frame.
     write_image(Image(4, 4), dir.path() / "square.pfm");
     const auto s = convert_text(dir, "WorldBegin\nLightSource \"infinite\" \"string filename\" \"square.pfm\"\n");
-    CHECK(s.doc["background"] == json({{"color", rgb(0, 0, 0)}}));
-    CHECK(has_warning(s.warnings, "equal-area octahedral mapping"));
+    const json& env = s.doc["background"]["environment"];
+    CHECK(s.warnings.empty());
+    CHECK(env["mapping"] == "equal-area");
+    CHECK_FALSE(env.contains("mirror"));
+}
+
+TEST_CASE("pbrt infinite light: pbrt's light-space directions land where pbrt puts them, equal-area and equirect", "[pbrt][environment]") {
+    // Maps black but for marked texels, whose light-space directions are worked out by hand from
+    // pbrt's mappings; the light turned by `Rotate -90 1 0 0` (light z -> world y, light y -> world -z),
+    // then turned about the world's y by 30 degrees, as scenes do to aim the sun.
+    // The same checks in a z-up world (no turn to y; the sun aimed about z) and under a light
+    // transform that mirrors.
+    const TempDir dir;
+    glm::dmat4 mirror_y(1.0);
+    mirror_y[1][1] = -1.0;
+    const std::pair<std::string, glm::dmat4> turns[] = {
+        {"Rotate 30 0 1 0\nRotate -90 1 0 0\n", rotation_matrix({0, 1, 0}, 30.0) * rotation_matrix({1, 0, 0}, -90.0)},
+        {"Rotate 40 0 0 1\n", rotation_matrix({0, 0, 1}, 40.0)},
+        {"Scale 1 -1 1\nRotate 20 0 0 1\n", mirror_y * rotation_matrix({0, 0, 1}, 20.0)}};
+    for (const auto& [turn, to_world] : turns) {
+    INFO(turn);
+    auto world_of = [&](const glm::dvec3& light_dir) { return glm::vec3(glm::normalize(glm::dvec3(to_world * glm::dvec4(light_dir, 0.0)))); };
+    auto radiance_toward = [&](const std::string& file, const glm::vec3& dir_world) {
+        std::vector<std::string> warnings;
+        const Scene sc = load_pbrt_scene(dir.write("env.pbrt", "WorldBegin\n" + turn + "LightSource \"infinite\" \"string filename\" \"" + file + "\"\n"),
+                                         false, warnings);
+        CHECK(warnings.empty());
+        return environment_radiance(sc.background, dir_world);
+    };
+    // Equal-area (pbrt-v4), 16 x 16: the centre is light +z, the right edge's middle light +x, the
+    // bottom edge's middle (last row) light +y (Clarberg's map: u -> x, v -> y, centre the pole).
+    Image ea(16, 16);
+    ea.at(8, 8) = glm::vec3(1, 0, 0);
+    ea.at(15, 8) = glm::vec3(0, 1, 0);
+    ea.at(8, 15) = glm::vec3(0, 0, 1);
+    write_image(ea, dir.path() / "ea.pfm");
+    // (Each direction a little to the +x and +y side, so that u and v fall inside texel 8, not on an edge.)
+    CHECK(radiance_toward("ea.pfm", world_of({0.01, 0.01, 1})) == glm::vec3(1, 0, 0));
+    CHECK(radiance_toward("ea.pfm", world_of({1, 0.01, 0.01})) == glm::vec3(0, 1, 0));
+    CHECK(radiance_toward("ea.pfm", world_of({0.01, 1, 0.01})) == glm::vec3(0, 0, 1));
+    CHECK(radiance_toward("ea.pfm", world_of({0, 0, -1})) == glm::vec3(0, 0, 0));
+    // Equirect (pbrt-v3), 16 x 8: u = phi / 2 pi (phi from light +x toward +y), v = theta / pi.
+    Image er(16, 8);
+    er.at(0, 4) = glm::vec3(1, 0, 0);   // phi ~ 0: light +x, just below the equator
+    er.at(4, 4) = glm::vec3(0, 1, 0);   // phi ~ pi/2: light +y
+    er.at(8, 0) = glm::vec3(0, 0, 1);   // theta ~ 0: near light +z
+    write_image(er, dir.path() / "er.pfm");
+    auto sph = [](double theta, double phi) { return glm::dvec3(std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta)); };
+    const double t4 = (4.5 / 8.0) * M_PI;  // row 4's centre
+    CHECK(radiance_toward("er.pfm", world_of(sph(t4, (0.5 / 16.0) * 2.0 * M_PI))) == glm::vec3(1, 0, 0));
+    CHECK(radiance_toward("er.pfm", world_of(sph(t4, (4.5 / 16.0) * 2.0 * M_PI))) == glm::vec3(0, 1, 0));
+    CHECK(radiance_toward("er.pfm", world_of(sph((0.5 / 8.0) * M_PI, (8.5 / 16.0) * 2.0 * M_PI))) == glm::vec3(0, 0, 1));
+    // The mirror matters: the texel left of +y (phi a little less than pi/2) is not what +y shows.
+    CHECK(radiance_toward("er.pfm", world_of(sph(t4, (3.5 / 16.0) * 2.0 * M_PI))) == glm::vec3(0, 0, 0));
+    }
 }
