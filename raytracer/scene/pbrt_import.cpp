@@ -1,8 +1,6 @@
 #include "raytracer/scene/pbrt_import.hpp"
 
-#include <algorithm>
-#include <cctype>
-
+#include "raytracer/scene/gzip_file.hpp"
 #include "raytracer/scene/load_scene_document.hpp"
 #include "raytracer/scene/pbrt_diagnostics.hpp"
 #include "raytracer/scene/pbrt_materials.hpp"
@@ -44,10 +42,6 @@ Scene load_pbrt_scene(const std::filesystem::path& file, bool strict, std::vecto
     return load_scene_document(doc, file);
 }
 
-bool is_pbrt_file(const std::filesystem::path& file) {
-    std::string ext = file.extension().string();
-    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-    return ext == ".pbrt";
-}
+bool is_pbrt_file(const std::filesystem::path& file) { return content_extension(file) == ".pbrt"; }
 
 }  // namespace sweeptrace
