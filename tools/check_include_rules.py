@@ -21,6 +21,7 @@ The rules (what the code is layered as; an include that breaks one is reported a
   stb          <stb/...> only in the image I/O files, raytracer/image/*_io.cpp.
   openexr      <OpenEXR/...>, <Imath/...> only in raytracer/image/*_io.cpp.
   libjpeg      <jpeglib.h> only in raytracer/image/jpeg_io.cpp.
+  zlib         <zlib.h> only in raytracer/scene/gzip_file.cpp.
   cli11        <CLI/...> only in raytracer/cli/.
   nlohmann     <nlohmann/...> only in raytracer/scene/ (scene files), and in the two .cpp files
                that read or write the JSON formats of their own: accuracy/exchange.cpp (the
@@ -55,6 +56,7 @@ LIBRARY_RULES = [
     ("openexr", "OpenEXR/", ["raytracer/image/*_io.cpp"]),
     ("openexr", "Imath/", ["raytracer/image/*_io.cpp"]),
     ("libjpeg", "jpeglib.h", ["raytracer/image/jpeg_io.cpp"]),
+    ("zlib", "zlib.h", ["raytracer/scene/gzip_file.cpp"]),
     ("cli11", "CLI/", ["raytracer/cli/*"]),
     ("nlohmann", "nlohmann/", ["raytracer/scene/*", "raytracer/accuracy/exchange.cpp", "raytracer/cli/diff_reports.cpp"]),
     ("tinyobj", "tiny_obj_loader.h", ["raytracer/scene/*"]),

@@ -18,7 +18,8 @@ for arg in "$@"; do
   esac
 done
 packages=(build-essential cmake libglm-dev libembree-dev libstb-dev nlohmann-json3-dev
-          libtinyobjloader-dev libcli11-dev libtbb-dev libopenexr-dev libjpeg-dev)
+          libtinyobjloader-dev libcli11-dev libtbb-dev libopenexr-dev libjpeg-dev
+          zlib1g-dev)  # gzip: pbrt-v4 scenes' .ply.gz meshes and .pbrt.gz Includes
 if [ "$mode" = test ]; then
   packages+=(catch2 python3 python3-matplotlib
              ccache         # cached objects: a rebuild after a pull compiles only what changed

@@ -13,6 +13,7 @@
 #include "raytracer/cli/output_guard.hpp"
 #include "raytracer/cli/report_text.hpp"
 #include "raytracer/input_error.hpp"
+#include "raytracer/scene/gzip_file.hpp"
 #include "raytracer/scene/pbrt_import.hpp"
 
 namespace sweeptrace {
@@ -29,7 +30,9 @@ struct ConvertArgs {
 int run_convert(const ConvertArgs& a) {
     const std::filesystem::path in(a.scene);
     if (!is_pbrt_file(in)) throw InputError("convert reads pbrt-v4 scenes (.pbrt), got '" + a.scene + "'");
-    const std::filesystem::path out = a.output.empty() ? std::filesystem::path(in.stem().string() + ".json") : std::filesystem::path(a.output);
+    // x.pbrt.gz -> x.json, as x.pbrt
+    const std::filesystem::path plain = is_gzip_name(in) ? in.stem() : in.filename();
+    const std::filesystem::path out = a.output.empty() ? std::filesystem::path(plain.stem().string() + ".json") : std::filesystem::path(a.output);
     if (out.extension() != ".json") throw InputError("output '" + out.string() + "': write the scene to a .json file");
     const std::filesystem::path dir = out.parent_path();
     std::error_code ec;

@@ -1,7 +1,6 @@
 #include "raytracer/scene/load_scene.hpp"
 #include "raytracer/scene/load_scene_document.hpp"
 
-#include <cctype>
 #include <initializer_list>
 #include <map>
 #include <set>
@@ -16,6 +15,7 @@
 #include "raytracer/geometry/shape.hpp"
 #include "raytracer/input_error.hpp"
 #include "raytracer/scene/film_limits.hpp"
+#include "raytracer/scene/gzip_file.hpp"
 #include "raytracer/scene/inline_mesh.hpp"
 #include "raytracer/scene/json_reader.hpp"
 #include "raytracer/scene/load_film_display.hpp"
@@ -337,9 +337,8 @@ public:
             file_node.fail("mesh file \"" + relative + "\" not found (looked for " + path.string() + ")");
         const std::string key = std::filesystem::weakly_canonical(path, ec).string();
         if (auto it = mesh_by_file_.find(key); it != mesh_by_file_.end()) return it->second;
-        std::string extension = path.extension().string();
-        for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-        const bool ply = extension == ".ply";
+        // mesh.ply.gz is PLY too (the loaders inflate a .gz: gzip_file.hpp), as pbrt-v4's scenes name them.
+        const bool ply = content_extension(path) == ".ply";
         ObjOutline outline;
         try {
             scene_.meshes.push_back(ply ? load_ply(path) : load_obj(path, &outline));

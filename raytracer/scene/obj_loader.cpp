@@ -10,6 +10,7 @@
 #include <tiny_obj_loader.h>
 
 #include "raytracer/input_error.hpp"
+#include "raytracer/scene/gzip_file.hpp"
 #include "raytracer/scene/obj_outline.hpp"
 #include "raytracer/scene/text_file.hpp"
 
@@ -79,7 +80,7 @@ std::string first_line(const std::string& s) {
 }  // namespace
 
 Mesh load_obj(const std::filesystem::path& file, ObjOutline* outline_out) {
-    const std::string text = read_text_file(file, "mesh", kMaxMeshFileBytes);
+    const std::string text = read_maybe_gzipped(file, "mesh", kMaxMeshFileBytes);
     const std::string name = file.string();
     const ObjOutline outline = outline_obj(text, name);
 

@@ -20,6 +20,8 @@ namespace sweeptrace {
 // the face's line), a face has fewer than 3 or more than 255 corners, a vertex coordinate is
 // missing, not a decimal number or not finite (with its line), or there are no faces at all.
 // Lines may end in \n, \r\n or \r (obj_outline.hpp); the result does not depend on which.
+// A name ending in .gz is inflated first, bounded by kMaxMeshFileBytes decompressed (gzip_file.hpp,
+// whose errors it throws).
 // With `outline`, the file's outline is also handed back (its faces in the order their triangles
 // are stored, and its mtllib / usemtl statements: scene/obj_materials.hpp).
 Mesh load_obj(const std::filesystem::path& file, ObjOutline* outline = nullptr);

@@ -28,7 +28,7 @@ PbrtConversion convert_pbrt(const std::filesystem::path& file, const std::filesy
 Scene load_pbrt_scene(const std::filesystem::path& file, bool strict, std::vector<std::string>& warnings,
                       std::string* film_filename = nullptr);
 
-// True when `file` names a pbrt scene (extension .pbrt, any case).
+// True when `file` names a pbrt scene (extension .pbrt, any case, or .pbrt.gz: read inflated).
 bool is_pbrt_file(const std::filesystem::path& file);
 
 }  // namespace sweeptrace

@@ -9,6 +9,7 @@
 #include <glm/matrix.hpp>
 
 #include "raytracer/input_error.hpp"
+#include "raytracer/scene/gzip_file.hpp"
 #include "raytracer/scene/pbrt_tokenizer.hpp"
 #include "raytracer/scene/pbrt_transform.hpp"
 #include "raytracer/scene/scene_transform.hpp"
@@ -50,7 +51,7 @@ private:
         if (++files_read_ > kMaxFiles) diag_.fail(from, "more than " + std::to_string(kMaxFiles) + " files included");
         std::string text;
         try {
-            text = read_text_file(file, "pbrt scene", kMaxSceneFileBytes);
+            text = read_maybe_gzipped(file, "pbrt scene", kMaxSceneFileBytes);
         } catch (const InputError& e) {
             if (depth == 0) throw;
             diag_.fail(from, std::string("Include: ") + e.what());

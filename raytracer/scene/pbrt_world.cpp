@@ -81,14 +81,18 @@ std::optional<std::string> WorldContext::material_for(const ShapeRecord& s, doub
 }
 
 json write_world(const PbrtScene& scene, MaterialTranslator& materials, const FileNames& files, Diagnostics& diag,
-                 std::string& film_filename) {
+                 std::string& film_filename, std::vector<ObjectOrigin>& origins) {
     WorldContext w{scene, materials, files, diag, nlohmann::json::object(), 0};
     w.doc = json::object();
     w.doc["description"] = "converted from the pbrt-v4 scene " + scene.main_file.filename().string() + " by sweeptrace";
     w.doc["materials"] = json::object();
     w.doc["objects"] = json::array();
     write_camera_and_film(w, film_filename);
-    for (const ShapeRecord& s : scene.shapes) write_shape(w, s);
+    for (const ShapeRecord& s : scene.shapes) {
+        write_shape(w, s);
+        if (const std::size_t n = w.doc["objects"].size(); n > origins.size())
+            origins.resize(n, {s.statement.where, "Shape \"" + excerpt(s.statement.type) + "\""});
+    }
     for (const LightRecord& l : scene.lights) write_light(w, l);
     return w.doc;
 }

@@ -10,6 +10,7 @@
 // start with `Scale -1 1 1` (det < 0; Bitterli's scenes, Blender's exporter) get our right-handed
 // camera. Shapes, lights and mesh files therefore stay where pbrt puts them.
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -38,9 +39,17 @@ struct WorldContext {
     std::optional<std::string> material_for(const ShapeRecord& s, double area);
 };
 
-// Our JSON for the scene; `film_filename` gets the Film's "filename" (pbrt's default "pbrt.exr").
+// The pbrt statement a JSON object was written for, so that the JSON loader's complaint about
+// objects[i] (a corrupt PLY file, say) can be said at the pbrt file and line (pbrt_import.cpp).
+struct ObjectOrigin {
+    Where where;
+    std::string what;  // `Shape "plymesh"`
+};
+
+// Our JSON for the scene; `film_filename` gets the Film's "filename" (pbrt's default "pbrt.exr"),
+// `origins` one entry per written object (objects[i] came from origins[i]).
 nlohmann::json write_world(const PbrtScene& scene, MaterialTranslator& materials, const FileNames& files, Diagnostics& diag,
-                           std::string& film_filename);
+                           std::string& film_filename, std::vector<ObjectOrigin>& origins);
 
 // Parts, each in its own file: camera, film, sampler, filter, integrator (pbrt_camera.cpp);
 // one shape (pbrt_shapes.cpp); one light (pbrt_lights.cpp).

@@ -13,6 +13,7 @@
 #include <glm/geometric.hpp>
 
 #include "raytracer/input_error.hpp"
+#include "raytracer/scene/gzip_file.hpp"
 #include "raytracer/scene/text_file.hpp"
 
 namespace sweeptrace {
@@ -442,7 +443,7 @@ Mesh parse_ply(std::string_view bytes, const std::string& name) {
 }
 
 Mesh load_ply(const std::filesystem::path& file) {
-    return parse_ply(read_text_file(file, "mesh", kMaxMeshFileBytes), file.string());
+    return parse_ply(read_maybe_gzipped(file, "mesh", kMaxMeshFileBytes), file.string());
 }
 
 }  // namespace sweeptrace

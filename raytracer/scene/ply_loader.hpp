@@ -32,6 +32,8 @@
 
 namespace sweeptrace {
 
+// A name ending in .gz (mesh.ply.gz, as pbrt-v4's scenes ship them) is inflated first, bounded by
+// kMaxMeshFileBytes decompressed (gzip_file.hpp, whose errors it throws).
 Mesh load_ply(const std::filesystem::path& file);
 // The same from bytes already in memory (`name` for messages): the fuzzer's entry.
 Mesh parse_ply(std::string_view bytes, const std::string& name);

@@ -10,13 +10,9 @@
 
 namespace sweeptrace {
 
-namespace {
-
-std::string mib(std::uintmax_t bytes) {
+std::string mib_text(std::uintmax_t bytes) {
     return std::to_string((bytes + (std::uintmax_t{1} << 20) - 1) >> 20) + " MiB";
 }
-
-}  // namespace
 
 void check_input_file(const std::filesystem::path& file, const char* what, std::uintmax_t max_bytes) {
     std::error_code ec;
@@ -31,7 +27,7 @@ void check_input_file(const std::filesystem::path& file, const char* what, std::
     else if (const std::uintmax_t size = std::filesystem::file_size(file, ec); ec)
         reason = reason_or(ec.message().c_str(), "cannot get its size");
     else if (size > max_bytes)
-        reason = "it is " + mib(size) + ", over the limit of " + mib(max_bytes) + " for a " + what;
+        reason = "it is " + mib_text(size) + ", over the limit of " + mib_text(max_bytes) + " for a " + what;
     if (!reason.empty()) throw InputError(file.string() + ": cannot read " + what + ": " + reason);
 }
 

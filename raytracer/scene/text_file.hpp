@@ -14,6 +14,9 @@ namespace sweeptrace {
 inline constexpr std::uintmax_t kMaxSceneFileBytes = std::uintmax_t{16} << 20;   // 16 MiB
 inline constexpr std::uintmax_t kMaxMeshFileBytes = std::uintmax_t{512} << 20;   // 512 MiB
 
+// A size in messages: whole MiB, rounded up ("16 MiB").
+std::string mib_text(std::uintmax_t bytes);
+
 // Throws InputError "<file>: cannot read <what>: <reason>" unless `file` is a regular file of at
 // most `max_bytes` (so also for a missing file, a directory, a FIFO or a device).
 void check_input_file(const std::filesystem::path& file, const char* what, std::uintmax_t max_bytes);

@@ -6,6 +6,7 @@ code expected and a pattern its one-line message must match (it names the file a
 run_corpus.py runs them. Regenerate with `python3 tests/bad_input/generate.py` (the output is
 committed; rerunning it writes the same bytes).
 """
+import gzip
 import json
 import os
 import shutil
@@ -260,6 +261,21 @@ ply_case("ply-huge-count", E + P + r"header line 3: element \"vertex\" declares 
          PLY_HEAD.replace("vertex 3", "vertex 4000000000").replace("ascii", "binary_big_endian"))
 ply_case("ply-unknown-format", E + P + r"header line 2: unknown format", PLY_HEAD.replace("ascii", "utf8") + PLY_TRI)
 ply_case("ply-no-faces", E + P + r"contains no faces", PLY_HEAD.replace("face 1", "face 0") + PLY_TRI)
+
+
+def gz(data):
+    """gzip bytes that do not depend on when they were written (mtime 0)."""
+    return gzip.compress(data.encode() if isinstance(data, str) else data, mtime=0)
+
+
+# .ply.gz (scene/gzip_file.hpp): inflated by name, its errors at the object's file.
+GZ_P = r"scene\.json: objects\[0\]\.file: .*mesh\.ply\.gz: "
+render_case("ply-gz-not-gzip", E + GZ_P + r"not a valid gzip file \(incorrect header check\)", mesh_scene("mesh.ply.gz"),
+            extra={"mesh.ply.gz": PLY_HEAD + PLY_TRI + "3 0 1 2\n"})
+render_case("ply-gz-truncated", E + GZ_P + r"truncated gzip data", mesh_scene("mesh.ply.gz"),
+            extra={"mesh.ply.gz": gz(PLY_HEAD + PLY_TRI + "3 0 1 2\n")[:40]})
+render_case("ply-gz-corrupt-ply", E + GZ_P + r"line 13: face 0 names vertex 3, the file has 3", mesh_scene("mesh.ply.gz"),
+            extra={"mesh.ply.gz": gz(PLY_HEAD + PLY_TRI + "3 0 1 3\n")})
 render_case("ply-materials-from-obj", E + r"scene\.json: objects\[0\]\.materials: a PLY mesh has no materials",
             mesh_scene("mesh.ply", materials="from_obj").replace(', "material": "m"', ""),
             extra={"mesh.ply": PLY_HEAD + PLY_TRI + "3 0 1 2\n"})
@@ -488,6 +504,15 @@ pbrt_case("pbrt-include-cycle", E + r"loop\.pbrt:1: Include nested deeper than 1
           PBRT_OK + 'Include "loop.pbrt"\n', extra={"loop.pbrt": 'Include "loop.pbrt"\n'})
 pbrt_case("pbrt-plymesh-missing", E + r"scene\.pbrt:3: Shape \"plymesh\": \"gone\.ply\" not found",
           PBRT_OK + 'Shape "plymesh" "string filename" "gone.ply"\n')
+# A mesh file the JSON loader refuses is said at the pbrt statement that named it, not at the JSON.
+pbrt_case("pbrt-plymesh-corrupt", E + r"scene\.pbrt:3: Shape \"plymesh\": .*bad\.ply: header line 1: not a PLY file",
+          PBRT_OK + 'Shape "plymesh" "string filename" "bad.ply"\n', extra={"bad.ply": "PLY\n" + PLY_HEAD[4:] + PLY_TRI + "3 0 1 2\n"})
+pbrt_case("pbrt-plymesh-gz-truncated", E + r"scene\.pbrt:4: Shape \"plymesh\": .*mesh\.ply\.gz: truncated gzip data",
+          PBRT_OK + 'Shape "sphere"\nShape "plymesh" "string filename" "mesh.ply.gz"\n',
+          extra={"mesh.ply.gz": gz(PLY_HEAD + PLY_TRI + "3 0 1 2\n")[:-6]}, command="convert")
+# 17 MiB of spaces in 17 KB: refused once the inflated text passes the 16 MiB a pbrt file may hold.
+pbrt_case("pbrt-include-gz-bomb", E + r"scene\.pbrt:3: Include: .*bomb\.pbrt\.gz: decompressed size exceeds the 16 MiB limit",
+          PBRT_OK + 'Include "bomb.pbrt.gz"\n', extra={"bomb.pbrt.gz": gz(b" " * (17 << 20))})
 pbrt_case("pbrt-lookat-degenerate", E + r"scene\.pbrt:1: LookAt: the eye and the point looked at must differ",
           'LookAt 0 0 0  0 0 0  0 1 0\nWorldBegin\n')
 pbrt_case("pbrt-fov-180", E + r"scene\.pbrt:1: Camera \"perspective\": \"fov\" must be strictly between 0 and 180",

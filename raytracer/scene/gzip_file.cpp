@@ -1,0 +1,100 @@
+#include "raytracer/scene/gzip_file.hpp"
+
+#include <zlib.h>
+
+#include <algorithm>
+#include <cctype>
+#include <limits>
+#include <new>
+
+#include "raytracer/input_error.hpp"
+#include "raytracer/scene/text_file.hpp"
+
+namespace sweeptrace {
+
+namespace {
+
+std::string lower_extension(const std::filesystem::path& file) {
+    std::string ext = file.extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    return ext;
+}
+
+// zlib counts in uInt (32 bits): larger spans are handed over in pieces of at most this.
+constexpr std::size_t kMaxStep = std::numeric_limits<uInt>::max();
+
+// A z_stream set up for gzip members only (16 + MAX_WBITS: no raw deflate, no zlib wrapper), ended
+// on every way out.
+class Inflater {
+public:
+    Inflater() {
+        const int r = inflateInit2(&s, 16 + MAX_WBITS);
+        if (r == Z_MEM_ERROR) throw std::bad_alloc();
+        if (r != Z_OK) throw std::logic_error("inflateInit2 failed: " + reason_or(s.msg, "unknown zlib error"));
+    }
+    ~Inflater() { inflateEnd(&s); }
+    Inflater(const Inflater&) = delete;
+    Inflater& operator=(const Inflater&) = delete;
+    z_stream s{};
+};
+
+}  // namespace
+
+bool is_gzip_name(const std::filesystem::path& file) { return lower_extension(file) == ".gz"; }
+
+std::string content_extension(const std::filesystem::path& file) {
+    return lower_extension(is_gzip_name(file) ? file.stem() : file);
+}
+
+std::string gunzip(std::string_view compressed, const std::string& name, const char* what, std::uintmax_t max_bytes) {
+    if (compressed.empty()) throw InputError(name + ": not a valid gzip file (empty file)");
+    // One byte past the limit proves the output is over it; the buffer never grows beyond.
+    const std::uintmax_t cap = max_bytes + 1;
+    Inflater z;
+    std::size_t fed = 0, used = 0;
+    // Text and meshes compress 3-10x; the guess only saves a few doublings.
+    std::string out(static_cast<std::size_t>(std::min<std::uintmax_t>(cap, std::max<std::uintmax_t>(1 << 16, 4 * compressed.size()))), '\0');
+    const auto over_limit = [&] {
+        return InputError(name + ": decompressed size exceeds the " + mib_text(max_bytes) + " limit for a " + what);
+    };
+    for (;;) {
+        if (used == out.size()) {
+            if (out.size() >= cap) throw over_limit();
+            out.resize(static_cast<std::size_t>(std::min<std::uintmax_t>(cap, 2 * std::uintmax_t{out.size()})));
+        }
+        if (z.s.avail_in == 0 && fed < compressed.size()) {
+            const std::size_t step = std::min(kMaxStep, compressed.size() - fed);
+            z.s.next_in = reinterpret_cast<Bytef*>(const_cast<char*>(compressed.data() + fed));
+            z.s.avail_in = static_cast<uInt>(step);
+            fed += step;
+        }
+        z.s.next_out = reinterpret_cast<Bytef*>(out.data() + used);
+        z.s.avail_out = static_cast<uInt>(std::min(kMaxStep, out.size() - used));
+        const int r = inflate(&z.s, Z_NO_FLUSH);
+        used = static_cast<std::size_t>(reinterpret_cast<char*>(z.s.next_out) - out.data());
+        const bool input_left = z.s.avail_in > 0 || fed < compressed.size();
+        if (r == Z_STREAM_END) {
+            if (!input_left) break;
+            inflateReset(&z.s);  // another member follows (it must be gzip too, or inflate says why not)
+        } else if (r == Z_BUF_ERROR) {
+            // No progress possible: with room to write, only more input would help, and there is
+            // none. (Without room, the buffer grows on the next turn.)
+            if (z.s.avail_out > 0 && !input_left) throw InputError(name + ": truncated gzip data");
+        } else if (r == Z_MEM_ERROR) {
+            throw std::bad_alloc();
+        } else if (r != Z_OK) {
+            throw InputError(name + ": not a valid gzip file (" + reason_or(z.s.msg, "corrupt data") + ")");
+        }
+    }
+    if (used > max_bytes) throw over_limit();  // the last member ended exactly one byte over
+    out.resize(used);
+    return out;
+}
+
+std::string read_maybe_gzipped(const std::filesystem::path& file, const char* what, std::uintmax_t max_bytes) {
+    std::string bytes = read_text_file(file, what, max_bytes);
+    if (!is_gzip_name(file)) return bytes;
+    return gunzip(bytes, file.string(), what, max_bytes);
+}
+
+}  // namespace sweeptrace
