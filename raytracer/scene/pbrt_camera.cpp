@@ -78,6 +78,7 @@ void write_camera_and_film(WorldContext& w, std::string& film_filename) {
 
     // Film.
     long long xres = 1280, yres = 720;
+    double iso = 100.0;
     film_filename = "pbrt.exr";
     if (sc.film) {
         const Statement& s = *sc.film;
@@ -88,7 +89,8 @@ void write_camera_and_film(WorldContext& w, std::string& film_filename) {
         xres = clamped(d, s.where, "Film xresolution", p.get_int("xresolution", 1280, d), 1, 16384);
         yres = clamped(d, s.where, "Film yresolution", p.get_int("yresolution", 720, d), 1, 16384);
         film_filename = p.get_string("filename", "pbrt.exr", d);
-        for (const char* q : {"cropwindow", "pixelbounds", "iso", "exposuretime", "whitebalance", "sensor", "maxcomponentvalue"})
+        iso = p.get_float("iso", 100.0, d);
+        for (const char* q : {"cropwindow", "pixelbounds", "whitebalance", "sensor", "maxcomponentvalue"})
             if (p.has(q)) {
                 p.find(q);
                 d.warn(s.where, std::string("film ") + q, what + ": \"" + q + "\" is not supported (ignored)");
@@ -145,7 +147,7 @@ void write_camera_and_film(WorldContext& w, std::string& film_filename) {
     film["filter"] = filter_json(w);
 
     // Camera.
-    double fov = 90.0, lens_radius = 0.0, focal = 1e6;
+    double fov = 90.0, lens_radius = 0.0, focal = 1e6, shutter_open = 0.0, shutter_close = 1.0;
     double frame = double(xres) / double(yres);
     double window[4];
     bool window_given = false;
@@ -167,8 +169,8 @@ void write_camera_and_film(WorldContext& w, std::string& film_filename) {
             std::copy(sw.begin(), sw.end(), window);
             window_given = true;
         }
-        p.find("shutteropen");
-        p.find("shutterclose");
+        shutter_open = p.get_float("shutteropen", 0.0, d);
+        shutter_close = p.get_float("shutterclose", 1.0, d);
         p.warn_unused(what, d);
         if (!(fov > 0.0 && fov < 180.0)) d.fail(s.where, what + ": \"fov\" must be strictly between 0 and 180 degrees");
         if (lens_radius < 0.0) d.fail(s.where, what + ": \"lensradius\" must be >= 0");
@@ -217,6 +219,15 @@ void write_camera_and_film(WorldContext& w, std::string& film_filename) {
     }
     w.doc["camera"] = camera;
     w.doc["film"] = film;
+
+    // The sensor's imaging ratio (pbrt_world.hpp), applied to the emitters once they are written.
+    const double ratio = (shutter_close - shutter_open) * iso / 100.0;
+    if (ratio > 0.0 && std::isfinite(ratio)) {
+        w.imaging_ratio = ratio;
+    } else {
+        d.warn(sc.film ? sc.film->where : cam_at, "imaging ratio",
+               "Film: exposure time (shutterclose - shutteropen) x iso / 100 is not positive, a black image in pbrt: 1 used instead");
+    }
 }
 
 }  // namespace sweeptrace::pbrt

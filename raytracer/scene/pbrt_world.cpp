@@ -80,6 +80,25 @@ std::optional<std::string> WorldContext::material_for(const ShapeRecord& s, doub
     return key;
 }
 
+void scale_emitters(json& doc, double k) {
+    auto times = [k](json& v) {
+        if (v.is_number()) v = v.get<double>() * k;
+        else
+            for (json& x : v) x = x.get<double>() * k;
+    };
+    for (auto& [name, m] : doc["materials"].items())
+        if (m.contains("emission")) times(m["emission"]);
+    if (doc.contains("lights"))
+        for (json& l : doc["lights"])
+            for (const char* key : {"intensity", "irradiance"})
+                if (l.contains(key)) times(l[key]);
+    if (doc.contains("background")) {
+        json& bg = doc["background"];
+        if (bg.contains("color")) times(bg["color"]);
+        if (bg.contains("environment")) bg["environment"]["scale"] = bg["environment"].value("scale", 1.0) * k;
+    }
+}
+
 json write_world(const PbrtScene& scene, MaterialTranslator& materials, const FileNames& files, Diagnostics& diag,
                  std::string& film_filename, std::vector<ObjectOrigin>& origins) {
     WorldContext w{scene, materials, files, diag, nlohmann::json::object(), 0};
@@ -94,6 +113,7 @@ json write_world(const PbrtScene& scene, MaterialTranslator& materials, const Fi
             origins.resize(n, {s.statement.where, "Shape \"" + excerpt(s.statement.type) + "\""});
     }
     for (const LightRecord& l : scene.lights) write_light(w, l);
+    if (w.imaging_ratio != 1.0) scale_emitters(w.doc, w.imaging_ratio);
     return w.doc;
 }
 

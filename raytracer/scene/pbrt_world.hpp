@@ -32,6 +32,11 @@ struct WorldContext {
     Diagnostics& diag;
     nlohmann::json doc;
     std::size_t triangles = 0;
+    // pbrt-v4's sensor response: the film records radiance x exposure time (shutterclose -
+    // shutteropen) x ISO / 100 (its PixelSensor's imaging ratio). Light transport is linear in the
+    // emitted radiance, so the writer multiplies every emitter by it: the same pixels, in every
+    // output format, as pbrt's film.
+    double imaging_ratio = 1.0;
 
     // The output name of the material a shape uses, with its area light's emission added (a new
     // material per material and light); nullopt when the shape is invisible (pbrt's "interface").
@@ -56,6 +61,10 @@ nlohmann::json write_world(const PbrtScene& scene, MaterialTranslator& materials
 void write_camera_and_film(WorldContext& w, std::string& film_filename);
 void write_shape(WorldContext& w, const ShapeRecord& shape);
 void write_light(WorldContext& w, const LightRecord& light);
+
+// Every emitter of a written document (materials' emission, lights' intensity and irradiance,
+// the background) multiplied by k.
+void scale_emitters(nlohmann::json& doc, double k);
 
 // A transform's JSON steps (rotate, scale, rotate, translate; identities left out), nullopt
 // when it mirrors or is singular.

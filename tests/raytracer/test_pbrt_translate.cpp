@@ -366,3 +366,30 @@ TEST_CASE("pbrt infinite light: pbrt's light-space directions land where pbrt pu
     CHECK(radiance_toward("er.pfm", world_of(sph(t4, (3.5 / 16.0) * 2.0 * M_PI))) == glm::vec3(0, 0, 0));
     }
 }
+
+TEST_CASE("pbrt film: the sensor's imaging ratio (shutter time x iso / 100) multiplies every emitter", "[pbrt]") {
+    const TempDir dir;
+    write_image(Image(4, 2), dir.path() / "sky.pfm");
+    auto convert = [&](const std::string& header, const std::string& env) {
+        return convert_text(dir, header + "WorldBegin\n" + env +
+                                     "LightSource \"point\" \"rgb I\" [1 2 3]\nLightSource \"distant\" \"rgb L\" [2 2 2]\n"
+                                     "AreaLightSource \"diffuse\" \"rgb L\" [4 5 6]\nShape \"sphere\"\n");
+    };
+    const std::string constant = "LightSource \"infinite\" \"rgb L\" [0.1 0.2 0.3]\n";
+    const auto plain = convert("", constant);
+    const auto iso = convert("Film \"rgb\" \"float iso\" 400\n", constant);
+    CHECK(iso.warnings.empty());
+    const json& a = plain.doc;
+    const json& b = iso.doc;
+    CHECK(b["lights"][0]["intensity"] == rgb(4, 8, 12));
+    CHECK(b["lights"][1]["irradiance"] == rgb(8, 8, 8));
+    const std::string key = b["objects"][0]["material"];
+    CHECK(b["materials"][key]["emission"] == rgb(16, 20, 24));
+    CHECK(b["background"]["color"][2].get<double>() == Approx(4.0 * a["background"]["color"][2].get<double>()));
+    // A shutter half as long at iso 200 is the plain scene; an environment map's scale carries it.
+    const auto half = convert("Camera \"perspective\" \"float shutteropen\" 0 \"float shutterclose\" 0.5\nFilm \"rgb\" \"float iso\" 200\n", constant);
+    CHECK(half.doc["lights"][0]["intensity"] == a["lights"][0]["intensity"]);
+    CHECK(half.doc["lights"][1]["irradiance"] == a["lights"][1]["irradiance"]);
+    const auto env = convert("Film \"rgb\" \"float iso\" 50\n", "LightSource \"infinite\" \"string filename\" \"sky.pfm\" \"float scale\" 3\n");
+    CHECK(env.doc["background"]["environment"]["scale"].get<double>() == Approx(1.5));
+}
