@@ -124,20 +124,14 @@ json MaterialTranslator::conductor(const ParamList& p, const std::string& what, 
                 diag_.warn(eta->where, "mixed metals", what + ": eta of " + *eta_metal + " with k of " + *k_metal +
                                                            ": our named metal " + *eta_metal + " is used for both");
             m["metal"] = *eta_metal;
-            if (*eta_metal == "CuZn") {
-                // Our conductor's named metals (docs/conductors.md) do not include brass yet.
-                diag_.warn(eta->where, "metal CuZn", what + ": brass (metal-CuZn) is not among our named metals: copper (Cu) instead");
-                m["metal"] = "Cu";
-            }
         } else if (plain(eta) && plain(k)) {
             // Our conductor takes eta > 0: a zero (or negative) index is raised to 1e-4.
             m["eta"] = rgb_json(glm::max(spectrum_rgb(*eta, what), glm::dvec3(1e-4)));
             m["k"] = rgb_json(glm::max(spectrum_rgb(*k, what), glm::dvec3(0.0)));
         } else {
             const Where at = eta ? eta->where : k->where;
-            const std::string known = "known metals: metal-{Ag,Al,Au,Cu,CuZn,MgO,TiO2}-{eta,k}";
-            diag_.warn(at, "conductor eta/k", what + ": eta and k must both be rgb/sampled or both named metal spectra (" + known +
-                                                  "); copper (pbrt-v4's default) is used");
+            diag_.warn(at, "conductor eta/k", what + ": eta and k must both be rgb/sampled or both named metal spectra (known metals: " +
+                                                  known_metal_spectra() + "); copper (pbrt-v4's default) is used");
             m["metal"] = eta_metal ? *eta_metal : k_metal ? *k_metal : std::string("Cu");
         }
     }

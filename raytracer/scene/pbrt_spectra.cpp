@@ -5,6 +5,8 @@
 
 #include <glm/common.hpp>
 
+#include "raytracer/scene/named_metals.hpp"
+
 namespace sweeptrace::pbrt {
 
 namespace {
@@ -63,8 +65,18 @@ glm::dvec3 sampled_rgb(const std::vector<double>& pairs) {
 }
 
 const std::vector<std::string>& known_metals() {
-    static const std::vector<std::string> metals{"Ag", "Al", "Au", "Cu", "CuZn", "MgO", "TiO2"};
+    static const std::vector<std::string> metals = [] {
+        std::vector<std::string> names;
+        for (const NamedMetal& m : named_metals()) names.emplace_back(m.name);
+        return names;
+    }();
     return metals;
+}
+
+std::string known_metal_spectra() {
+    std::string list;
+    for (const std::string& m : known_metals()) list += (list.empty() ? "" : ",") + m;
+    return "metal-{" + list + "}-{eta,k}";
 }
 
 std::optional<std::string> named_metal(const std::string& spectrum, std::string& part) {

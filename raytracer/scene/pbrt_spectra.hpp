@@ -10,7 +10,8 @@
 //                        about 1% of the tabulated functions'.
 //   "stdillum-D65"       white (1, 1, 1): the colour space's own illuminant.
 //   sampled pairs        approximated: the piecewise-linear spectrum read at 610, 550 and 465 nm.
-//   named metals         kept by name for our conductor: Ag Al Au Cu CuZn MgO TiO2.
+//   named metals         kept by name for our conductor: those of scene/named_metals.hpp, all
+//                        seven pbrt-v4 names (Ag Al Au Cu CuZn MgO TiO2).
 //   named glasses        their index at the helium d line (587.6 nm), dispersion dropped.
 #include <optional>
 #include <string>
@@ -23,12 +24,15 @@ namespace sweeptrace::pbrt {
 glm::dvec3 blackbody_rgb(double kelvin);  // luminance 1
 glm::dvec3 sampled_rgb(const std::vector<double>& pairs);
 
-// "metal-Au-eta" -> "Au" (and `part` "eta"); nullopt unless one of the seven metals pbrt-v4 names.
+// "metal-Au-eta" -> "Au" (and `part` "eta"); nullopt unless one of our named metals
+// (scene/named_metals.hpp), which are the seven pbrt-v4 names.
 std::optional<std::string> named_metal(const std::string& spectrum, std::string& part);
 // "glass-BK7" -> 1.5168; nullopt for names we do not know.
 std::optional<double> named_glass_ior(const std::string& spectrum);
 
-// The metals and glasses known, for messages and docs.
+// The metals known (scene/named_metals.hpp's, in its order), and for messages their pbrt names
+// in one line: "metal-{Ag,Al,Au,Cu,CuZn,MgO,TiO2}-{eta,k}".
 const std::vector<std::string>& known_metals();
+std::string known_metal_spectra();
 
 }  // namespace sweeptrace::pbrt
