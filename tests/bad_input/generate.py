@@ -488,6 +488,14 @@ pbrt_case("pbrt-include-cycle", E + r"loop\.pbrt:1: Include nested deeper than 1
           PBRT_OK + 'Include "loop.pbrt"\n', extra={"loop.pbrt": 'Include "loop.pbrt"\n'})
 pbrt_case("pbrt-plymesh-missing", E + r"scene\.pbrt:3: Shape \"plymesh\": \"gone\.ply\" not found",
           PBRT_OK + 'Shape "plymesh" "string filename" "gone.ply"\n')
+pbrt_case("pbrt-spectrum-file-missing",
+          E + r"scene\.pbrt:3: material \"conductor\": \"spectrum eta\": \"spds/Au\.eta\.spd\" is not a named spectrum, "
+          r"and no spectrum file of that name was found",
+          PBRT_OK + 'Material "conductor" "spectrum eta" "spds/Au.eta.spd" "spectrum k" "spds/Au.k.spd"\nShape "sphere"\n')
+pbrt_case("pbrt-spectrum-file-decreasing",
+          E + r"scene\.pbrt:3: material \"conductor\": \"spectrum k\": spectrum file \"k\.spd\": line 4: wavelength 450 after 500",
+          PBRT_OK + 'Material "conductor" "spectrum eta" "eta.spd" "spectrum k" "k.spd"\nShape "sphere"\n',
+          extra={"eta.spd": "400 0.5\n800 0.5\n", "k.spd": "# k\n400 3\n500 3\n450 3\n"})
 pbrt_case("pbrt-lookat-degenerate", E + r"scene\.pbrt:1: LookAt: the eye and the point looked at must differ",
           'LookAt 0 0 0  0 0 0  0 1 0\nWorldBegin\n')
 pbrt_case("pbrt-fov-180", E + r"scene\.pbrt:1: Camera \"perspective\": \"fov\" must be strictly between 0 and 180",
