@@ -267,7 +267,7 @@ C = r"scene\.json: materials\.m"
 render_case("conductor-eta-negative", E + C + r"\.eta\[1\]: ", scene(materials__m={"type": "conductor", "eta": [0.2, -1, 1], "k": 3}))
 render_case("conductor-eta-zero", E + C + r"\.eta: ", scene(materials__m={"type": "conductor", "eta": 0, "k": 3}))
 render_case("conductor-k-negative", E + C + r"\.k: ", scene(materials__m={"type": "conductor", "eta": 1, "k": -0.5}))
-render_case("conductor-unknown-metal", E + C + r"\.metal: unknown metal \"Gold\" \(known: Ag, Al, Au, Cu, MgO, TiO2",
+render_case("conductor-unknown-metal", E + C + r"\.metal: unknown metal \"Gold\" \(known: Ag, Al, Au, Cu, CuZn, MgO, TiO2",
             scene(materials__m={"type": "conductor", "metal": "Gold"}))
 render_case("conductor-metal-and-eta", E + C + r": give either \"metal\" or \"eta\" and \"k\", not both",
             scene(materials__m={"type": "conductor", "metal": "Au", "eta": 1, "k": 2}))
