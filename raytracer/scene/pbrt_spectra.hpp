@@ -45,7 +45,7 @@ glm::dvec3 linear_srgb_from_xyz(const glm::dvec3& xyz);
 // kMaxSpectrumFileBytes of text and kMaxSpectrumPairs pairs (a 1 nm table of 300-900 nm is 601).
 inline constexpr std::uintmax_t kMaxSpectrumFileBytes = std::uintmax_t{1} << 20;  // 1 MiB
 inline constexpr std::size_t kMaxSpectrumPairs = 100000;
-// The pairs; empty with `error` set ("line 3: \"abc\" is not a number") unless the text holds at
+// The pairs; empty with `error` set ("line 3: \"abc\" is not a finite number") unless the text holds at
 // least one pair of finite numbers, an even count, wavelengths strictly increasing.
 std::vector<double> parse_spectrum_file(std::string_view text, std::string& error);
 // Why interleaved pairs are not a spectrum (none, an odd count, over kMaxSpectrumPairs, not
@@ -54,7 +54,8 @@ std::vector<double> parse_spectrum_file(std::string_view text, std::string& erro
 std::string check_spectrum_pairs(const std::vector<double>& pairs, const std::vector<int>* lines = nullptr);
 
 // Whether pbrt-v4 reads the string value of a spectrum parameter as a named spectrum (a metal or
-// glass we know, "stdillum-*", "illum-*") rather than as a spectrum file's name.
+// glass we know, "stdillum-*", "illum-*") rather than as a spectrum file's name. (pbrt-v4 also
+// names camera sensor curves, "canon_eos_100d_r" ...: meant for Film "sensor", here files.)
 bool is_named_spectrum(const std::string& value);
 
 // "metal-Au-eta" -> "Au" (and `part` "eta"); nullopt unless one of our named metals
