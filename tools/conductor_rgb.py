@@ -1,12 +1,16 @@
 #!/usr/bin/env python3
 """Reduce the named metals' spectral optical constants (eta, k) to the RGB eta/k table in
-raytracer/render/conductor_fresnel.cpp, and print the reduction's error. docs/conductors.md states
+raytracer/scene/named_metals.cpp, and print the reduction's error. docs/conductors.md states
 the method; run: python3 tools/conductor_rgb.py
 
 Data: the spectra pbrt-v4 names metal-<X>-eta / metal-<X>-k (its src/pbrt/util/spectrum.cpp; for
 Ag, Al, Au, Cu on a 0.05 eV grid from 4.15 to 1.40 eV), the same numbers a pbrt scene that names
-them means, so a converted scene reflects what its author saw. CuZn is not in the tables this work
-could read, so it is not reduced here (docs/conductors.md).
+them means, so a converted scene reflects what its author saw. CuZn (brass) is pbrt-v4's CuZn_eta /
+CuZn_k, 61 pairs every 10 nm from 290 to 890 nm; the copy of pbrt-v4's source this work could read
+(2020) predates them, so the numbers were read from a verbatim copy of the later tables
+(Paul-Hi/Rayce, rayce/core/spectrum.inl, which cites pbrt-v4) and checked against two other
+independent copies: the refractiveindex.info brass data (Querry 1987) at 450, 500, ..., 700 nm and
+pbrt-v4's values at 450, 530 and 630 nm as another port transcribed them.
 
 Method, per RGB channel c of linear sRGB:
   1. The channel's spectral weight w_c(lambda) = (M_sRGB . xyz_bar(lambda))_c, illuminant E,
@@ -18,6 +22,8 @@ Method, per RGB channel c of linear sRGB:
      at the ends).
   3. (eta_c, k_c) fitted to T_c: at normal incidence exactly (k_c from eta_c and T_c(0) in closed
      form), eta_c chosen to minimise the cosine-weighted squared error over theta in [0, 90).
+raytracer/scene/pbrt_conductor_fit.cpp repeats reduce_metal step for step (same grid, bracket and
+constants) for a pbrt scene's own sampled eta/k: change the two together.
 Printed: the table, then per metal and channel the largest |R_rgb(theta) - T_c(theta)| over theta
 and the error of the cosine-weighted albedo (what a furnace would see).
 """
@@ -80,6 +86,17 @@ METALS = {
             2.535875, 2.564, 2.589625, 2.605, 2.595562, 2.583, 2.5765, 2.599, 2.678062, 2.809,
             3.01075, 3.24, 3.458187, 3.67, 3.863125, 4.05, 4.239563, 4.43, 4.619563, 4.817, 5.034125,
             5.26, 5.485625, 5.717]),
+    "CuZn": (list(range(290, 891, 10)),
+             [1.358, 1.388, 1.419, 1.446, 1.473, 1.494, 1.504, 1.503, 1.497, 1.487, 1.471, 1.445, 1.405,
+              1.350, 1.278, 1.191, 1.094, 0.994, 0.900, 0.816, 0.745, 0.686, 0.639, 0.602, 0.573,
+              0.549, 0.527, 0.505, 0.484, 0.468, 0.460, 0.450, 0.452, 0.449, 0.445, 0.444, 0.444,
+              0.445, 0.444, 0.444, 0.445, 0.446, 0.448, 0.450, 0.452, 0.455, 0.457, 0.458, 0.460,
+              0.464, 0.469, 0.473, 0.478, 0.481, 0.483, 0.486, 0.490, 0.494, 0.500, 0.507, 0.515],
+             [1.688, 1.731, 1.764, 1.789, 1.807, 1.815, 1.815, 1.815, 1.818, 1.818, 1.813, 1.805, 1.794,
+              1.786, 1.784, 1.797, 1.829, 1.883, 1.957, 2.046, 2.145, 2.250, 2.358, 2.464, 2.568,
+              2.668, 2.765, 2.860, 2.958, 3.059, 3.159, 3.253, 3.345, 3.434, 3.522, 3.609, 3.695,
+              3.778, 3.860, 3.943, 4.025, 4.106, 4.186, 4.266, 4.346, 4.424, 4.501, 4.579, 4.657,
+              4.737, 4.814, 4.890, 4.965, 5.039, 5.115, 5.192, 5.269, 5.346, 5.423, 5.500, 5.575]),
     "MgO": ([309.950012, 330.613007, 351.118988, 355.549011, 360.932007, 361.141998, 364.968994,
              382.065002, 386.712006, 393.337982, 404.634003, 430.935028, 435.781982, 457.829010,
              477.949036, 486.004974, 487.918030, 499.919006, 502.350006, 508.531982, 514.440002,

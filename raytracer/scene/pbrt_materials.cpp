@@ -1,23 +1,23 @@
 // pbrt-v4 materials as ours (the material half of MaterialTranslator; textures: pbrt_textures.cpp).
 #include <algorithm>
 #include <cmath>
+#include <system_error>
+#include <utility>
 
 #include <glm/common.hpp>
 #include <glm/vector_relational.hpp>
 
 #include "raytracer/input_error.hpp"
+#include "raytracer/scene/named_metals.hpp"
 #include "raytracer/scene/pbrt_materials.hpp"
 #include "raytracer/scene/pbrt_spectra.hpp"
+#include "raytracer/scene/text_file.hpp"
 
 namespace sweeptrace::pbrt {
 
 using nlohmann::json;
 
 json rgb_json(const glm::dvec3& c) { return json::array({c.r, c.g, c.b}); }
-
-namespace {
-
-}  // namespace
 
 json MaterialTranslator::roughness(const ParamList& p, const std::string& what, const std::string& prefix) {
     std::string tex, utex, vtex;
@@ -61,7 +61,7 @@ json MaterialTranslator::roughness(const ParamList& p, const std::string& what, 
 }
 
 double MaterialTranslator::ior(const ParamList& p, const std::string& name, const std::string& what) {
-    const std::optional<SpectrumValue> v = p.get_spectrum(name, diag_);
+    const std::optional<SpectrumValue> v = spectrum(p, name, what);
     if (!v) return 1.5;
     switch (v->kind) {
     case SpectrumValue::Kind::Rgb:
@@ -86,9 +86,9 @@ double MaterialTranslator::ior(const ParamList& p, const std::string& name, cons
 
 json MaterialTranslator::conductor(const ParamList& p, const std::string& what, const std::string& prefix) {
     json m{{"type", "conductor"}};
-    const std::optional<SpectrumValue> refl = p.get_spectrum("reflectance", diag_);
-    const std::optional<SpectrumValue> eta = p.get_spectrum(prefix + "eta", diag_);
-    const std::optional<SpectrumValue> k = p.get_spectrum(prefix + "k", diag_);
+    const std::optional<SpectrumValue> refl = spectrum(p, "reflectance", what);
+    const std::optional<SpectrumValue> eta = spectrum(p, prefix + "eta", what);
+    const std::optional<SpectrumValue> k = spectrum(p, prefix + "k", what);
     if (refl) {
         // pbrt-v4: with "reflectance" r, eta = 1 and k = 2 sqrt(r) / sqrt(1 - r): normal incidence reflects r.
         if (refl->kind == SpectrumValue::Kind::Texture) {
@@ -106,43 +106,131 @@ json MaterialTranslator::conductor(const ParamList& p, const std::string& what, 
         m["eta"] = rgb_json(glm::dvec3(1.0));
         m["k"] = rgb_json(2.0 * glm::sqrt(r) / glm::sqrt(1.0 - r));
     } else {
-        auto metal_of = [&](const std::optional<SpectrumValue>& v, const char* part) -> std::optional<std::string> {
-            std::string got;
-            if (!v || v->kind != SpectrumValue::Kind::Named) return std::nullopt;
-            auto metal = named_metal(v->name, got);
-            return metal && got == part ? metal : std::nullopt;
-        };
-        auto plain = [](const std::optional<SpectrumValue>& v) {
-            return v && (v->kind == SpectrumValue::Kind::Rgb || v->kind == SpectrumValue::Kind::Sampled ||
-                         v->kind == SpectrumValue::Kind::Blackbody);
-        };
-        const auto eta_metal = metal_of(eta, "eta"), k_metal = metal_of(k, "k");
-        if (!eta && !k) {
-            m["metal"] = "Cu";  // pbrt-v4's default: metal-Cu-eta, metal-Cu-k
-        } else if (eta_metal && k_metal) {
-            if (*eta_metal != *k_metal)
-                diag_.warn(eta->where, "mixed metals", what + ": eta of " + *eta_metal + " with k of " + *k_metal +
-                                                           ": our named metal " + *eta_metal + " is used for both");
-            m["metal"] = *eta_metal;
-            if (*eta_metal == "CuZn") {
-                // Our conductor's named metals (docs/conductors.md) do not include brass yet.
-                diag_.warn(eta->where, "metal CuZn", what + ": brass (metal-CuZn) is not among our named metals: copper (Cu) instead");
-                m["metal"] = "Cu";
-            }
-        } else if (plain(eta) && plain(k)) {
-            // Our conductor takes eta > 0: a zero (or negative) index is raised to 1e-4.
-            m["eta"] = rgb_json(glm::max(spectrum_rgb(*eta, what), glm::dvec3(1e-4)));
-            m["k"] = rgb_json(glm::max(spectrum_rgb(*k, what), glm::dvec3(0.0)));
-        } else {
-            const Where at = eta ? eta->where : k->where;
-            const std::string known = "known metals: metal-{Ag,Al,Au,Cu,CuZn,MgO,TiO2}-{eta,k}";
-            diag_.warn(at, "conductor eta/k", what + ": eta and k must both be rgb/sampled or both named metal spectra (" + known +
-                                                  "); copper (pbrt-v4's default) is used");
-            m["metal"] = eta_metal ? *eta_metal : k_metal ? *k_metal : std::string("Cu");
-        }
+        conductor_eta_k(eta, k, what, m);
     }
     m["roughness"] = roughness(p, what, prefix);
     return m;
+}
+
+namespace {
+
+// The named metal a spectrum names, for that part ("eta" or "k"), or nullopt.
+std::optional<std::string> metal_part(const std::optional<SpectrumValue>& v, const char* part) {
+    std::string got;
+    if (!v || v->kind != SpectrumValue::Kind::Named) return std::nullopt;
+    auto metal = named_metal(v->name, got);
+    return metal && got == part ? metal : std::nullopt;
+}
+
+bool is_sampled(const std::optional<SpectrumValue>& v) { return v && v->kind == SpectrumValue::Kind::Sampled; }
+
+bool is_plain(const std::optional<SpectrumValue>& v) {
+    return v && (v->kind == SpectrumValue::Kind::Rgb || v->kind == SpectrumValue::Kind::Sampled ||
+                 v->kind == SpectrumValue::Kind::Blackbody);
+}
+
+std::string kind_of(const std::optional<SpectrumValue>& v) {
+    if (!v) return "not given";
+    switch (v->kind) {
+    case SpectrumValue::Kind::Rgb: return "rgb";
+    case SpectrumValue::Kind::Blackbody: return "blackbody";
+    case SpectrumValue::Kind::Texture: return "a texture";
+    case SpectrumValue::Kind::Sampled: return v->name.empty() ? "sampled" : "the file \"" + excerpt(v->name) + "\"";
+    case SpectrumValue::Kind::Named: break;
+    }
+    return "\"" + excerpt(v->name) + "\"";
+}
+
+}  // namespace
+
+// pbrt-v4's conductor: eta and k, each copper's (metal-Cu-eta, metal-Cu-k) when not given. Both named
+// metals: ours by name (two different ones: eta's, or the one given, warned); both sampled (inline
+// or files): the named metals' reflectance fit; both rgb (or rgb and sampled): per channel. Any
+// other pairing reduces each part alone, with a warning.
+void MaterialTranslator::conductor_eta_k(const std::optional<SpectrumValue>& eta, const std::optional<SpectrumValue>& k,
+                                         const std::string& what, json& m) {
+    const auto eta_metal = metal_part(eta, "eta"), k_metal = metal_part(k, "k");
+    if ((eta_metal || !eta) && (k_metal || !k)) {
+        const std::string e = eta_metal.value_or("Cu"), kk = k_metal.value_or("Cu");
+        const std::string& used = eta ? e : kk;  // eta's metal, or the one given
+        if (e != kk)
+            diag_.warn(eta ? eta->where : k->where, "mixed metals",
+                       what + ": eta of " + e + " with k of " + kk + (eta && k ? "" : " (pbrt-v4's default for the one not given)") +
+                           ": our named metal " + used + " is used for both");
+        m["metal"] = used;
+        return;
+    }
+    glm::dvec3 e, kk;
+    if (is_sampled(eta) && is_sampled(k)) {
+        auto key = std::make_pair(eta->samples, k->samples);
+        auto it = conductor_fits_.find(key);
+        if (it == conductor_fits_.end()) it = conductor_fits_.emplace(std::move(key), fit_conductor_rgb(eta->samples, k->samples)).first;
+        if (!covers_visible(eta->samples) || !covers_visible(k->samples))
+            diag_.warn(eta->where, "conductor spectrum range", what + ": a sampled eta or k that does not span 380-780 nm is held at its ends (pbrt-v4 reads 0 past them)");
+        e = it->second.eta;
+        kk = it->second.k;
+    } else if (is_plain(eta) && is_plain(k)) {
+        e = spectrum_rgb(*eta, what);
+        kk = spectrum_rgb(*k, what);
+    } else {
+        diag_.warn(eta ? eta->where : k->where, "conductor eta/k",
+                   what + ": eta (" + kind_of(eta) + ") and k (" + kind_of(k) + ") are not both named metals (" + known_metal_spectra() +
+                       "), both rgb or both spectra: each is reduced to RGB alone (a named metal's part from our table, a texture or one not given copper's)");
+        e = conductor_part(eta, "eta", what);
+        kk = conductor_part(k, "k", what);
+    }
+    // Our conductor takes eta > 0: a zero (or negative) index is raised to 1e-4.
+    m["eta"] = rgb_json(glm::max(e, glm::dvec3(1e-4)));
+    m["k"] = rgb_json(glm::max(kk, glm::dvec3(0.0)));
+}
+
+// One part of a conductor alone: a named metal's from our table, copper's (pbrt-v4's default) when
+// not given or a texture (ours takes none), a named glass's index as grey, others as spectra.
+glm::dvec3 MaterialTranslator::conductor_part(const std::optional<SpectrumValue>& v, const char* part, const std::string& what) {
+    const bool is_eta = std::string(part) == "eta";
+    std::optional<std::string> metal = metal_part(v, part);
+    if (!v || v->kind == SpectrumValue::Kind::Texture) metal = "Cu";
+    if (metal) {
+        const NamedMetal named = *find_named_metal(*metal);
+        return glm::dvec3(is_eta ? named.eta : named.k);
+    }
+    if (v->kind == SpectrumValue::Kind::Named)
+        if (const auto glass = named_glass_ior(v->name)) return glm::dvec3(*glass);
+    return spectrum_rgb(*v, what);
+}
+
+std::optional<SpectrumValue> MaterialTranslator::spectrum(const ParamList& p, const std::string& name, const std::string& what) {
+    std::optional<SpectrumValue> v = p.get_spectrum(name, diag_);
+    if (!v) return v;
+    const std::string param = what + ": \"spectrum " + name + "\"";
+    if (v->kind == SpectrumValue::Kind::Named && !is_named_spectrum(v->name)) {
+        v->samples = spectrum_file(v->name, v->where, param);
+        v->kind = SpectrumValue::Kind::Sampled;
+    } else if (v->kind == SpectrumValue::Kind::Sampled) {
+        if (const std::string why = check_spectrum_pairs(v->samples); !why.empty()) diag_.fail(v->where, param + ": " + why);
+    }
+    return v;
+}
+
+const std::vector<double>& MaterialTranslator::spectrum_file(const std::string& file, const Where& where, const std::string& what) {
+    const std::filesystem::path path = files_.resolve(file);
+    if (const auto it = spectrum_files_.find(path); it != spectrum_files_.end()) return it->second;
+    std::error_code ec;
+    if (!std::filesystem::exists(path, ec)) {
+        const std::string metals = file.rfind("metal-", 0) == 0 ? " (the named metals: " + known_metal_spectra() + ")" : "";
+        diag_.fail(where, what + ": \"" + excerpt(file) + "\" is not a named spectrum" + metals +
+                              ", and no spectrum file of that name was found (looked for " + path.string() + ")");
+    }
+    std::string text;
+    try {
+        text = read_text_file(path, "spectrum file", kMaxSpectrumFileBytes);
+    } catch (const InputError& e) {
+        diag_.fail(where, what + ": " + e.what());
+    }
+    std::string error;
+    std::vector<double> pairs = parse_spectrum_file(text, error);
+    if (!error.empty()) diag_.fail(where, what + ": spectrum file \"" + excerpt(file) + "\": " + error);
+    return spectrum_files_.emplace(path, std::move(pairs)).first->second;
 }
 
 MaterialResult MaterialTranslator::translate(const Statement& s, const std::map<std::string, MaterialResult>& named) {

@@ -6,11 +6,15 @@
 // alpha = roughness^2 (render/bsdf.cpp), so our roughness = sqrt(alpha).
 #include <filesystem>
 #include <map>
+#include <optional>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include <glm/vec3.hpp>
 #include <nlohmann/json.hpp>
 
+#include "raytracer/scene/pbrt_conductor_fit.hpp"
 #include "raytracer/scene/pbrt_diagnostics.hpp"
 #include "raytracer/scene/pbrt_scene.hpp"
 
@@ -54,15 +58,28 @@ public:
     // An emitted spectrum (light "L", "I") as rgb: illuminants, blackbody, rgb.
     glm::dvec3 emitted(const ParamList& p, const std::string& name, const std::string& what);
 
+    // A spectrum parameter as pbrt-v4 reads it: a string that is not one of its named spectra
+    // (pbrt_spectra.hpp, is_named_spectrum) names a spectrum file, resolved from the main file's
+    // folder and read once per file, returned as Kind::Sampled with `name` the file as written;
+    // sampled pairs, inline or from a file, must have wavelengths increasing. A missing or
+    // malformed file: InputError with the parameter's file:line.
+    std::optional<SpectrumValue> spectrum(const ParamList& p, const std::string& name, const std::string& what);
+
 private:
     nlohmann::json roughness(const ParamList& p, const std::string& what, const std::string& prefix = "");
     double ior(const ParamList& p, const std::string& name, const std::string& what);
     glm::dvec3 spectrum_rgb(const SpectrumValue& v, const std::string& what);
     nlohmann::json conductor(const ParamList& p, const std::string& what, const std::string& prefix);
+    void conductor_eta_k(const std::optional<SpectrumValue>& eta, const std::optional<SpectrumValue>& k,
+                         const std::string& what, nlohmann::json& m);
+    glm::dvec3 conductor_part(const std::optional<SpectrumValue>& v, const char* part, const std::string& what);
+    const std::vector<double>& spectrum_file(const std::string& file, const Where& where, const std::string& what);
 
     const FileNames& files_;
     Diagnostics& diag_;
     std::map<std::string, nlohmann::json> float_textures_, spectrum_textures_;
+    std::map<std::filesystem::path, std::vector<double>> spectrum_files_;  // by resolved path
+    std::map<std::pair<std::vector<double>, std::vector<double>>, ConductorRgb> conductor_fits_;
 };
 
 }  // namespace sweeptrace::pbrt

@@ -72,7 +72,7 @@ glm::dvec3 MaterialTranslator::spectrum_rgb(const SpectrumValue& v, const std::s
 
 json MaterialTranslator::colour(const ParamList& p, const std::string& name, const glm::dvec3& fallback, bool albedo,
                                 const std::string& what) {
-    const std::optional<SpectrumValue> v = p.get_spectrum(name, diag_);
+    const std::optional<SpectrumValue> v = spectrum(p, name, what);
     auto clamp_albedo = [&](glm::dvec3 c, const Where& where) {
         if (albedo && (glm::any(glm::greaterThan(c, glm::dvec3(1.0))) || glm::any(glm::lessThan(c, glm::dvec3(0.0))))) {
             diag_.warn(where, "albedo outside [0, 1]", what + ": \"" + name + "\" outside [0, 1] is clamped to it");
@@ -97,7 +97,7 @@ json MaterialTranslator::colour(const ParamList& p, const std::string& name, con
 }
 
 glm::dvec3 MaterialTranslator::emitted(const ParamList& p, const std::string& name, const std::string& what) {
-    const std::optional<SpectrumValue> v = p.get_spectrum(name, diag_);
+    const std::optional<SpectrumValue> v = spectrum(p, name, what);
     if (!v) return glm::dvec3(1.0);  // the colour space's illuminant, luminance 1
     if (v->kind == SpectrumValue::Kind::Texture) diag_.fail(v->where, what + ": \"" + name + "\" cannot be a texture");
     return glm::max(spectrum_rgb(*v, what), glm::dvec3(0.0));
@@ -121,7 +121,7 @@ void MaterialTranslator::define_texture(const std::string& name, const std::stri
             if (it == float_textures_.end()) diag_.fail(s.where, what + ": no float texture named \"" + excerpt(tex) + "\"");
             return it->second;
         }
-        const std::optional<SpectrumValue> v = p.get_spectrum(param, diag_);
+        const std::optional<SpectrumValue> v = spectrum(p, param, what);
         if (!v) return rgb_json(glm::dvec3(fallback));
         if (v->kind != SpectrumValue::Kind::Texture) return rgb_json(spectrum_rgb(*v, what));
         const auto it = spectrum_textures_.find(v->name);

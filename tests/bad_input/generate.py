@@ -283,7 +283,7 @@ C = r"scene\.json: materials\.m"
 render_case("conductor-eta-negative", E + C + r"\.eta\[1\]: ", scene(materials__m={"type": "conductor", "eta": [0.2, -1, 1], "k": 3}))
 render_case("conductor-eta-zero", E + C + r"\.eta: ", scene(materials__m={"type": "conductor", "eta": 0, "k": 3}))
 render_case("conductor-k-negative", E + C + r"\.k: ", scene(materials__m={"type": "conductor", "eta": 1, "k": -0.5}))
-render_case("conductor-unknown-metal", E + C + r"\.metal: unknown metal \"Gold\" \(known: Ag, Al, Au, Cu, MgO, TiO2",
+render_case("conductor-unknown-metal", E + C + r"\.metal: unknown metal \"Gold\" \(known: Ag, Al, Au, Cu, CuZn, MgO, TiO2",
             scene(materials__m={"type": "conductor", "metal": "Gold"}))
 render_case("conductor-metal-and-eta", E + C + r": give either \"metal\" or \"eta\" and \"k\", not both",
             scene(materials__m={"type": "conductor", "metal": "Au", "eta": 1, "k": 2}))
@@ -513,6 +513,14 @@ pbrt_case("pbrt-plymesh-gz-truncated", E + r"scene\.pbrt:4: Shape \"plymesh\": .
 # 17 MiB of spaces in 17 KB: refused once the inflated text passes the 16 MiB a pbrt file may hold.
 pbrt_case("pbrt-include-gz-bomb", E + r"scene\.pbrt:3: Include: .*bomb\.pbrt\.gz: decompressed size exceeds the 16 MiB limit",
           PBRT_OK + 'Include "bomb.pbrt.gz"\n', extra={"bomb.pbrt.gz": gz(b" " * (17 << 20))})
+pbrt_case("pbrt-spectrum-file-missing",
+          E + r"scene\.pbrt:3: material \"conductor\": \"spectrum eta\": \"spds/Au\.eta\.spd\" is not a named spectrum, "
+          r"and no spectrum file of that name was found",
+          PBRT_OK + 'Material "conductor" "spectrum eta" "spds/Au.eta.spd" "spectrum k" "spds/Au.k.spd"\nShape "sphere"\n')
+pbrt_case("pbrt-spectrum-file-decreasing",
+          E + r"scene\.pbrt:3: material \"conductor\": \"spectrum k\": spectrum file \"k\.spd\": line 4: wavelength 450 after 500",
+          PBRT_OK + 'Material "conductor" "spectrum eta" "eta.spd" "spectrum k" "k.spd"\nShape "sphere"\n',
+          extra={"eta.spd": "400 0.5\n800 0.5\n", "k.spd": "# k\n400 3\n500 3\n450 3\n"})
 pbrt_case("pbrt-lookat-degenerate", E + r"scene\.pbrt:1: LookAt: the eye and the point looked at must differ",
           'LookAt 0 0 0  0 0 0  0 1 0\nWorldBegin\n')
 pbrt_case("pbrt-fov-180", E + r"scene\.pbrt:1: Camera \"perspective\": \"fov\" must be strictly between 0 and 180",

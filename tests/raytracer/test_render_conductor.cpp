@@ -12,8 +12,10 @@
 #include "furnace_sphere.hpp"
 #include "raytracer/render/bsdf.hpp"
 #include "raytracer/render/random.hpp"
+#include "raytracer/scene/load_scene.hpp"
 #include "raytracer/scene/named_metals.hpp"
 #include "render_test_stats.hpp"
+#include "scene_test_files.hpp"
 
 using namespace sweeptrace;
 using namespace sweeptrace::testing;
@@ -119,7 +121,8 @@ TEST_CASE("named metals: every table entry is physical and reflects what the red
     };
     const Expected expected[] = {{"Ag", {0.9701f, 0.9605f, 0.9132f}}, {"Al", {0.9138f, 0.9214f, 0.9245f}},
                                  {"Au", {0.9936f, 0.7888f, 0.3372f}}, {"Cu", {0.9331f, 0.6398f, 0.5336f}},
-                                 {"MgO", {0.0721f, 0.0731f, 0.0750f}}, {"TiO2", {0.2334f, 0.2443f, 0.2738f}}};
+                                 {"CuZn", {0.8952f, 0.7822f, 0.4136f}}, {"MgO", {0.0721f, 0.0731f, 0.0750f}},
+                                 {"TiO2", {0.2334f, 0.2443f, 0.2738f}}};
     CHECK(named_metals().size() == std::size(expected));
     for (const Expected& e : expected) {
         const auto m = find_named_metal(e.name);
@@ -133,6 +136,32 @@ TEST_CASE("named metals: every table entry is physical and reflects what the red
     }
     CHECK_FALSE(find_named_metal("au"));  // pbrt's spelling only
     CHECK_FALSE(find_named_metal("Gold"));
+}
+
+TEST_CASE("named metals: brass (CuZn) loads from a scene and reflects its closed form at normal incidence", "[render][bsdf][conductor]") {
+    // pbrt-v4's metal-CuZn reduced by tools/conductor_rgb.py: R0 0.8952 0.7822 0.4136 (docs/conductors.md).
+    const test::TempDir dir;
+    const Scene scene = load_scene(dir.write("brass.json", R"({
+  "camera": { "position": [0, 0, 5], "look_at": [0, 0, 0] }, "film": { "width": 4, "height": 4 },
+  "materials": { "brass": { "type": "conductor", "metal": "CuZn" } },
+  "objects": [{ "type": "sphere", "radius": 1, "material": "brass" }] })"));
+    REQUIRE(scene.materials.size() == 1);
+    const Material& m = scene.materials[0];
+    const NamedMetal brass = *find_named_metal("CuZn");
+    CHECK(m.type == Material::Type::Conductor);
+    CHECK(m.eta == brass.eta);
+    CHECK(m.k == brass.k);
+    const float printed[3] = {0.8952f, 0.7822f, 0.4136f};
+    for (int c = 0; c < 3; ++c) {
+        INFO("channel " << c);
+        const long double closed = normal_incidence(m.eta[c], m.k[c]);
+        CHECK(std::abs(fresnel_conductor(1.0f, m.eta[c], m.k[c]) - closed) <= 2e-6L * closed);
+        CHECK(std::abs(closed - printed[c]) < 1.5e-4L);  // the table's 4 digits
+    }
+    // Brass is yellow: red over green over blue, less red than copper, more green.
+    const NamedMetal cu = *find_named_metal("Cu");
+    CHECK(normal_incidence(brass.eta[0], brass.k[0]) < normal_incidence(cu.eta[0], cu.k[0]));
+    CHECK(normal_incidence(brass.eta[1], brass.k[1]) > normal_incidence(cu.eta[1], cu.k[1]));
 }
 
 TEST_CASE("conductor: roughness 0 is a mirror of weight albedo F(cos theta), a delta lobe", "[render][bsdf][conductor]") {
