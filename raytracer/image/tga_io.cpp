@@ -108,7 +108,7 @@ TgaHeader read_tga_header(TgaBytes& in) {
         in.unsupported(type + " (read: 1, 2, 3 and their RLE forms 9, 10, 11)");
     if (h.map_type > 1) in.unsupported("colour map type " + std::to_string(h.map_type) + " (read: 0 none, 1 a map)");
     if (h.mapped() && h.map_type != 1) in.fail(type + " is colour-mapped but the header gives no colour map");
-    if (h.map_type == 1 && h.mapped()) {
+    if (h.mapped()) {
         if (h.map_length == 0) in.fail("the colour map has 0 entries");
         if (h.map_bits != 15 && h.map_bits != 16 && h.map_bits != 24 && h.map_bits != 32)
             in.unsupported(std::to_string(h.map_bits) + "-bit colour map entries (read: 15, 16, 24, 32)");
@@ -122,14 +122,14 @@ TgaHeader read_tga_header(TgaBytes& in) {
     return h;
 }
 
-unsigned char widen5(int c) { return static_cast<unsigned char>((c * 255 + 15) / 31); }
+unsigned char tga_widen5(int c) { return static_cast<unsigned char>((c * 255 + 15) / 31); }
 
 // One stored colour of `bits` bits (a pixel or a map entry, BGR order) as RGB codes.
 TgaRgb tga_colour(const unsigned char* p, int bits, bool grey) {
     if (grey) return {p[0], p[0], p[0]};  // 16-bit grey: alpha in p[1], dropped
     if (bits == 15 || bits == 16) {
         const int v = p[0] | (p[1] << 8);
-        return {widen5((v >> 10) & 31), widen5((v >> 5) & 31), widen5(v & 31)};
+        return {tga_widen5((v >> 10) & 31), tga_widen5((v >> 5) & 31), tga_widen5(v & 31)};
     }
     return {p[2], p[1], p[0]};
 }
@@ -224,8 +224,9 @@ Image read_tga(const std::filesystem::path& path) {
     const std::size_t n = h.pixels(), per = h.pixel_bytes();
     const std::size_t need = h.rle() ? (n + kTgaMaxPacket - 1) / kTgaMaxPacket * (1 + per) : n * per;
     if (in.left() < need)
-        in.fail(std::to_string(h.width) + "x" + std::to_string(h.height) + (h.rle() ? " RLE pixels need at least " : " pixels need ") +
-                std::to_string(need) + " bytes after byte " + std::to_string(in.at()) + ", the file has " + std::to_string(in.left()));
+        in.fail(std::to_string(h.width) + "x" + std::to_string(h.height) +
+                (h.rle() ? " RLE pixels need at least " : " pixels need ") + std::to_string(need) + " bytes after byte " +
+                std::to_string(in.at()) + ", the file has " + std::to_string(in.left()));
     Image image(h.width, h.height);
     TgaPixels(in, h, map, image).decode();
     return image;
