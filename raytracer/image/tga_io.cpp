@@ -108,10 +108,11 @@ TgaHeader read_tga_header(TgaBytes& in) {
         in.unsupported(type + " (read: 1, 2, 3 and their RLE forms 9, 10, 11)");
     if (h.map_type > 1) in.unsupported("colour map type " + std::to_string(h.map_type) + " (read: 0 none, 1 a map)");
     if (h.mapped() && h.map_type != 1) in.fail(type + " is colour-mapped but the header gives no colour map");
+    // Checked for a map the image does not use too: its entry size says where the pixels start.
+    if (h.map_type == 1 && h.map_bits != 15 && h.map_bits != 16 && h.map_bits != 24 && h.map_bits != 32)
+        in.unsupported(std::to_string(h.map_bits) + "-bit colour map entries (read: 15, 16, 24, 32)");
     if (h.mapped()) {
         if (h.map_length == 0) in.fail("the colour map has 0 entries");
-        if (h.map_bits != 15 && h.map_bits != 16 && h.map_bits != 24 && h.map_bits != 32)
-            in.unsupported(std::to_string(h.map_bits) + "-bit colour map entries (read: 15, 16, 24, 32)");
         if (h.pixel_bits != 8 && h.pixel_bits != 16) in.unsupported(type + " with " + depth + " (read: 8, 16)");
     } else if (h.grey()) {
         if (h.pixel_bits != 8 && h.pixel_bits != 16) in.unsupported(type + " with " + depth + " (read: 8, 16)");

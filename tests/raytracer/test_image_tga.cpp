@@ -209,6 +209,9 @@ TEST_CASE("TGA: malformed and unsupported files are refused, each naming the fil
                Contains("unsupported TGA file (image type 11 with 24-bit pixels (read: 8, 16))"));
     CHECK_THAT(tga_message(dir, "entries.tga", tga_header(1, 1, 1, 8, 0, 0, 0, 1, 8) + "\x00\x00"s),
                Contains("unsupported TGA file (8-bit colour map entries (read: 15, 16, 24, 32))"));
+    // Also a map a true-colour image does not use: its entries' size places the pixels.
+    CHECK_THAT(tga_message(dir, "unused-entries.tga", tga_header(2, 1, 1, 24, 0, 0, 0, 4, 0) + "abc"),
+               Contains("unsupported TGA file (0-bit colour map entries (read: 15, 16, 24, 32))"));
     CHECK_THAT(tga_message(dir, "interleaved.tga", tga_header(2, 1, 1, 24, 0x40) + "abc"),
                Contains("unsupported TGA file (interleaved rows (image descriptor bits 6-7 are set))"));
 }
