@@ -23,7 +23,13 @@ struct Image {
 // file or destroys an existing one. Throws InputError (unknown extension, unwritable path).
 void write_image(const Image& image, const std::filesystem::path& path);
 
-// Reads .png (sRGB decoded to linear), .pfm, .exr, .hdr (Radiance RGBE). Throws InputError naming the file.
+// Reads .png, .jpg/.jpeg and .tga (sRGB decoded to linear), .pfm, .exr, .hdr (Radiance RGBE).
+// Throws InputError naming the file.
 Image read_image(const std::filesystem::path& path);
+
+// Whether read_image decodes `path` from sRGB-encoded codes, by its extension (case-insensitive):
+// .png (8- or 16-bit), .jpg, .jpeg, .tga. Their values are display values in [0, 1]: a texture
+// read as data re-encodes them (scene/load_texture.cpp), an environment refuses them.
+bool is_8bit_srgb(const std::filesystem::path& path);
 
 }  // namespace sweeptrace

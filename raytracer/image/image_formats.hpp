@@ -25,6 +25,9 @@ Image read_hdr(const std::filesystem::path& path);
 // JPEG (.jpg, .jpeg), read only: 8-bit sRGB decoded to linear, like a PNG.
 Image read_jpeg(const std::filesystem::path& path);
 
+// Truevision TGA (.tga), read only: 8-bit sRGB decoded to linear, like a PNG; alpha dropped.
+Image read_tga(const std::filesystem::path& path);
+
 }  // namespace sweeptrace::formats
 
 namespace sweeptrace::formats {

@@ -15,22 +15,33 @@
 namespace sweeptrace {
 namespace {
 
-enum class Format { Png, Pfm, Exr, Hdr, Jpeg };
+enum class Format { Png, Pfm, Exr, Hdr, Jpeg, Tga };
 
-Format format_of(const std::filesystem::path& path, const char* verb) {
+std::string lowercase_extension(const std::filesystem::path& path) {
     std::string ext = path.extension().string();
     std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+    return ext;
+}
+
+Format format_of(const std::filesystem::path& path, const char* verb) {
+    const std::string ext = lowercase_extension(path);
     if (ext == ".png") return Format::Png;
     if (ext == ".pfm") return Format::Pfm;
     if (ext == ".exr") return Format::Exr;
     const bool read = std::string(verb) == "read";
     if (ext == ".hdr" && read) return Format::Hdr;
     if ((ext == ".jpg" || ext == ".jpeg") && read) return Format::Jpeg;
+    if (ext == ".tga" && read) return Format::Tga;
     throw InputError(std::string("cannot ") + verb + " '" + path.string() + "': unknown image extension '" + ext +
-                     (read ? "' (use .png, .jpg, .pfm, .exr or .hdr)" : "' (use .png, .pfm or .exr)"));
+                     (read ? "' (use .png, .jpg, .tga, .pfm, .exr or .hdr)" : "' (use .png, .pfm or .exr)"));
 }
 
 }  // namespace
+
+bool is_8bit_srgb(const std::filesystem::path& path) {
+    const std::string ext = lowercase_extension(path);
+    return ext == ".png" || ext == ".jpg" || ext == ".jpeg" || ext == ".tga";
+}
 
 void write_image(const Image& image, const std::filesystem::path& path) {
     const Format format = format_of(path, "write");
@@ -44,7 +55,8 @@ void write_image(const Image& image, const std::filesystem::path& path) {
             case Format::Pfm: formats::write_pfm(image, temp); break;
             case Format::Exr: formats::write_exr(image, temp); break;
             case Format::Hdr:
-            case Format::Jpeg: break;  // format_of refuses to write these
+            case Format::Jpeg:
+            case Format::Tga: break;  // format_of refuses to write these
         }
     });
 }
@@ -56,6 +68,7 @@ Image read_image(const std::filesystem::path& path) {
         case Format::Exr: return formats::read_exr(path);
         case Format::Hdr: return formats::read_hdr(path);
         case Format::Jpeg: return formats::read_jpeg(path);
+        case Format::Tga: return formats::read_tga(path);
     }
     throw InputError("cannot read '" + path.string() + "'");
 }

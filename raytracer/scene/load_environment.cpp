@@ -3,6 +3,7 @@
 #include <cmath>
 #include <string>
 
+#include "raytracer/image/image.hpp"
 #include "raytracer/scene/load_image_file.hpp"
 #include "raytracer/scene/scene_transform.hpp"
 
@@ -19,9 +20,10 @@ void read_environment(const scene_json::Node& node, Background& background) {
     const auto mirror = node.find("mirror");
     const bool mirrored = mirror && mirror->boolean();
     const scene_json::Node file = node.at("file");
-    const std::string ext = std::filesystem::path(file.string()).extension().string();
-    if (ext == ".png" || ext == ".PNG")
-        file.fail("an environment must be linear radiance: use .hdr, .exr or .pfm, not an 8-bit .png");
+    const std::filesystem::path name(file.string());
+    if (is_8bit_srgb(name))
+        file.fail("an environment must be linear radiance: use .hdr, .exr or .pfm, not an 8-bit " +
+                  name.extension().string());
     const std::shared_ptr<const Image> map = read_image_file(file, "environment image");
     const Image& image = *map;
     if (image.width < 2 || image.height < 1) file.fail("environment image must be at least 2x1 pixels");

@@ -1,7 +1,5 @@
 #include "raytracer/scene/load_texture.hpp"
 
-#include <algorithm>
-#include <cctype>
 #include <cmath>
 #include <limits>
 #include <optional>
@@ -36,15 +34,10 @@ glm::vec3 read_checker_value(const scene_json::Node& node, TextureUse use) {
     return read_colour01(node);
 }
 
-bool is_8bit_srgb(const std::filesystem::path& file) {
-    std::string ext = file.extension().string();
-    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
-    return ext == ".png" || ext == ".jpg" || ext == ".jpeg";  // the 8-bit sRGB formats
-}
-
-// A .png's image the other way round: the reader decodes sRGB, so a data map re-encodes (and
-// rounds to the nearest 16-bit code: an 8-bit code k comes back as exactly k / 255, since
-// k / 255 = 257 k / 65535), and a colour map decodes a data map loaded before it.
+// An sRGB-coded image (.png, .jpg, .tga: is_8bit_srgb) the other way round: the reader decodes
+// sRGB, so a data map re-encodes (and rounds to the nearest 16-bit code: an 8-bit code k comes
+// back as exactly k / 255, since k / 255 = 257 k / 65535), and a colour map decodes a data map
+// loaded before it.
 std::shared_ptr<const Image> converted(const Image& from, bool to_data) {
     Image out = from;
     for (glm::vec3& p : out.pixels)
@@ -126,18 +119,18 @@ Texture image_texture(const std::string& relative, const std::filesystem::path& 
     t.max_value = use == TextureUse::Emission ? std::numeric_limits<float>::infinity() : 1.0f;
     std::error_code ec;
     t.image_file = std::filesystem::weakly_canonical(path, ec);
-    const bool png = is_8bit_srgb(t.image_file);  // .png or .jpg
-    // The same reading if one is loaded; else the other reading of a .png, converted.
+    const bool srgb8 = is_8bit_srgb(t.image_file);  // .png, .jpg or .tga
+    // The same reading if one is loaded; else the other reading of an 8-bit sRGB file, converted.
     const Texture* other_reading = nullptr;
     for (const Texture& other : loaded) {
         if (!other.image || other.image_file != t.image_file) continue;
-        if (!png || other.linear_data == t.linear_data) t.image = other.image;
+        if (!srgb8 || other.linear_data == t.linear_data) t.image = other.image;
         else if (!other_reading) other_reading = &other;
     }
     if (!t.image && other_reading) t.image = converted(*other_reading->image, t.linear_data);
     if (!t.image) {
         t.image = read_image_path(relative, path, "texture image", fail);
-        if (png && t.linear_data) t.image = converted(*t.image, true);
+        if (srgb8 && t.linear_data) t.image = converted(*t.image, true);
     }
     check_values(*t.image, use, fail);
     return t;

@@ -11,10 +11,10 @@
 
 namespace sweeptrace {
 
-// Which material parameter a texture feeds: its value range, and how an 8-bit/16-bit .png is
-// read. Colour maps (albedo, emission) are sRGB-decoded to linear; data maps (roughness, normal
-// maps) keep the file's stored numbers (code / 255 or / 65535). .exr, .hdr and .pfm are linear
-// for both.
+// Which material parameter a texture feeds: its value range, and how an 8-bit/16-bit .png (or a
+// .jpg or .tga, sRGB-coded too: is_8bit_srgb in image/image.hpp) is read. Colour maps (albedo,
+// emission) are sRGB-decoded to linear; data maps (roughness, normal maps) keep the file's
+// stored numbers (code / 255 or / 65535). .exr, .hdr and .pfm are linear for both.
 enum class TextureUse {
     Albedo,     // colours in [0, 1]
     Emission,   // radiance, each component >= 0 (a .png's values are at most 1)

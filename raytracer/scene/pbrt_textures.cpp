@@ -7,6 +7,7 @@
 #include <glm/common.hpp>
 #include <glm/vector_relational.hpp>
 
+#include "raytracer/image/image.hpp"
 #include "raytracer/input_error.hpp"
 #include "raytracer/scene/pbrt_materials.hpp"
 #include "raytracer/scene/pbrt_spectra.hpp"
@@ -44,7 +45,12 @@ std::string lower_extension(const std::string& file) {
     return ext;
 }
 
-bool is_eight_bit(const std::string& ext) { return ext == ".png" || ext == ".jpg" || ext == ".jpeg"; }
+// The formats our image reader holds display values in (sRGB-encoded codes): image.hpp's list.
+bool is_eight_bit(const std::string& ext) {
+    std::filesystem::path name("x");
+    name += ext;
+    return is_8bit_srgb(name);
+}
 bool is_linear_format(const std::string& ext) { return ext == ".exr" || ext == ".hdr" || ext == ".pfm"; }
 
 }  // namespace
@@ -205,7 +211,7 @@ void MaterialTranslator::define_texture(const std::string& name, const std::stri
         const std::string wrap = p.get_string("wrap", "repeat", diag_);
         if (!is_eight_bit(ext) && !is_linear_format(ext)) {
             diag_.warn(s.where, "image format " + ext, what + ": image format \"" + excerpt(ext) +
-                                                            "\" is not read (png, jpg, exr, hdr, pfm are); a constant 0.5 instead");
+                                                            "\" is not read (png, jpg, tga, exr, hdr, pfm are); a constant 0.5 instead");
             for (const char* q : {"scale", "invert", "mapping", "uscale", "vscale", "udelta", "vdelta", "v1", "v2"}) p.find(q);
         } else {
             json image{{"file", files_.json_path(file)}};

@@ -355,6 +355,12 @@ def exr_header(w, h, compression=0):
             attr("screenWindowWidth", "float", struct.pack("<f", 1.0)) + b"\0")
 
 
+def tga(w, h, image_type=2, data=None):
+    """A TGA header (no ID, no colour map, 24-bit, rows bottom-up) and its pixels, grey by default."""
+    header = struct.pack("<BBBHHBHHHHBB", 0, 0, image_type, 0, 0, 0, 0, 0, w, h, 24, 0)
+    return header + (data if data is not None else b"\x80" * (3 * w * h))
+
+
 GOOD = png(4, 4)
 GOOD_PFM = pfm(4, 4)
 
@@ -391,6 +397,12 @@ diff_case("exr-header-only", E + r"cannot read 'bad\.exr': not a valid EXR file 
 # ZIP compression (3): 16 lines per block, so the offset table of 16384 lines is 1024 entries.
 diff_case("exr-huge-window", E + r"cannot read 'bad\.exr': EXR data window size 16384x16384 is out of range",
           exr_header(16384, 16384, 3) + b"\0" * 8 * 1024, "bad.exr")
+diff_case("tga-truncated-pixels", E + r"cannot read 'bad\.tga': not a valid TGA file \(4x4 pixels need 48 bytes after byte 18, the file has 47\)",
+          tga(4, 4)[:-1], "bad.tga")
+# One run packet of 128 pixels in a 16-pixel image.
+diff_case("tga-rle-overrun", E + r"cannot read 'bad\.tga': not a valid TGA file \(the RLE packet at byte 18 runs past the image",
+          tga(4, 4, 10, b"\xff\x80\x80\x80"), "bad.tga")
+diff_case("tga-huge-header", E + r"cannot read 'bad\.tga': TGA size 65535x65535 is out of range", tga(65535, 65535, data=b""), "bad.tga")
 diff_case("image-unknown-extension", E + r"cannot read 'bad\.bmp': unknown image extension '\.bmp'", b"BM", "bad.bmp")
 case("image-directory", 2, E + r"cannot read 'adir\.png': is a directory", "diff adir.png good.png", {"adir.png/keep": "", "good.png": GOOD})
 case("image-fifo", 2, E + r"cannot read 'pipe\.pfm': not a regular file", "diff pipe.pfm good.png", {"good.png": GOOD}, "fifo pipe.pfm")

@@ -1,5 +1,6 @@
 // libFuzzer: bytes -> read_image("input.EXT") -> an Image of the size it claims, or an
-// InputError. Built once per reader: FUZZ_IMAGE_EXT is "png", "pfm", "exr", "jpg" or "hdr" (project/CMakeLists.txt).
+// InputError. Built once per reader: FUZZ_IMAGE_EXT is "png", "pfm", "exr", "jpg", "hdr" or "tga"
+// (project/CMakeLists.txt).
 #include <cstdlib>
 
 #include "fuzz_input_file.hpp"

@@ -1,13 +1,18 @@
 #pragma once
-// Shared by the image tests: a scratch directory per test, and running the built binary.
+// Shared by the image tests: a scratch directory per test, running the built binary, and
+// comparing images bit for bit.
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <bit>
+#include <cstdint>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
+
+#include "raytracer/image/image.hpp"
 
 namespace sweeptrace::testing {
 
@@ -60,6 +65,15 @@ inline CommandResult run_sweeptrace(const std::string& arguments, const std::fil
     r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
     r.output = read_file_text(log);
     return r;
+}
+
+// Same size and the same bits in every channel (so -0 differs from 0, and a NaN equals itself).
+inline bool bitwise_equal(const Image& a, const Image& b) {
+    if (a.width != b.width || a.height != b.height) return false;
+    for (std::size_t i = 0; i < a.pixels.size(); ++i)
+        for (int c = 0; c < 3; ++c)
+            if (std::bit_cast<std::uint32_t>(a.pixels[i][c]) != std::bit_cast<std::uint32_t>(b.pixels[i][c])) return false;
+    return true;
 }
 
 }  // namespace sweeptrace::testing

@@ -13,6 +13,7 @@
 #include "raytracer/input_error.hpp"
 
 using namespace sweeptrace;
+using sweeptrace::testing::bitwise_equal;
 using sweeptrace::testing::ScratchDir;
 
 namespace {
@@ -23,14 +24,6 @@ Image random_image(int w, int h, float lo, float hi, unsigned seed) {
     Image image(w, h);
     for (auto& p : image.pixels) p = {u(rng), u(rng), u(rng)};
     return image;
-}
-
-bool bitwise_equal(const Image& a, const Image& b) {
-    if (a.width != b.width || a.height != b.height) return false;
-    for (std::size_t i = 0; i < a.pixels.size(); ++i)
-        for (int c = 0; c < 3; ++c)
-            if (std::bit_cast<std::uint32_t>(a.pixels[i][c]) != std::bit_cast<std::uint32_t>(b.pixels[i][c])) return false;
-    return true;
 }
 
 // What read_image says of a file it refuses ("no error" if it reads it).
@@ -210,7 +203,7 @@ TEST_CASE("read errors name the file and what is wrong", "[image][errors]") {
     using Catch::Matchers::Contains;
     CHECK_THAT(message_of(dir / "missing.png"), Contains("missing.png") && Contains("no such file"));
     CHECK_THAT(message_of(dir / "missing.exr"), Contains("missing.exr") && Contains("no such file"));
-    CHECK_THAT(message_of(dir / "a.tga"), Contains("a.tga") && Contains("unknown image extension"));
+    CHECK_THAT(message_of(dir / "a.bmp"), Contains("a.bmp") && Contains("unknown image extension"));
     testing::write_file_text(dir / "junk.png", "this is not a png");
     CHECK_THAT(message_of(dir / "junk.png"), Contains("junk.png") && Contains("not a valid PNG"));
     testing::write_file_text(dir / "junk.exr", "this is not an exr");

@@ -2,6 +2,7 @@
 // the culprit (JSON path, or line:column for text that is not JSON).
 #include <catch2/catch.hpp>
 
+#include <filesystem>
 #include <string>
 
 #include "raytracer/input_error.hpp"
@@ -276,9 +277,13 @@ TEST_CASE("scene errors: environment backgrounds", "[scene][errors][environment]
     dir.write("bad.hdr", "not an image");
     CHECK_THAT(load_error(dir, with_bg(R"({ "environment": { "file": "bad.hdr" } })")),
                Catch::Contains("background.environment.file: cannot read") && Catch::Contains("not a Radiance HDR file"));
-    dir.write("photo.png", "x");
-    CHECK_THAT(load_error(dir, with_bg(R"({ "environment": { "file": "photo.png" } })")),
-               Catch::Contains("background.environment.file: an environment must be linear radiance"));
+    // Every 8-bit sRGB format, whatever the case of its extension (refused by name, before reading).
+    for (const char* name : {"photo.png", "photo.JPG", "photo.jpeg", "photo.tga", "photo.TGA"}) {
+        dir.write(name, "x");
+        CHECK_THAT(load_error(dir, with_bg(R"({ "environment": { "file": ")" + std::string(name) + R"(" } })")),
+                   Catch::Contains("background.environment.file: an environment must be linear radiance") &&
+                       Catch::Contains(std::filesystem::path(name).extension().string()));
+    }
     std::string hdr = "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 1 +X 2\n";
     for (int i = 0; i < 2; ++i) hdr += std::string{char(128), char(128), char(128), char(129)};
     dir.write("ok.hdr", hdr);
