@@ -42,7 +42,7 @@ TEST_CASE("cylinder: side and cap hits with their normals", "[intersect][cylinde
     CHECK(h.normal == glm::vec3(0.0f, -1.0f, 0.0f));
 }
 
-TEST_CASE("cylinder: miss above, beside, behind; tangent to the side", "[intersect][cylinder]") {
+TEST_CASE("cylinder: miss above, beside, behind, tangent to the side", "[intersect][cylinder]") {
     RayHit h;
     h.t = 8.0f;
     CHECK_FALSE(collision::intersect(Ray{{-5.0f, 1.5f, 0.0f}, {1.0f, 0.0f, 0.0f}}, cyl, h));

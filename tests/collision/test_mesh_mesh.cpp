@@ -144,7 +144,7 @@ TEST_CASE("mesh-mesh: SAT is for convex meshes only (a concave pair it gets wron
     CHECK(overlap_sat(ring, core).hit);
 }
 
-TEST_CASE("mesh-mesh: bad meshes are rejected with a message; empty meshes never touch", "[mesh]") {
+TEST_CASE("mesh-mesh: bad meshes are rejected with a message, empty meshes never touch", "[mesh]") {
     TriangleMesh broken = testing::box_mesh({1, 1, 1});
     broken.indices.push_back({0, 1, 99});
     const TriangleMesh box = testing::box_mesh({1, 1, 1});

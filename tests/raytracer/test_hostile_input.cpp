@@ -125,7 +125,7 @@ TEST_CASE("hostile input: stale temporaries of dead writers are swept at the nex
     CHECK(fs::exists(dir.path() / "x.png"));
 }
 
-TEST_CASE("hostile input: an OBJ gives the same mesh with \\n, \\r\\n or \\r line endings", "[scene][obj]") {
+TEST_CASE("hostile input: an OBJ gives the same mesh with LF, CRLF or CR line endings", "[scene][obj]") {
     const std::string lf =
         "# a quad and a pentagon\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0.5 2 0\nvn 0 0 1\n\n"
         "f 1//1 2//1 3//1 4//1\nf 4//1 3//1 5//1 1//1 2//1\n";

@@ -64,7 +64,7 @@ TEST_CASE("diff: the simplified perceptual metric ignores fine noise more than a
     CHECK(ms.share_delta_e_over_jnd == 1.0);  // a 0.05 shift at 0.3 grey is ~ 4 delta E
 }
 
-TEST_CASE("diff: sizes must match; non-finite pixels count as differing", "[image][diff]") {
+TEST_CASE("diff: sizes must match, non-finite pixels count as differing", "[image][diff]") {
     CHECK_THROWS_AS(compare_images(Image(4, 4), Image(4, 5)), InputError);
     Image a = flat(4, 4, glm::vec3(0.5f)), b = a;
     b.at(1, 1).g = std::nanf("");

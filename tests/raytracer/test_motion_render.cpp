@@ -130,8 +130,8 @@ TEST_CASE("motion render: fast motion cuts the shutter into time slices, which k
     std::uniform_real_distribution<float> u(-3.0f, 3.0f), a(0.0f, 6.2831853f);
     for (int i = 0; i < 72; ++i) {
         const float x = u(rng), z = u(rng), angle = a(rng);
-        const std::string at = "[" + std::to_string(x) + ", 0.2, " + std::to_string(z) + "]";
-        const std::string to = "[" + std::to_string(x + 3.2f * std::cos(angle)) + ", 0.2, " + std::to_string(z + 3.2f * std::sin(angle)) + "]";
+        const std::string at = std::string("[") + std::to_string(x) + ", 0.2, " + std::to_string(z) + "]";
+        const std::string to = std::string("[") + std::to_string(x + 3.2f * std::cos(angle)) + ", 0.2, " + std::to_string(z + 3.2f * std::sin(angle)) + "]";
         if (i < 64)
             objects += R"(, { "type": "sphere", "radius": 0.2, "material": "m", "transform": [{ "translate": )" + at +
                        R"( }], "motion": { "close": [{ "translate": )" + to + " }] } }";

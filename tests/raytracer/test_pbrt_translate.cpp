@@ -234,7 +234,7 @@ TEST_CASE("pbrt film, sampler, integrator and pixel filter", "[pbrt]") {
     CHECK(box.doc["film"]["filter"] == json({{"type", "box"}, {"radius", 0.5}}));
 }
 
-TEST_CASE("pbrt warnings: one per kind, naming the first place; --strict makes them errors", "[pbrt]") {
+TEST_CASE("pbrt warnings: one per kind, naming the first place, --strict makes them errors", "[pbrt]") {
     const TempDir dir;
     const std::string text = world_with("Shape \"curve\" \"point3 P\" [0 0 0 1 1 1 2 2 2 3 3 3]\nShape \"curve\"\n"
                                         "Shape \"sphere\" \"float zmax\" 0.5 \"float frobs\" 2\nMakeNamedMedium \"fog\" \"string type\" \"homogeneous\"");

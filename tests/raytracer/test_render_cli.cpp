@@ -174,7 +174,7 @@ TEST_CASE("render cli: Ctrl-C writes the finished samples, says so, and exits 13
     CHECK(files == 2);
 }
 
-TEST_CASE("render cli: film.exposure and tone_curve change only 8-bit output; a flipped light is warned about", "[render][cli][display]") {
+TEST_CASE("render cli: film.exposure and tone_curve change only 8-bit output, a flipped light is warned about", "[render][cli][display]") {
     const fs::path dir = fresh_dir("display");
     auto write = [&](const std::string& name, const std::string& film_extra, const std::string& light_edges) {
         std::ofstream(dir / name) << R"({

@@ -107,7 +107,7 @@ TEST_CASE("texture mapping: scene keys, their errors, and the encoding of an 8-b
                Catch::Contains("materials.m.albedo.checker.uv_scale[1]: must not be 0"));
 }
 
-TEST_CASE("pbrt textures: imagemap scale, invert, uscale..vdelta, encoding; scale of an image; checkerboard's uv", "[pbrt][texture]") {
+TEST_CASE("pbrt textures: imagemap scale, invert, uscale..vdelta, encoding, scale of an image, checkerboard's uv", "[pbrt][texture]") {
     const TempDir dir;
     write_image(Image(4, 4), dir.path() / "t.png");
     write_image(Image(4, 4), dir.path() / "t.exr");

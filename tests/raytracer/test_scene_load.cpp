@@ -130,7 +130,7 @@ TEST_CASE("scenes: one OBJ used by two objects is loaded once", "[scene][obj]") 
     CHECK_FALSE(scene.objects[1].transform.identity);
 }
 
-TEST_CASE("obj: polygons become fans; normals kept, and split where a vertex has two", "[scene][obj]") {
+TEST_CASE("obj: polygons become fans, normals kept, and split where a vertex has two", "[scene][obj]") {
     TempDir dir;
     // A unit square as one quad whose corners carry two different normals at vertex 1.
     const auto file = dir.write("quad.obj",

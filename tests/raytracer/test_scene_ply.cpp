@@ -58,7 +58,7 @@ const std::string kXyz = "property float x\nproperty float y\nproperty float z\n
 
 }  // namespace
 
-TEST_CASE("ply: ASCII, little- and big-endian binary give the same mesh; a quad is two triangles", "[scene][ply]") {
+TEST_CASE("ply: ASCII, little- and big-endian binary give the same mesh, a quad is two triangles", "[scene][ply]") {
     const Mesh a = parse_ply(quad_ply("ascii"), "a.ply");
     REQUIRE(a.triangles.indices.size() == 2);
     CHECK(a.triangles.indices[0] == glm::uvec3(0, 1, 2));

@@ -109,7 +109,7 @@ TEST_CASE("families: the icosphere is closed and oriented outward", "[stability]
     }
 }
 
-TEST_CASE("families: same seed, same cases; rays from inside the closed meshes start inside",
+TEST_CASE("families: same seed, same cases, rays from inside the closed meshes start inside",
           "[stability][reference]") {
     const auto a = make_cases<collision::Sphere>(Family::Grazing, 100, 42);
     const auto b = make_cases<collision::Sphere>(Family::Grazing, 100, 42);
