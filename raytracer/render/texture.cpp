@@ -62,7 +62,7 @@ glm::vec3 eval_texture(const Texture& t, const glm::vec2& surface_uv) {
     const glm::vec3 v = bilinear(t, uv);
     if (t.multiply == glm::vec3(1.0f) && !t.invert) return v;
     const glm::vec3 scaled = t.multiply * v;
-    return glm::clamp(t.invert ? glm::vec3(1.0f) - scaled : scaled, glm::vec3(0.0f), glm::vec3(t.max_value));
+    return glm::clamp(t.invert ? glm::vec3(1.0f) - scaled : scaled, glm::vec3(t.min_value), glm::vec3(t.max_value));
 }
 
 glm::vec2 hit_uv(const Scene& scene, const SurfaceHit& hit) {

@@ -57,6 +57,9 @@ void check_values(const Image& image, TextureUse use, const ImageFail& fail) {
         for (int k = 0; k < 3; ++k) {
             if (use == TextureUse::Emission) {
                 if (!(p[k] >= 0.0f) || !std::isfinite(p[k])) fail("an emission texture's values must be finite and >= 0");
+            } else if (use == TextureUse::BumpMap) {
+                // A height in world units, of either sign (a .exr displacement map's).
+                if (!std::isfinite(p[k])) fail("a bump map's values must be finite");
             } else if (!(p[k] >= 0.0f && p[k] <= 1.0f)) {
                 fail(std::string(what) + " texture's values must lie in [0, 1]");
             }
@@ -101,7 +104,7 @@ void read_image_texture(const scene_json::Node& im, TextureUse use, const std::v
         else w->fail("unknown wrap mode \"" + wrap + "\" (known: repeat, clamp, mirror)");
     }
     read_uv_mapping(im, t);
-    if (auto m = im.find("multiply")) t.multiply = m->value().is_number() ? glm::vec3(m->number_at_least(0.0f, true)) : m->vec3_at_least(0.0f);
+    if (auto m = im.find("multiply")) t.multiply = m->value().is_number() ? glm::vec3(m->number()) : m->vec3();
     if (auto inv = im.find("invert")) {
         t.invert = inv->boolean();
         // The emission light's texel sampling and its mean assume the texels are the radiance.
@@ -116,7 +119,11 @@ Texture image_texture(const std::string& relative, const std::filesystem::path& 
     Texture t;
     t.kind = Texture::Kind::Image;
     t.linear_data = linear.value_or(is_data(use));
-    t.max_value = use == TextureUse::Emission ? std::numeric_limits<float>::infinity() : 1.0f;
+    // The parameter's range, which a multiplied or inverted value is kept in: a bump map's height
+    // is any number (pbrt's displacement may be negative), an emission any radiance.
+    constexpr float inf = std::numeric_limits<float>::infinity();
+    t.min_value = use == TextureUse::BumpMap ? -inf : 0.0f;
+    t.max_value = use == TextureUse::Emission || use == TextureUse::BumpMap ? inf : 1.0f;
     std::error_code ec;
     t.image_file = std::filesystem::weakly_canonical(path, ec);
     const bool srgb8 = is_8bit_srgb(t.image_file);  // .png, .jpg or .tga
@@ -167,7 +174,7 @@ glm::vec3 texture_mean(const Texture& t) {
     for (const glm::vec3& p : t.image->pixels) {
         glm::vec3 v = t.multiply * p;
         if (t.invert) v = glm::vec3(1.0f) - v;
-        sum += glm::dvec3(glm::clamp(v, glm::vec3(0.0f), glm::vec3(t.max_value)));
+        sum += glm::dvec3(glm::clamp(v, glm::vec3(t.min_value), glm::vec3(t.max_value)));
     }
     return glm::vec3(sum / static_cast<double>(t.image->pixels.size()));
 }

@@ -295,13 +295,27 @@ MaterialResult MaterialTranslator::translate(const Statement& s, const std::map<
         for (const Param& q : p.params) q.used = true;
         m = {{"type", "diffuse"}, {"albedo", rgb_json(glm::dvec3(0.5))}};
     }
-    if (p.has("displacement")) {
-        p.find("displacement");
-        diag_.warn(s.where, "displacement", what + ": \"displacement\" is not supported (ignored)");
+    // pbrt-v4's bump and normal maps, on any material, are ours (scenes/README.md, "Textures"):
+    // a displacement texture is the height in world units along the shading normal (bump_scale 1),
+    // a normal map an image read as linear data, as pbrt-v4 reads it.
+    {
+        std::string tex;
+        p.get_float_or_texture("displacement", tex, diag_);  // a constant displacement tilts nothing
+        if (!tex.empty()) {
+            const auto it = float_textures_.find(tex);
+            if (it == float_textures_.end())
+                diag_.fail(s.where, what + ": \"displacement\": no float texture named \"" + excerpt(tex) + "\" (define it with Texture before the material)");
+            if (it->second.is_object() && it->second.contains("image")) m["bump_map"] = it->second;
+            else if (it->second.is_object())
+                diag_.warn(s.where, "displacement pattern", what + ": a \"displacement\" that is not an image (a checker has no slope to bump with) is ignored");
+        }
     }
-    if (p.has("normalmap")) {
-        p.find("normalmap");
-        diag_.warn(s.where, "normalmap", what + ": \"normalmap\" is not supported (ignored)");
+    if (const std::string normal_map = p.get_string("normalmap", "", diag_); !normal_map.empty()) {
+        std::error_code ec;
+        if (!std::filesystem::is_regular_file(files_.resolve(normal_map), ec))
+            diag_.fail(s.where, what + ": \"normalmap\" image \"" + excerpt(normal_map) + "\" not found (looked for " + files_.resolve(normal_map).string() + ")");
+        json image{{"file", files_.json_path(normal_map)}};
+        m["normal_map"] = {{"image", image}};
     }
     p.warn_unused(what, diag_);
     return out;

@@ -164,8 +164,6 @@ void MaterialTranslator::define_texture(const std::string& name, const std::stri
             glm::dvec3 m = o["image"].contains("multiply") ? glm::dvec3(o["image"]["multiply"][0], o["image"]["multiply"][1], o["image"]["multiply"][2])
                                                            : glm::dvec3(1.0);
             m *= k.is_number() ? glm::dvec3(k.get<double>()) : glm::dvec3(k[0].get<double>(), k[1].get<double>(), k[2].get<double>());
-            if (glm::any(glm::lessThan(m, glm::dvec3(0.0))))
-                diag_.fail(s.where, what + ": a negative scale of an image texture (our textures take factors >= 0)");
             o["image"]["multiply"] = rgb_json(m);
             return o;
         };
@@ -231,10 +229,7 @@ void MaterialTranslator::define_texture(const std::string& name, const std::stri
                     if (is_float) image["encoding"] = "sRGB";
                 }
             }
-            if (const double k = p.get_float("scale", 1.0, diag_); k != 1.0) {
-                if (k < 0.0) diag_.fail(s.where, what + ": a negative \"scale\" (our textures take factors >= 0)");
-                image["multiply"] = rgb_json(glm::dvec3(k));
-            }
+            if (const double k = p.get_float("scale", 1.0, diag_); k != 1.0) image["multiply"] = rgb_json(glm::dvec3(k));
             if (p.get_bool("invert", false, diag_)) image["invert"] = true;
             uv_mapping(image);
             out = json{{"image", image}};

@@ -108,12 +108,13 @@ struct Texture {
     bool linear_data = false;
     // Both kinds, as pbrt-v4's uv mapping and image texture have them: a lookup at uv reads the
     // pattern at (uv_scale.x u + uv_offset.x, uv_scale.y v + uv_offset.y); an image's value is then
-    // multiplied by `multiply`, turned to 1 - value with `invert`, and kept in [0, max_value] (the
-    // parameter's range). The defaults change nothing.
+    // multiplied by `multiply` (any sign), turned to 1 - value with `invert`, and kept in
+    // [min_value, max_value] (the parameter's range: a bump map's height has none). The defaults
+    // change nothing.
     glm::vec2 uv_scale{1.0f}, uv_offset{0.0f};
     glm::vec3 multiply{1.0f};
     bool invert = false;
-    float max_value = 1.0f;
+    float min_value = 0.0f, max_value = 1.0f;
 };
 
 struct Material {

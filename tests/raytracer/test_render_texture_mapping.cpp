@@ -97,8 +97,14 @@ TEST_CASE("texture mapping: scene keys, their errors, and the encoding of an 8-b
                Catch::Contains("materials.m.albedo.image.uv_scale[0]: must not be 0"));
     CHECK_THAT(load_error(dir, mapping_scene(R"({ "image": { "file": "grey.png", "uv_offset": [1] } })")),
                Catch::Contains("materials.m.albedo.image.uv_offset: must be an array of 2 numbers"));
-    CHECK_THAT(load_error(dir, mapping_scene(R"({ "image": { "file": "grey.png", "multiply": -1 } })")),
-               Catch::Contains("materials.m.albedo.image.multiply: must be >= 0"));
+    // A negative factor: an albedo keeps 0, a bump map's height turns over (pbrt's displacement).
+    const Scene neg = load_scene(dir.write("n.json", R"({ "camera": { "position": [0, 0, 5], "look_at": [0, 0, 0] }, "film": { "width": 4, "height": 4 },
+        "materials": { "m": { "type": "diffuse", "albedo": { "image": { "file": "grey.png", "multiply": -1 } },
+                              "bump_map": { "image": { "file": "grey.png", "multiply": -2 } } } }, "objects": [] })"));
+    CHECK(eval_texture(neg.textures.at(0), {0.25f, 0.5f}) == glm::vec3(0.0f));
+    CHECK(eval_texture(neg.textures.at(1), {0.25f, 0.5f}).x == Approx(-2.0f * 64.0f / 255.0f));
+    CHECK_THAT(load_error(dir, mapping_scene(R"({ "image": { "file": "grey.png", "multiply": "x" } })")),
+               Catch::Contains("materials.m.albedo.image.multiply"));
     CHECK_THAT(load_error(dir, mapping_scene(R"({ "image": { "file": "grey.png", "encoding": "gamma" } })")),
                Catch::Contains("materials.m.albedo.image.encoding: must be \"sRGB\" or \"linear\""));
     CHECK_THAT(load_error(dir, mapping_scene(R"([0.5, 0.5, 0.5], "emission": { "image": { "file": "grey.png", "invert": true } })")),
@@ -137,4 +143,29 @@ TEST_CASE("pbrt textures: imagemap scale, invert, uscale..vdelta, encoding, scal
     // And the whole of it loads: the JSON keys are the loader's.
     std::vector<std::string> warnings;
     CHECK_NOTHROW(load_pbrt_scene(dir.path() / "scene.pbrt", false, warnings));
+}
+
+TEST_CASE("pbrt materials: \"displacement\" is our bump map, \"normalmap\" our normal map", "[pbrt][texture]") {
+    const TempDir dir;
+    write_image(Image(4, 4), dir.path() / "bump.png");
+    write_image(Image(4, 4), dir.path() / "n.png");
+    const auto c = sweeptrace::test::convert_text(dir,
+        "WorldBegin\n"
+        "Texture \"b\" \"float\" \"imagemap\" \"string filename\" \"bump.png\" \"float scale\" -0.01\n"
+        "Texture \"k\" \"float\" \"checkerboard\"\n"
+        "Material \"coateddiffuse\" \"texture displacement\" \"b\" \"string normalmap\" \"n.png\"\nShape \"sphere\"\n"
+        "Material \"diffuse\" \"float displacement\" 0.5\nShape \"sphere\"\n"
+        "Material \"diffuse\" \"texture displacement\" \"k\"\nShape \"sphere\"\n");
+    auto mat = [&](int i) { return c.doc["materials"][c.doc["objects"][i]["material"].get<std::string>()]; };
+    // pbrt decodes the 8-bit height as sRGB and multiplies it by its scale, in world units.
+    CHECK(mat(0)["bump_map"] == json({{"image", {{"file", "bump.png"}, {"encoding", "sRGB"}, {"multiply", {-0.01, -0.01, -0.01}}}}}));
+    CHECK(mat(0)["normal_map"] == json({{"image", {{"file", "n.png"}}}}));
+    CHECK_FALSE(mat(1).contains("bump_map"));  // a constant height tilts nothing
+    CHECK_FALSE(mat(2).contains("bump_map"));
+    REQUIRE(c.warnings.size() == 1);
+    CHECK(c.warnings[0].find("a checker has no slope") != std::string::npos);
+    std::vector<std::string> warnings;
+    const Scene s = load_pbrt_scene(dir.path() / "scene.pbrt", false, warnings);
+    CHECK(s.materials.at(s.objects.at(0).material).bump_texture >= 0);
+    CHECK(s.materials.at(s.objects.at(0).material).normal_texture >= 0);
 }
