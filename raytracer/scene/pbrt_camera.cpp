@@ -78,7 +78,7 @@ void write_camera_and_film(WorldContext& w, std::string& film_filename) {
 
     // Film.
     long long xres = 1280, yres = 720;
-    double iso = 100.0;
+    double iso = 100.0, film_scale = 1.0, film_exposure = -1.0;
     film_filename = "pbrt.exr";
     if (sc.film) {
         const Statement& s = *sc.film;
@@ -90,6 +90,10 @@ void write_camera_and_film(WorldContext& w, std::string& film_filename) {
         yres = clamped(d, s.where, "Film yresolution", p.get_int("yresolution", 720, d), 1, 16384);
         film_filename = p.get_string("filename", "pbrt.exr", d);
         iso = p.get_float("iso", 100.0, d);
+        // Earlier pbrt-v4 (and pbrt-v3) films: "scale" multiplies every pixel, and "exposuretime"
+        // stands where the camera's shutter interval stands now; scenes of that time still use them.
+        film_scale = p.get_float("scale", 1.0, d);
+        film_exposure = p.get_float("exposuretime", -1.0, d);
         for (const char* q : {"cropwindow", "pixelbounds", "whitebalance", "sensor", "maxcomponentvalue"})
             if (p.has(q)) {
                 p.find(q);
@@ -112,15 +116,22 @@ void write_camera_and_film(WorldContext& w, std::string& film_filename) {
         const std::string what = "Sampler \"" + excerpt(s.type) + "\"";
         if (s.type == "stratified") {
             spp = p.get_int("xsamples", 4, d) * p.get_int("ysamples", 4, d);
-            p.find("jitter");
+            // Without jitter every sample sits at its stratum's centre: a biased (aliased) image,
+            // not the one our sampler converges to.
+            if (!p.get_bool("jitter", true, d))
+                d.warn(s.where, "sampler unjittered", what + ": \"jitter\" false (samples at stratum centres) is not reproduced: jittered samples instead");
         } else {
             spp = p.get_int("pixelsamples", 16, d);
         }
+        // Every pbrt-v4 sampler of unbiased, well-distributed samples (halton, pmj02bn, the Sobol
+        // variants, jittered stratified) estimates the same image; ours, an Owen-scrambled Sobol
+        // sampler, is one more of them: other noise, the same converged image, nothing to warn.
         if (s.type == "independent") film["sampler"] = "independent";
         else {
             film["sampler"] = "sobol";
-            if (s.type != "sobol" && s.type != "zsobol" && s.type != "paddedsobol")
-                d.warn(s.where, "sampler " + s.type, what + " is approximated by our Owen-scrambled Sobol sampler");
+            const bool known = s.type == "sobol" || s.type == "zsobol" || s.type == "paddedsobol" || s.type == "halton" ||
+                               s.type == "pmj02bn" || s.type == "stratified";
+            if (!known) d.warn(s.where, "sampler " + s.type, what + " is not a pbrt-v4 sampler: our Owen-scrambled Sobol sampler instead");
             p.find("randomization");
         }
         if (const long long seed = p.get_int("seed", -1, d); seed >= 0) w.doc["seed"] = seed;
@@ -221,12 +232,12 @@ void write_camera_and_film(WorldContext& w, std::string& film_filename) {
     w.doc["film"] = film;
 
     // The sensor's imaging ratio (pbrt_world.hpp), applied to the emitters once they are written.
-    const double ratio = (shutter_close - shutter_open) * iso / 100.0;
+    const double ratio = (film_exposure >= 0.0 ? film_exposure : shutter_close - shutter_open) * iso / 100.0 * film_scale;
     if (ratio > 0.0 && std::isfinite(ratio)) {
         w.imaging_ratio = ratio;
     } else {
         d.warn(sc.film ? sc.film->where : cam_at, "imaging ratio",
-               "Film: exposure time (shutterclose - shutteropen) x iso / 100 is not positive, a black image in pbrt: 1 used instead");
+               "Film: exposure time (shutterclose - shutteropen) x iso / 100 (x scale) is not positive, a black image in pbrt: 1 used instead");
     }
 }
 

@@ -392,4 +392,27 @@ TEST_CASE("pbrt film: the sensor's imaging ratio (shutter time x iso / 100) mult
     CHECK(half.doc["lights"][1]["irradiance"] == a["lights"][1]["irradiance"]);
     const auto env = convert("Film \"rgb\" \"float iso\" 50\n", "LightSource \"infinite\" \"string filename\" \"sky.pfm\" \"float scale\" 3\n");
     CHECK(env.doc["background"]["environment"]["scale"].get<double>() == Approx(1.5));
+    // Films of earlier pbrt versions: "scale" multiplies the pixels, "exposuretime" is the shutter's.
+    const auto old = convert("Film \"rgb\" \"float scale\" 2 \"float exposuretime\" 0.25 \"float iso\" 400\n", constant);
+    CHECK(old.warnings.empty());
+    CHECK(old.doc["lights"][0]["intensity"] == rgb(2, 4, 6));
+}
+
+TEST_CASE("pbrt sampler: every pbrt-v4 sampler of the same image is our Sobol sampler, silently; an unjittered one is said", "[pbrt]") {
+    const TempDir dir;
+    for (const char* type : {"halton", "pmj02bn", "zsobol", "paddedsobol", "sobol"}) {
+        const auto c = convert_text(dir, std::string("Sampler \"") + type + "\" \"integer pixelsamples\" 8\nWorldBegin\n");
+        INFO(type);
+        CHECK(c.warnings.empty());
+        CHECK(c.doc["film"]["sampler"] == "sobol");
+        CHECK(c.doc["film"]["spp"] == 8);
+    }
+    const auto st = convert_text(dir, "Sampler \"stratified\" \"integer xsamples\" 2 \"integer ysamples\" 3\nWorldBegin\n");
+    CHECK(st.warnings.empty());
+    CHECK(st.doc["film"]["spp"] == 6);
+    const auto fixed = convert_text(dir, "Sampler \"stratified\" \"bool jitter\" false\nWorldBegin\n");
+    CHECK(has_warning(fixed.warnings, "\"jitter\" false"));
+    const auto other = convert_text(dir, "Sampler \"lowdiscrepancy\"\nWorldBegin\n");
+    CHECK(has_warning(other.warnings, "is not a pbrt-v4 sampler"));
+    CHECK(convert_text(dir, "Sampler \"independent\"\nWorldBegin\n").doc["film"]["sampler"] == "independent");
 }
