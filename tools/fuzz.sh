@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # A long fuzz run from the committed corpus: bash tools/fuzz.sh [SECONDS=600] [HARNESS...]
-# (harnesses: scene obj png pfm exr jpg hdr tga; default all, one after another). Uses the harnesses the main
+# (harnesses: scene obj ply pbrt png pfm exr jpg hdr tga; default all, one after another). Uses the harnesses the main
 # build made (build/tests/fuzz/project) or builds them with clang into build-fuzz; keeps what
 # each finds in build-fuzz/work/NAME and writes any crash to build-fuzz/artifacts/. A crash that
 # is a real bug becomes a regression file: copy it into tests/fuzz/corpus/NAME/ with the fix.
@@ -8,7 +8,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 seconds=${1:-600}
 shift || true
-harnesses=("${@:-scene obj png pfm exr jpg hdr tga}")
+harnesses=("${@:-scene obj ply pbrt png pfm exr jpg hdr tga}")
 read -r -a harnesses <<< "${harnesses[*]}"
 bin=build/tests/fuzz/project
 if [ ! -x "$bin/fuzz_scene" ]; then
