@@ -42,6 +42,7 @@ class PassRenderer {
 public:
     PassRenderer(const Scene& scene, const Accel& accel, const RenderOptions& opt, PlantedDefect defect)
         : opt_(opt),
+          clamp_sample_(scene.film.clamp_sample),
           budget_(opt.budget_clock, opt.time_budget),
           width_(scene.film.width),
           height_(scene.film.height),
@@ -177,8 +178,8 @@ private:
                 const float fy = static_cast<float>(y) + film.dy;
                 // Drawn only with a shutter, so still scenes take exactly the numbers they did.
                 const float time = camera_.has_shutter() ? camera_.shutter_fraction(sampler.get1d(sample_dim::kTime)) : 0.0f;
-                glm::vec3 l = film.weight *
-                              integrator_.radiance(camera_.generate(fx, fy, lens.x, lens.y), sampler, rays, records, time);
+                glm::vec3 l = film.weight * limited(integrator_.radiance(camera_.generate(fx, fy, lens.x, lens.y), sampler,
+                                                                         rays, records, time));
                 if (!collision::finite(l)) {
                     l = glm::vec3(0.0f);
                     ++nonfinite;
@@ -190,7 +191,16 @@ private:
         if (nonfinite != 0) nonfinite_.fetch_add(nonfinite, std::memory_order_relaxed);
     }
 
+    // film.clamp_sample: the whole sample scaled so its largest component is at most the limit,
+    // as pbrt-v4's film does with maxcomponentvalue (before the filter's weight); off, untouched.
+    glm::vec3 limited(const glm::vec3& l) const {
+        if (!(clamp_sample_ > 0.0f)) return l;
+        const float m = std::max(l.x, std::max(l.y, l.z));
+        return m > clamp_sample_ ? l * (clamp_sample_ / m) : l;
+    }
+
     const RenderOptions& opt_;
+    float clamp_sample_ = 0.0f;
     TimeBudget budget_;
     int width_, height_, tiles_x_, tiles_y_;
     LightSet lights_;

@@ -94,7 +94,8 @@ void write_camera_and_film(WorldContext& w, std::string& film_filename) {
         // stands where the camera's shutter interval stands now; scenes of that time still use them.
         film_scale = p.get_float("scale", 1.0, d);
         film_exposure = p.get_float("exposuretime", -1.0, d);
-        for (const char* q : {"cropwindow", "pixelbounds", "whitebalance", "sensor", "maxcomponentvalue"})
+        if (const double m = p.get_float("maxcomponentvalue", 0.0, d); m > 0.0 && std::isfinite(m)) film["clamp_sample"] = m;
+        for (const char* q : {"cropwindow", "pixelbounds", "whitebalance", "sensor"})
             if (p.has(q)) {
                 p.find(q);
                 d.warn(s.where, std::string("film ") + q, what + ": \"" + q + "\" is not supported (ignored)");

@@ -69,6 +69,9 @@ struct Film {
     // three or more segments (light reaching the camera after two or more bounces) has its largest
     // component limited to this. 0 = off, the unbiased estimator.
     float clamp_indirect = 0.0f;
+    // pbrt-v4's Film "maxcomponentvalue": each camera sample's whole radiance (direct light too)
+    // scaled down so its largest component is at most this. Biased, opt-in; 0 = off.
+    float clamp_sample = 0.0f;
 };
 
 struct Background {
