@@ -398,7 +398,7 @@ TEST_CASE("pbrt film: the sensor's imaging ratio (shutter time x iso / 100) mult
     CHECK(old.doc["lights"][0]["intensity"] == rgb(2, 4, 6));
 }
 
-TEST_CASE("pbrt sampler: every pbrt-v4 sampler of the same image is our Sobol sampler, silently; an unjittered one is said", "[pbrt]") {
+TEST_CASE("pbrt sampler: every pbrt-v4 sampler of the same image is our Sobol sampler, silently, an unjittered one is said", "[pbrt]") {
     const TempDir dir;
     for (const char* type : {"halton", "pmj02bn", "zsobol", "paddedsobol", "sobol"}) {
         const auto c = convert_text(dir, std::string("Sampler \"") + type + "\" \"integer pixelsamples\" 8\nWorldBegin\n");
