@@ -25,7 +25,8 @@ glm::vec3 rotate_y(const glm::vec3& d, float degrees) {
 // The map frame: d' = S R^-1 d, R the turn (about +Y by rotate_degrees, or any rotation), S =
 // diag(-1, 1, 1) when mirrored; and back, d = R S d'.
 glm::vec3 to_map_frame(const Background& bg, const glm::vec3& d) {
-    glm::vec3 m = bg.turned ? glm::transpose(bg.turn) * d : rotate_y(d, -bg.rotate_degrees);
+    // d * turn is turn^T d, the inverse rotation, without forming the transpose per lookup.
+    glm::vec3 m = bg.turned ? d * bg.turn : rotate_y(d, -bg.rotate_degrees);
     if (bg.mirror) m.x = -m.x;
     return m;
 }
@@ -63,11 +64,20 @@ int texel(float t, int n) { return std::clamp(static_cast<int>(t * static_cast<f
 
 }  // namespace
 
-glm::vec3 environment_radiance(const Background& bg, const glm::vec3& dir) {
+EnvironmentLookup look_up_environment(const Background& bg, const glm::vec3& dir) {
     const Image& img = *bg.environment;
+    EnvironmentLookup l;
+    l.local = to_map_frame(bg, dir);
     float u = 0.0f, v = 0.0f;
-    map_uv(bg, to_map_frame(bg, dir), u, v);
-    return bg.scale * img.at(texel(u, img.width), texel(v, img.height));
+    map_uv(bg, l.local, u, v);
+    l.col = texel(u, img.width);
+    l.row = texel(v, img.height);
+    return l;
+}
+
+glm::vec3 environment_radiance(const Background& bg, const glm::vec3& dir) {
+    const EnvironmentLookup l = look_up_environment(bg, dir);
+    return bg.scale * bg.environment->at(l.col, l.row);
 }
 
 void EnvironmentLight::Distribution1D::build(std::vector<float> weights) {
@@ -131,8 +141,9 @@ bool EnvironmentLight::sample(float u1, float u2, glm::vec3& dir, float& pdf, gl
         // The density and radiance of the texel dir maps back to (the sampled one but for rounding
         // on a texel's edge), so sample(), pdf() and a ray escaping along dir agree exactly.
         dir = from_map_frame(*bg_, equal_area_direction(u, v));
-        pdf = this->pdf(dir);
-        radiance = environment_radiance(*bg_, dir);
+        const EnvironmentLookup l = look_up_environment(*bg_, dir);  // one lookup for both
+        pdf = density(l);
+        radiance = bg_->scale * bg_->environment->at(l.col, l.row);
         return pdf > 0.0f && std::isfinite(pdf);
     }
     const float theta = v * kPi, phi = (u - 0.5f) * 2.0f * kPi;
@@ -146,15 +157,14 @@ bool EnvironmentLight::sample(float u1, float u2, glm::vec3& dir, float& pdf, gl
     return pdf > 0.0f && std::isfinite(pdf);
 }
 
-float EnvironmentLight::pdf(const glm::vec3& dir) const {
-    float u = 0.0f, v = 0.0f;
-    const glm::vec3 local = to_map_frame(*bg_, dir);
-    map_uv(*bg_, local, u, v);
-    const int row = texel(v, height_), col = texel(u, width_);
-    if (marginal_.f[static_cast<std::size_t>(row)] <= 0.0f) return 0.0f;
-    const float p_uv = marginal_.density(row) * rows_[static_cast<std::size_t>(row)].density(col);
+float EnvironmentLight::pdf(const glm::vec3& dir) const { return density(look_up_environment(*bg_, dir)); }
+
+float EnvironmentLight::density(const EnvironmentLookup& l) const {
+    if (marginal_.f[static_cast<std::size_t>(l.row)] <= 0.0f) return 0.0f;
+    const float p_uv = marginal_.density(l.row) * rows_[static_cast<std::size_t>(l.row)].density(l.col);
     if (is_equal_area(*bg_)) return p_uv / (4.0f * kPi);
     // From x and z, not sqrt(1 - y^2), which cancels near the poles (1 % off at theta ~ 0.01).
+    const glm::vec3& local = l.local;
     const float sin_theta = std::sqrt(local.x * local.x + local.z * local.z) / glm::length(local);
     if (!(sin_theta > 0.0f)) return 0.0f;
     return p_uv / (2.0f * kPi * kPi * sin_theta);

@@ -4,10 +4,11 @@
 // its MIS compensation). Two image layouts (Background::mapping), one map frame.
 //
 // Map frame. A world direction d is first turned into the map's frame by the inverse of the
-// background's rotation about +Y (a right-handed rotation by rotate_degrees, like a transform's
-// rotate about [0, 1, 0]), then, when mirrored, reflected by S = diag(-1, 1, 1) (x negated after
-// the turn): d' = S R_y(-rotate) d, and back d = R_y(rotate) S d'. S is not a rotation: it is
-// what pbrt-v4's equirect convention, the mirror image of ours, needs. Both layouts read (u, v)
+// background's turn R (a right-handed rotation about +Y by rotate_degrees, like a transform's
+// rotate about [0, 1, 0], or any rotation `turn` given as an axis and degrees), then, when
+// mirrored, reflected by S = diag(-1, 1, 1) (x negated after the turn): d' = S R^-1 d, and back
+// d = R S d'. S is not a rotation: it is what pbrt-v3's equirect convention, the mirror image of
+// ours, needs. Both layouts read (u, v)
 // in [0, 1]^2 with u along the columns left to right and v along the rows top to bottom (row 0 the
 // file's first), texel (floor(u W), floor(v H)) clamped to the image; radiance is that texel's
 // value (nearest, piecewise constant) times scale.
@@ -45,6 +46,14 @@
 
 namespace sweeptrace {
 
+// The texel (column, row) a world direction reads and the direction in the map's frame: the one
+// lookup radiance and density share.
+struct EnvironmentLookup {
+    glm::vec3 local{0.0f};
+    int col = 0, row = 0;
+};
+EnvironmentLookup look_up_environment(const Background& bg, const glm::vec3& dir);
+
 // Radiance of an Environment background along unit direction `dir` (scale included).
 glm::vec3 environment_radiance(const Background& bg, const glm::vec3& dir);
 
@@ -63,6 +72,8 @@ public:
     float pdf(const glm::vec3& dir) const;
 
 private:
+    // The solid-angle density at a looked-up direction (pdf() of it).
+    float density(const EnvironmentLookup& l) const;
     // One piecewise-constant 1D distribution: bins of width 1/n with weights f.
     struct Distribution1D {
         std::vector<float> f;
