@@ -1,6 +1,7 @@
 #pragma once
 // A linear-RGB float image, and reading/writing it by file extension.
 #include <filesystem>
+#include <string>
 #include <vector>
 
 #include <glm/vec3.hpp>
@@ -26,6 +27,10 @@ void write_image(const Image& image, const std::filesystem::path& path);
 // Reads .png, .jpg/.jpeg and .tga (sRGB decoded to linear), .pfm, .exr, .hdr (Radiance RGBE).
 // Throws InputError naming the file.
 Image read_image(const std::filesystem::path& path);
+
+// A file's extension in lower case, with its dot (".png" for a.PNG, "" for none): what the
+// readers and writers choose a format by.
+std::string lowercase_extension(const std::filesystem::path& path);
 
 // Whether read_image decodes `path` from sRGB-encoded codes, by its extension (case-insensitive):
 // .png (8- or 16-bit), .jpg, .jpeg, .tga. Their values are display values in [0, 1]: a texture

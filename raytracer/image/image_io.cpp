@@ -17,12 +17,6 @@ namespace {
 
 enum class Format { Png, Pfm, Exr, Hdr, Jpeg, Tga };
 
-std::string lowercase_extension(const std::filesystem::path& path) {
-    std::string ext = path.extension().string();
-    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
-    return ext;
-}
-
 Format format_of(const std::filesystem::path& path, const char* verb) {
     const std::string ext = lowercase_extension(path);
     if (ext == ".png") return Format::Png;
@@ -37,6 +31,12 @@ Format format_of(const std::filesystem::path& path, const char* verb) {
 }
 
 }  // namespace
+
+std::string lowercase_extension(const std::filesystem::path& path) {
+    std::string ext = path.extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    return ext;
+}
 
 bool is_8bit_srgb(const std::filesystem::path& path) {
     const std::string ext = lowercase_extension(path);

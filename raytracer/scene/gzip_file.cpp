@@ -3,22 +3,16 @@
 #include <zlib.h>
 
 #include <algorithm>
-#include <cctype>
 #include <limits>
 #include <new>
 
+#include "raytracer/image/image.hpp"
 #include "raytracer/input_error.hpp"
 #include "raytracer/scene/text_file.hpp"
 
 namespace sweeptrace {
 
 namespace {
-
-std::string lower_extension(const std::filesystem::path& file) {
-    std::string ext = file.extension().string();
-    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-    return ext;
-}
 
 // zlib counts in uInt (32 bits): larger spans are handed over in pieces of at most this.
 constexpr std::size_t kMaxStep = std::numeric_limits<uInt>::max();
@@ -40,10 +34,10 @@ public:
 
 }  // namespace
 
-bool is_gzip_name(const std::filesystem::path& file) { return lower_extension(file) == ".gz"; }
+bool is_gzip_name(const std::filesystem::path& file) { return lowercase_extension(file) == ".gz"; }
 
 std::string content_extension(const std::filesystem::path& file) {
-    return lower_extension(is_gzip_name(file) ? file.stem() : file);
+    return lowercase_extension(is_gzip_name(file) ? file.stem() : file);
 }
 
 std::string gunzip(std::string_view compressed, const std::string& name, const char* what, std::uintmax_t max_bytes) {

@@ -13,8 +13,9 @@
 // +x toward +y, v = theta / pi from +z; ours has +y up, u = 0.5 from -z, turning right-handed
 // toward +x; as maps of directions the two differ by (x, y, z)_pbrt = (z, -x, y)_ours, a mirror,
 // which our environment's "mirror" undoes. With the light's transform, the map's frame is written
-// as our "mirror" and "rotate" about +y when it is one, else the nearest such turn is used and the
-// warning says so.
+// as our "mirror" and "rotate": a number when the turn is about +y, else {axis, degrees} (a z-up
+// world's map, a tilted one); only a light transform that shears is no rotation, and then the
+// nearest turn about +y is used and the warning says so.
 #include <algorithm>
 #include <cmath>
 

@@ -1,6 +1,4 @@
 // pbrt-v4 textures and spectra as our JSON's values (the texture half of MaterialTranslator).
-#include <algorithm>
-#include <cctype>
 #include <cmath>
 #include <system_error>
 
@@ -38,19 +36,6 @@ std::string FileNames::json_path(const std::string& name) const {
 
 namespace {
 
-
-std::string lower_extension(const std::string& file) {
-    std::string ext = std::filesystem::path(file).extension().string();
-    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char ch) { return static_cast<char>(std::tolower(ch)); });
-    return ext;
-}
-
-// The formats our image reader holds display values in (sRGB-encoded codes): image.hpp's list.
-bool is_eight_bit(const std::string& ext) {
-    std::filesystem::path name("x");
-    name += ext;
-    return is_8bit_srgb(name);
-}
 bool is_linear_format(const std::string& ext) { return ext == ".exr" || ext == ".hdr" || ext == ".pfm"; }
 
 }  // namespace
@@ -201,13 +186,14 @@ void MaterialTranslator::define_texture(const std::string& name, const std::stri
     } else if (s.type == "imagemap") {
         const std::string file = p.get_string("filename", "", diag_);
         if (file.empty()) diag_.fail(s.where, what + ": needs \"string filename\"");
-        const std::string ext = lower_extension(file);
+        const std::string ext = lowercase_extension(file);
+        const bool eight_bit = is_8bit_srgb(file);  // image.hpp's list: display values, sRGB-coded
         std::error_code ec;
         if (!std::filesystem::is_regular_file(files_.resolve(file), ec))
             diag_.fail(s.where, what + ": image \"" + excerpt(file) + "\" not found (looked for " + files_.resolve(file).string() + ")");
         const std::string encoding = p.get_string("encoding", is_linear_format(ext) ? "linear" : "sRGB", diag_);
         const std::string wrap = p.get_string("wrap", "repeat", diag_);
-        if (!is_eight_bit(ext) && !is_linear_format(ext)) {
+        if (!eight_bit && !is_linear_format(ext)) {
             diag_.warn(s.where, "image format " + ext, what + ": image format \"" + excerpt(ext) +
                                                             "\" is not read (png, jpg, tga, exr, hdr, pfm are); a constant 0.5 instead");
             for (const char* q : {"scale", "invert", "mapping", "uscale", "vscale", "udelta", "vdelta", "v1", "v2"}) p.find(q);
@@ -221,7 +207,7 @@ void MaterialTranslator::define_texture(const std::string& name, const std::stri
                 diag_.warn(s.where, "wrap " + wrap, what + ": wrap \"" + excerpt(wrap) + "\" is not supported (repeat used)");
             // An 8-bit image's reading: ours by default is sRGB for colours and data for numbers;
             // pbrt's "encoding" (default sRGB for 8-bit files) says which, for either kind.
-            if (is_eight_bit(ext)) {
+            if (eight_bit) {
                 if (encoding == "sRGB" || encoding == "linear") {
                     if ((encoding == "linear") != is_float) image["encoding"] = encoding;
                 } else {
