@@ -22,7 +22,7 @@ Method, per RGB channel c of linear sRGB:
      at the ends).
   3. (eta_c, k_c) fitted to T_c: at normal incidence exactly (k_c from eta_c and T_c(0) in closed
      form), eta_c chosen to minimise the cosine-weighted squared error over theta in [0, 90).
-raytracer/scene/pbrt_conductor_fit.cpp repeats reduce_metal step for step (same grid, bracket and
+raytracer/scene/pbrt/pbrt_conductor_fit.cpp repeats reduce_metal step for step (same grid, bracket and
 constants) for a pbrt scene's own sampled eta/k: change the two together.
 Printed: the table, then per metal and channel the largest |R_rgb(theta) - T_c(theta)| over theta
 and the error of the cosine-weighted albedo (what a furnace would see).

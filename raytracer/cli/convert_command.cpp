@@ -1,5 +1,5 @@
 // `sweeptrace convert SCENE.pbrt [-o SCENE.json] [--strict]`: a pbrt-v4 scene translated to our
-// scene JSON (scene/pbrt_import.hpp), so what was understood can be read and edited. The JSON is
+// scene JSON (scene/pbrt/pbrt_import.hpp), so what was understood can be read and edited. The JSON is
 // loaded as `render` would load it before it is written (atomically: all or nothing), and its
 // relative file names start from the output's folder. Warnings (one per kind of thing
 // approximated or ignored) go to stderr; --strict makes the first one an error (exit 2).
@@ -14,7 +14,7 @@
 #include "raytracer/cli/report_text.hpp"
 #include "raytracer/input_error.hpp"
 #include "raytracer/scene/gzip_file.hpp"
-#include "raytracer/scene/pbrt_import.hpp"
+#include "raytracer/scene/pbrt/pbrt_import.hpp"
 
 namespace sweeptrace {
 

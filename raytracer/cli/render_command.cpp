@@ -30,7 +30,7 @@
 #include "raytracer/render/tone_map.hpp"
 #include "raytracer/scene/emitter_check.hpp"
 #include "raytracer/scene/load_scene.hpp"
-#include "raytracer/scene/pbrt_import.hpp"
+#include "raytracer/scene/pbrt/pbrt_import.hpp"
 
 namespace sweeptrace {
 

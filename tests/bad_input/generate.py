@@ -480,7 +480,7 @@ case("heatmap-is-symlink-to-a", 2, O + r"h\.png' is the image A 'a\.png'", "diff
      {"a.png": GOOD, "b.png": GOOD}, "symlink h.png a.png")
 
 
-# --- pbrt-v4 scenes (the importer, scene/pbrt_*): file:line, the fix, nothing written -------------
+# --- pbrt-v4 scenes (the importer, scene/pbrt/pbrt_*): file:line, the fix, nothing written -------------
 PBRT_OK = 'Film "rgb" "integer xresolution" 8 "integer yresolution" 8\nWorldBegin\n'
 
 

@@ -8,7 +8,7 @@
 
 #include "fuzz_input_file.hpp"
 #include "raytracer/input_error.hpp"
-#include "raytracer/scene/pbrt_import.hpp"
+#include "raytracer/scene/pbrt/pbrt_import.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     static const bool includes = [] {

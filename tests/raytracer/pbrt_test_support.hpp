@@ -2,13 +2,13 @@
 // pbrt scenes written for the tests: the text in a temporary folder, converted to our JSON (as
 // `sweeptrace convert` does, without loading it) or loaded as a Scene. The world is pbrt's either
 // way; a camera that keeps pbrt's orientation (the default) becomes our left-handed camera
-// (scene/pbrt_world.hpp); kFlipped starts a scene with `Scale -1 1 1`, a right-handed one.
+// (scene/pbrt/pbrt_world.hpp); kFlipped starts a scene with `Scale -1 1 1`, a right-handed one.
 #include <string>
 #include <vector>
 
 #include <nlohmann/json.hpp>
 
-#include "raytracer/scene/pbrt_import.hpp"
+#include "raytracer/scene/pbrt/pbrt_import.hpp"
 #include "scene_test_files.hpp"
 
 namespace sweeptrace::test {

@@ -1,5 +1,5 @@
-// The pbrt-v4 importer's lexical and parameter-list levels (scene/pbrt_tokenizer.hpp,
-// scene/pbrt_params.hpp), and the structure directives: every malformed input is an InputError
+// The pbrt-v4 importer's lexical and parameter-list levels (scene/pbrt/pbrt_tokenizer.hpp,
+// scene/pbrt/pbrt_params.hpp), and the structure directives: every malformed input is an InputError
 // naming file:line.
 #include <catch2/catch.hpp>
 
@@ -8,9 +8,9 @@
 
 #include "pbrt_test_support.hpp"
 #include "raytracer/input_error.hpp"
-#include "raytracer/scene/pbrt_params.hpp"
-#include "raytracer/scene/pbrt_spectra.hpp"
-#include "raytracer/scene/pbrt_tokenizer.hpp"
+#include "raytracer/scene/pbrt/pbrt_params.hpp"
+#include "raytracer/scene/pbrt/pbrt_spectra.hpp"
+#include "raytracer/scene/pbrt/pbrt_tokenizer.hpp"
 
 using namespace sweeptrace;
 using namespace sweeptrace::pbrt;

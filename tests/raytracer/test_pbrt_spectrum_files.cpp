@@ -1,5 +1,5 @@
-// pbrt-v4 spectrum files and sampled conductor spectra (scene/pbrt_spectra.hpp,
-// scene/pbrt_conductor_fit.hpp): the .spd format (numbers, `#` comments, pairs), its errors with
+// pbrt-v4 spectrum files and sampled conductor spectra (scene/pbrt/pbrt_spectra.hpp,
+// scene/pbrt/pbrt_conductor_fit.hpp): the .spd format (numbers, `#` comments, pairs), its errors with
 // the pbrt file:line, a file resolved from the main file's folder, and the conductor reduction,
 // which on pbrt-v4's own gold and brass tables gives our named metals' RGB eta and k.
 //
@@ -19,8 +19,8 @@
 #include "pbrt_test_support.hpp"
 #include "raytracer/input_error.hpp"
 #include "raytracer/scene/named_metals.hpp"
-#include "raytracer/scene/pbrt_conductor_fit.hpp"
-#include "raytracer/scene/pbrt_spectra.hpp"
+#include "raytracer/scene/pbrt/pbrt_conductor_fit.hpp"
+#include "raytracer/scene/pbrt/pbrt_spectra.hpp"
 
 using namespace sweeptrace;
 using namespace sweeptrace::pbrt;

@@ -1,5 +1,5 @@
 // The pbrt importer's transforms: each statement's matrix against one computed by hand, the split
-// into our JSON's steps, the camera's pose and handedness (scene/pbrt_world.hpp).
+// into our JSON's steps, the camera's pose and handedness (scene/pbrt/pbrt_world.hpp).
 #include <catch2/catch.hpp>
 
 #include <cmath>
@@ -10,7 +10,7 @@
 #include "pbrt_test_support.hpp"
 #include "raytracer/accel/accel.hpp"
 #include "raytracer/render/renderer.hpp"
-#include "raytracer/scene/pbrt_transform.hpp"
+#include "raytracer/scene/pbrt/pbrt_transform.hpp"
 #include "raytracer/scene/scene_transform.hpp"
 
 using namespace sweeptrace;

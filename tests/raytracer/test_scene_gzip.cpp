@@ -19,7 +19,7 @@
 #include "raytracer/scene/gzip_file.hpp"
 #include "raytracer/scene/load_scene.hpp"
 #include "raytracer/scene/obj_loader.hpp"
-#include "raytracer/scene/pbrt_import.hpp"
+#include "raytracer/scene/pbrt/pbrt_import.hpp"
 #include "raytracer/scene/ply_loader.hpp"
 #include "raytracer/scene/text_file.hpp"
 #include "scene_test_files.hpp"

@@ -19,8 +19,8 @@
 #include <glm/matrix.hpp>
 
 #include "raytracer/input_error.hpp"
-#include "raytracer/scene/pbrt_transform.hpp"
-#include "raytracer/scene/pbrt_world.hpp"
+#include "raytracer/scene/pbrt/pbrt_transform.hpp"
+#include "raytracer/scene/pbrt/pbrt_world.hpp"
 #include "raytracer/scene/scene_transform.hpp"
 
 namespace sweeptrace::pbrt {

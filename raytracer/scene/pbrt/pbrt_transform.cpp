@@ -1,4 +1,4 @@
-#include "raytracer/scene/pbrt_transform.hpp"
+#include "raytracer/scene/pbrt/pbrt_transform.hpp"
 
 #include <algorithm>
 #include <cmath>

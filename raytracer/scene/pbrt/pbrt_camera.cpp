@@ -16,8 +16,8 @@
 #include <glm/vector_relational.hpp>
 
 #include "raytracer/input_error.hpp"
-#include "raytracer/scene/pbrt_transform.hpp"
-#include "raytracer/scene/pbrt_world.hpp"
+#include "raytracer/scene/pbrt/pbrt_transform.hpp"
+#include "raytracer/scene/pbrt/pbrt_world.hpp"
 
 namespace sweeptrace::pbrt {
 

@@ -13,8 +13,8 @@
 #include <glm/mat4x4.hpp>
 #include <nlohmann/json.hpp>
 
-#include "raytracer/scene/pbrt_diagnostics.hpp"
-#include "raytracer/scene/pbrt_params.hpp"
+#include "raytracer/scene/pbrt/pbrt_diagnostics.hpp"
+#include "raytracer/scene/pbrt/pbrt_params.hpp"
 
 namespace sweeptrace::pbrt {
 

@@ -1,4 +1,4 @@
-#include "raytracer/scene/pbrt_parser.hpp"
+#include "raytracer/scene/pbrt/pbrt_parser.hpp"
 
 #include <charconv>
 #include <cmath>
@@ -10,8 +10,8 @@
 
 #include "raytracer/input_error.hpp"
 #include "raytracer/scene/gzip_file.hpp"
-#include "raytracer/scene/pbrt_tokenizer.hpp"
-#include "raytracer/scene/pbrt_transform.hpp"
+#include "raytracer/scene/pbrt/pbrt_tokenizer.hpp"
+#include "raytracer/scene/pbrt/pbrt_transform.hpp"
 #include "raytracer/scene/scene_transform.hpp"
 #include "raytracer/scene/text_file.hpp"
 

@@ -14,8 +14,8 @@
 
 #include <glm/vec3.hpp>
 
-#include "raytracer/scene/pbrt_diagnostics.hpp"
-#include "raytracer/scene/pbrt_tokenizer.hpp"
+#include "raytracer/scene/pbrt/pbrt_diagnostics.hpp"
+#include "raytracer/scene/pbrt/pbrt_tokenizer.hpp"
 
 namespace sweeptrace::pbrt {
 

@@ -9,8 +9,8 @@
 
 #include "raytracer/input_error.hpp"
 #include "raytracer/scene/named_metals.hpp"
-#include "raytracer/scene/pbrt_materials.hpp"
-#include "raytracer/scene/pbrt_spectra.hpp"
+#include "raytracer/scene/pbrt/pbrt_materials.hpp"
+#include "raytracer/scene/pbrt/pbrt_spectra.hpp"
 #include "raytracer/scene/text_file.hpp"
 
 namespace sweeptrace::pbrt {

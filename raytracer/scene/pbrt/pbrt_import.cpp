@@ -1,4 +1,4 @@
-#include "raytracer/scene/pbrt_import.hpp"
+#include "raytracer/scene/pbrt/pbrt_import.hpp"
 
 #include <charconv>
 #include <optional>
@@ -7,10 +7,10 @@
 #include "raytracer/input_error.hpp"
 #include "raytracer/scene/gzip_file.hpp"
 #include "raytracer/scene/load_scene_document.hpp"
-#include "raytracer/scene/pbrt_diagnostics.hpp"
-#include "raytracer/scene/pbrt_materials.hpp"
-#include "raytracer/scene/pbrt_parser.hpp"
-#include "raytracer/scene/pbrt_world.hpp"
+#include "raytracer/scene/pbrt/pbrt_diagnostics.hpp"
+#include "raytracer/scene/pbrt/pbrt_materials.hpp"
+#include "raytracer/scene/pbrt/pbrt_parser.hpp"
+#include "raytracer/scene/pbrt/pbrt_world.hpp"
 
 namespace sweeptrace {
 

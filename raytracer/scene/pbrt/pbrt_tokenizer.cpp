@@ -1,4 +1,4 @@
-#include "raytracer/scene/pbrt_tokenizer.hpp"
+#include "raytracer/scene/pbrt/pbrt_tokenizer.hpp"
 
 #include "raytracer/input_error.hpp"
 

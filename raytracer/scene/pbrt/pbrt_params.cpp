@@ -1,4 +1,4 @@
-#include "raytracer/scene/pbrt_params.hpp"
+#include "raytracer/scene/pbrt/pbrt_params.hpp"
 
 #include <charconv>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "raytracer/scene/pbrt_diagnostics.hpp"
+#include "raytracer/scene/pbrt/pbrt_diagnostics.hpp"
 
 #include <algorithm>
 #include <filesystem>

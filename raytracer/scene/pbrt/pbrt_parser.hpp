@@ -13,9 +13,9 @@
 #include <cstddef>
 #include <filesystem>
 
-#include "raytracer/scene/pbrt_diagnostics.hpp"
-#include "raytracer/scene/pbrt_materials.hpp"
-#include "raytracer/scene/pbrt_scene.hpp"
+#include "raytracer/scene/pbrt/pbrt_diagnostics.hpp"
+#include "raytracer/scene/pbrt/pbrt_materials.hpp"
+#include "raytracer/scene/pbrt/pbrt_scene.hpp"
 
 namespace sweeptrace::pbrt {
 

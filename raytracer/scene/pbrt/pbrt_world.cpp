@@ -1,4 +1,4 @@
-#include "raytracer/scene/pbrt_world.hpp"
+#include "raytracer/scene/pbrt/pbrt_world.hpp"
 
 #include <cmath>
 
@@ -7,7 +7,7 @@
 #include <glm/vector_relational.hpp>
 
 #include "raytracer/input_error.hpp"
-#include "raytracer/scene/pbrt_transform.hpp"
+#include "raytracer/scene/pbrt/pbrt_transform.hpp"
 
 namespace sweeptrace::pbrt {
 

@@ -26,8 +26,8 @@
 
 #include "raytracer/input_error.hpp"
 #include "raytracer/scene/load_image_file.hpp"
-#include "raytracer/scene/pbrt_transform.hpp"
-#include "raytracer/scene/pbrt_world.hpp"
+#include "raytracer/scene/pbrt/pbrt_transform.hpp"
+#include "raytracer/scene/pbrt/pbrt_world.hpp"
 
 namespace sweeptrace::pbrt {
 

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "raytracer/scene/pbrt_diagnostics.hpp"
+#include "raytracer/scene/pbrt/pbrt_diagnostics.hpp"
 
 namespace sweeptrace::pbrt {
 

@@ -1,4 +1,4 @@
-#include "raytracer/scene/pbrt_conductor_fit.hpp"
+#include "raytracer/scene/pbrt/pbrt_conductor_fit.hpp"
 
 #include <algorithm>
 #include <array>
@@ -7,7 +7,7 @@
 #include <limits>
 #include <numbers>
 
-#include "raytracer/scene/pbrt_spectra.hpp"
+#include "raytracer/scene/pbrt/pbrt_spectra.hpp"
 
 namespace sweeptrace::pbrt {
 

@@ -1,4 +1,4 @@
-#include "raytracer/scene/pbrt_spectra.hpp"
+#include "raytracer/scene/pbrt/pbrt_spectra.hpp"
 
 #include <charconv>
 #include <cmath>

@@ -14,9 +14,9 @@
 #include <glm/vec3.hpp>
 #include <nlohmann/json.hpp>
 
-#include "raytracer/scene/pbrt_conductor_fit.hpp"
-#include "raytracer/scene/pbrt_diagnostics.hpp"
-#include "raytracer/scene/pbrt_scene.hpp"
+#include "raytracer/scene/pbrt/pbrt_conductor_fit.hpp"
+#include "raytracer/scene/pbrt/pbrt_diagnostics.hpp"
+#include "raytracer/scene/pbrt/pbrt_scene.hpp"
 
 namespace sweeptrace::pbrt {
 

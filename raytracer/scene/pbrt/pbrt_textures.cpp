@@ -7,8 +7,8 @@
 
 #include "raytracer/image/image.hpp"
 #include "raytracer/input_error.hpp"
-#include "raytracer/scene/pbrt_materials.hpp"
-#include "raytracer/scene/pbrt_spectra.hpp"
+#include "raytracer/scene/pbrt/pbrt_materials.hpp"
+#include "raytracer/scene/pbrt/pbrt_spectra.hpp"
 
 namespace sweeptrace::pbrt {
 
