@@ -37,6 +37,7 @@ struct RenderOptions {
     std::uint64_t seed = 0;
     Sampling sampling = Sampling::NeeMis;
     SamplerKind sampler = SamplerKind::Sobol;  // callers copy scene.film.sampler here
+    IntegratorKind integrator = IntegratorKind::Path;  // callers copy scene.film.integrator here
     RoulettePolicy roulette = RoulettePolicy::adaptive();
     // Path guiding (render/guiding_*.hpp): learned from whole passes, so the image stays the same
     // for any thread count; unbiased, like the unguided render of the same scene.

@@ -147,7 +147,8 @@ void write_camera_and_film(WorldContext& w, std::string& film_filename) {
         const Statement& s = *sc.integrator;
         const ParamList& p = s.params;
         const std::string what = "Integrator \"" + excerpt(s.type) + "\"";
-        if (s.type != "path" && s.type != "volpath")
+        if (s.type == "bdpt") film["integrator"] = "bdpt";
+        if (s.type != "path" && s.type != "volpath" && s.type != "bdpt")
             d.warn(s.where, "integrator " + s.type, what + " is not supported: our unidirectional path tracer renders the same image with other noise");
         depth = p.get_int("maxdepth", 5, d);
         if (p.get_bool("regularize", false, d)) d.warn(s.where, "regularize", what + ": \"regularize\" is not supported (ignored)");
