@@ -52,7 +52,8 @@ public:
           lights_(scene, defect),
           camera_(scene.camera, width_, height_, scene.film.filter),
           integrator_(scene, accel, lights_, opt.max_depth, opt.sampling, defect, opt.roulette),
-          bdpt_(scene, accel, lights_, camera_, opt.max_depth, defect, opt.roulette),
+          bdpt_(scene, accel, lights_, camera_, opt.max_depth, defect, opt.roulette,
+                opt.sampling == Sampling::LightTracing),
           sum_(static_cast<std::size_t>(width_) * height_),
           sum_sq_(sum_.size(), glm::dvec3(0.0)),
           pass_(sum_.size()) {
@@ -263,6 +264,10 @@ RenderResult render_with_planted_defect(const Scene& scene, const Accel& accel, 
     if (options.threads < 0) throw std::invalid_argument("render: threads must be >= 0");
     if (options.first_sample < 0 || options.first_sample > std::numeric_limits<int>::max() - options.spp)
         throw std::invalid_argument("render: first_sample must be >= 0 and first_sample + spp fit in an int");
+    if (options.sampling == Sampling::LightTracing && options.integrator != IntegratorKind::Bdpt)
+        throw std::invalid_argument("render: light tracing alone is a bdpt strategy");
+    if (options.guiding && options.integrator != IntegratorKind::Path)
+        throw std::invalid_argument("render: path guiding is the path integrator's");
     if (!(options.time_budget >= 0.0)) throw std::invalid_argument("render: time_budget must be >= 0 seconds");
 
     const auto start = std::chrono::steady_clock::now();

@@ -47,7 +47,8 @@ struct BdptIntegrator::Subpaths {
 };
 
 BdptIntegrator::BdptIntegrator(const Scene& scene, const Accel& accel, const LightSet& lights,
-                               const CameraModel& camera, int max_depth, PlantedDefect defect, RoulettePolicy roulette)
+                               const CameraModel& camera, int max_depth, PlantedDefect defect, RoulettePolicy roulette,
+                               bool light_tracing_only)
     : scene_(scene),
       accel_(accel),
       lights_(lights),
@@ -55,6 +56,7 @@ BdptIntegrator::BdptIntegrator(const Scene& scene, const Accel& accel, const Lig
       max_depth_(max_depth),
       defect_(defect),
       roulette_(roulette),
+      light_tracing_only_(light_tracing_only),
       width_(scene.film.width),
       height_(scene.film.height),
       filter_radius_(scene.film.filter.radius),
@@ -69,6 +71,7 @@ bool BdptIntegrator::blocked(const collision::Ray& ray, float time) const {
 }
 
 float BdptIntegrator::weight(const MisPath& path, int s) const {
+    if (light_tracing_only_) return 1.0f;
     return bdpt_mis_weight(path, s, defect_ == PlantedDefect::BdptDropsNee);
 }
 
@@ -76,6 +79,12 @@ glm::vec3 BdptIntegrator::sample(float x, float y, const glm::vec2& lens, float 
                                  std::uint64_t& rays, std::vector<Splat>& splats) const {
     thread_local Subpaths sp;
     glm::vec3 l(0.0f);
+    if (light_tracing_only_) {
+        light_walk(time, sampler, rays, sp);
+        for (int s = 1; s <= static_cast<int>(sp.light.size()) && s <= max_depth_; ++s)
+            light_to_camera(sp, s, time, sampler, rays, splats);
+        return l;
+    }
     camera_walk(x, y, lens, time, sampler, rays, sp, l);
     light_walk(time, sampler, rays, sp);
     const int nc = static_cast<int>(sp.cam.size()), nl = static_cast<int>(sp.light.size());

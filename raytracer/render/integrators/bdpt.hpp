@@ -44,7 +44,8 @@ struct Splat {
 class BdptIntegrator {
 public:
     BdptIntegrator(const Scene& scene, const Accel& accel, const LightSet& lights, const CameraModel& camera,
-                   int max_depth, PlantedDefect defect, RoulettePolicy roulette = RoulettePolicy::adaptive());
+                   int max_depth, PlantedDefect defect, RoulettePolicy roulette = RoulettePolicy::adaptive(),
+                   bool light_tracing_only = false);
 
     // One camera sample at film position (x, y) with lens sample `lens` and shutter fraction
     // `time`: returns what the strategies with t >= 2 bring to its pixel (the caller applies the
@@ -75,6 +76,7 @@ private:
     int max_depth_;
     PlantedDefect defect_;
     RoulettePolicy roulette_;
+    bool light_tracing_only_;  // Sampling::LightTracing: t = 1 alone, at full weight
     bool moving_ = false;
     int width_, height_;
     float filter_radius_;
