@@ -61,7 +61,7 @@ BlockTestResult against_path(const RenderResult& path, const RenderResult& bdpt,
 
 }  // namespace
 
-TEST_CASE("bdpt: converges to the path tracer's image on cornell-box; a planted wrong MIS weight does not",
+TEST_CASE("bdpt: converges to the path tracer's image on cornell-box, and a planted wrong MIS weight does not",
           "[bdpt][convergence]") {
     const Scene scene = shipped("cornell-box.json", 24, 24);
     const auto accel = make_accel(AccelKind::Bvh, scene);
@@ -154,7 +154,7 @@ TEST_CASE("bdpt: light tracing alone matches the closed form of a small emitter 
 // put them (with the densities next to them 0, as the walks store them), the light hittable or
 // not. Over the possible strategies the weights sum to 1; leaving next event estimation out of the
 // sums (the planted defect) makes them sum to more wherever it was possible.
-TEST_CASE("bdpt: MIS weights sum to 1 over the strategies of random paths; a planted wrong weight does not",
+TEST_CASE("bdpt: MIS weights sum to 1 over the strategies of random paths, and a planted wrong weight does not",
           "[bdpt][mis]") {
     std::mt19937 rng(12345);
     std::uniform_real_distribution<float> decade(-2.0f, 2.0f);
