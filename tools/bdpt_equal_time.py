@@ -19,17 +19,9 @@ import sys
 
 import numpy as np
 
+from equal_time import read_pfm  # tools/equal_time.py's reader (this folder is on sys.path)
+
 SCENES = [("veach-bidir", "../shared/bitterli/veach-bidir/scene-v4.pbrt")]
-
-
-def read_pfm(path):
-    with open(path, "rb") as f:
-        if f.readline().strip() != b"PF":
-            raise SystemExit(f"bdpt_equal_time: {path}: not a colour PFM")
-        w, h = (int(v) for v in f.readline().split())
-        scale = float(f.readline())
-        data = np.fromfile(f, dtype="<f4" if scale < 0 else ">f4")
-    return data.reshape(h, w, 3).astype(np.float64)
 
 
 def render(exe, scene, out, integrator, seconds, size, threads, seed):

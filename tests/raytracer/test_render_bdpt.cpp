@@ -59,18 +59,24 @@ BlockTestResult against_path(const RenderResult& path, const RenderResult& bdpt,
     return block_test(path.image, bdpt.image, bdpt.variance, options);
 }
 
+// 128 spp of bdpt against 256 of path, 4x4 blocks; returns the path render.
+RenderResult check_converges_to_path(const Scene& scene, const Accel& accel) {
+    RenderResult path = render_as(scene, accel, IntegratorKind::Path, 256, 1);
+    const RenderResult bdpt = render_as(scene, accel, IntegratorKind::Bdpt, 128, 2);
+    const BlockTestResult t = against_path(path, bdpt, 4);
+    INFO(t.summary());
+    CHECK(t.pass());
+    CHECK(bdpt.stats.nonfinite_samples == 0);
+    return path;
+}
+
 }  // namespace
 
 TEST_CASE("bdpt: converges to the path tracer's image on cornell-box, and a planted wrong MIS weight does not",
           "[bdpt][convergence]") {
     const Scene scene = shipped("cornell-box.json", 24, 24);
     const auto accel = make_accel(AccelKind::Bvh, scene);
-    const RenderResult path = render_as(scene, *accel, IntegratorKind::Path, 256, 1);
-    const RenderResult bdpt = render_as(scene, *accel, IntegratorKind::Bdpt, 128, 2);
-    const BlockTestResult t = against_path(path, bdpt, 4);
-    INFO(t.summary());
-    CHECK(t.pass());
-    CHECK(bdpt.stats.nonfinite_samples == 0);
+    const RenderResult path = check_converges_to_path(scene, *accel);
     // Next event estimation left out of the weights' sums: direct light counted up to twice.
     const RenderResult wrong = render_as(scene, *accel, IntegratorKind::Bdpt, 128, 2, PlantedDefect::BdptDropsNee);
     const BlockTestResult w = against_path(path, wrong, 4);
@@ -81,12 +87,7 @@ TEST_CASE("bdpt: converges to the path tracer's image on cornell-box, and a plan
 TEST_CASE("bdpt: converges to the path tracer's image on default (thin lens, sphere light, glass, a mesh)",
           "[bdpt][convergence]") {
     const Scene scene = shipped("default.json", 32, 18);
-    const auto accel = make_accel(AccelKind::Bvh, scene);
-    const RenderResult path = render_as(scene, *accel, IntegratorKind::Path, 256, 1);
-    const RenderResult bdpt = render_as(scene, *accel, IntegratorKind::Bdpt, 128, 2);
-    const BlockTestResult t = against_path(path, bdpt, 4);
-    INFO(t.summary());
-    CHECK(t.pass());
+    check_converges_to_path(scene, *make_accel(AccelKind::Bvh, scene));
 }
 
 // A square emitter of side a and radiance Le at height h, facing down, outside the view of a

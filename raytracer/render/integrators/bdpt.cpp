@@ -39,6 +39,20 @@ void set_material(const Scene& scene, PathVertex& v) {
     if (v.has_textured) v.textured = textured_material(scene, base, v.hit);
 }
 
+// The densities of a path made of the camera subpath alone, x_i = cam[k - i] for i >= first (s = 0).
+void camera_only(MisPath& m, const std::vector<PathVertex>& cam, int k, int first) {
+    m.k = k;
+    m.fwd.assign(static_cast<std::size_t>(k + 1), 0.0f);
+    m.rev.assign(static_cast<std::size_t>(k + 1), 0.0f);
+    m.delta.assign(static_cast<std::size_t>(k + 1), 0);
+    for (int i = first; i <= k; ++i) {
+        const PathVertex& v = cam[static_cast<std::size_t>(k - i)];
+        m.fwd[static_cast<std::size_t>(i)] = v.pdf_rev;
+        m.rev[static_cast<std::size_t>(i)] = v.pdf_fwd;
+        m.delta[static_cast<std::size_t>(i)] = v.delta;
+    }
+}
+
 }  // namespace
 
 struct BdptIntegrator::Subpaths {
@@ -269,16 +283,7 @@ glm::vec3 BdptIntegrator::escaped_radiance(const Subpaths& sp, const glm::vec3& 
     if (infinite_lights_.empty()) return sum;
     const int k = static_cast<int>(sp.cam.size());  // the light is x_0, cam.back() is x_1
     MisPath m;
-    m.k = k;
-    m.fwd.assign(static_cast<std::size_t>(k + 1), 0.0f);
-    m.rev.assign(static_cast<std::size_t>(k + 1), 0.0f);
-    m.delta.assign(static_cast<std::size_t>(k + 1), 0);
-    for (int i = 1; i <= k; ++i) {
-        const PathVertex& v = sp.cam[static_cast<std::size_t>(k - i)];
-        m.fwd[static_cast<std::size_t>(i)] = v.pdf_rev;
-        m.rev[static_cast<std::size_t>(i)] = v.pdf_fwd;
-        m.delta[static_cast<std::size_t>(i)] = v.delta;
-    }
+    camera_only(m, sp.cam, k, 1);
     m.rev[0] = pdf;
     m.light_to_camera = false;
     const PathVertex& x1 = sp.cam.back();
@@ -300,16 +305,8 @@ glm::vec3 BdptIntegrator::emitter_hit(Subpaths& sp, int j) const {
     if (le == glm::vec3(0.0f)) return le;
     if (!lights_.is_light(z.hit.object)) return z.beta * le;  // no light sampling finds it
     MisPath& m = sp.mis;
-    m.k = j;
-    m.fwd.assign(static_cast<std::size_t>(j + 1), 0.0f);
-    m.rev.assign(static_cast<std::size_t>(j + 1), 0.0f);
-    m.delta.assign(static_cast<std::size_t>(j + 1), 0);
-    for (int i = 0; i <= j; ++i) {
-        const PathVertex& v = sp.cam[static_cast<std::size_t>(j - i)];
-        m.fwd[static_cast<std::size_t>(i)] = v.pdf_rev;
-        m.rev[static_cast<std::size_t>(i)] = v.pdf_fwd;
-        m.delta[static_cast<std::size_t>(i)] = i == 0 ? 0 : v.delta;
-    }
+    camera_only(m, sp.cam, j, 0);
+    m.delta[0] = 0;
     const std::uint32_t light = lights_.light_of_object(z.hit.object);
     const LightSet::EmissionDensity d = lights_.emission_density(light, z.hit.normal, z.wo);
     m.fwd[0] = d.pos;
