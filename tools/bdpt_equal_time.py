@@ -9,7 +9,8 @@ the same amount to both errors, so the ratio it prints is, if anything, closer t
 truth's. CPU time counts every thread of the render (the renderer's ProcessCpu clock), so the
 figures do not grow while other processes share the machine.
 
-Writes docs/integrators-equal-time.md. Needs ../shared/bitterli (skips a scene that is missing).
+Writes docs/integrators-equal-time.md and docs/integrators-equal-time.png (path | bdpt | reference
+per scene, clamped to [0, 1] and raised to 1/2.2). Needs ../shared/bitterli (skips a scene that is missing).
 Usage: /usr/bin/python3 tools/bdpt_equal_time.py [--build build] [--time 20] [--ref-time 240] [--size 128]
 """
 import argparse
@@ -44,6 +45,7 @@ def main():
     work = os.path.join(root, args.build, "bdpt-equal-time")
     os.makedirs(work, exist_ok=True)
     rows = []
+    pictures = []
     for name, rel in SCENES:
         scene = os.path.normpath(os.path.join(root, rel))
         if not os.path.exists(scene):
@@ -56,6 +58,7 @@ def main():
                          args.threads, 7)
             errors[integrator] = float(np.sqrt(np.mean((img - ref) ** 2)))
         rows.append((name, errors["path"], errors["bdpt"], errors["bdpt"] / errors["path"]))
+        pictures.append((name, [read_pfm(os.path.join(work, f"{name}-{i}.pfm")) for i in ("path", "bdpt")] + [ref]))
         print(f"{name}: RMSE path {errors['path']:.5f}, bdpt {errors['bdpt']:.5f}, ratio {rows[-1][3]:.3f}")
     if not rows:
         raise SystemExit("bdpt_equal_time: no scene found")
@@ -69,7 +72,20 @@ def main():
         f.write("| scene | RMSE path | RMSE bdpt | bdpt / path |\n|---|---|---|---|\n")
         for name, p, b, r in rows:
             f.write(f"| {name} | {p:.5f} | {b:.5f} | {r:.3f} |\n")
+        f.write("\n![path, bdpt and the reference at equal CPU time](integrators-equal-time.png)\n")
     print(f"wrote {out}")
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    fig, axes = plt.subplots(len(pictures), 3, figsize=(9, 3.2 * len(pictures)), squeeze=False)
+    for row, (name, images) in zip(axes, pictures):
+        for ax, img, title in zip(row, images, (f"path, {args.time:g} CPU s", f"bdpt, {args.time:g} CPU s",
+                                                f"reference, bdpt {args.ref_time:g} CPU s")):
+            ax.imshow(np.clip(img, 0.0, 1.0) ** (1 / 2.2))
+            ax.set_title(f"{name}: {title}", fontsize=9)
+            ax.axis("off")
+    fig.tight_layout()
+    fig.savefig(os.path.join(root, "docs", "integrators-equal-time.png"), dpi=100)
 
 
 if __name__ == "__main__":
