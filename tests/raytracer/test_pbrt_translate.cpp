@@ -367,6 +367,38 @@ TEST_CASE("pbrt infinite light: pbrt's light-space directions land where pbrt pu
     }
 }
 
+TEST_CASE("pbrt-v3's infinite light \"mapname\" under Rotate and a z-up ConcatTransform reads its map, not a white sky", "[pbrt][environment]") {
+    // A pbrt-v3 scene lit like Bitterli's classroom: the sky map named by "mapname" (pbrt-v4 says
+    // "filename"), "L" multiplying it, under `Rotate 90 0 1 0` (aiming) and Tungsten's z-up-to-y-up
+    // ConcatTransform. Read as pbrt's constant light, it was a white background (L's default 1),
+    // bright where the map's lower half is black. Worked by hand: the CTM is Ry(90) * M, M taking
+    // light x -> world -x, y -> -z, z -> +y; then Ry(90) takes -x -> +z, -z -> -x, +y -> +y, so
+    // light (a, b, c) is world (-b, c, a): light +z is up.
+    const TempDir dir;
+    Image er(16, 8);  // pbrt-v3 equirect: u = phi / 2 pi from light +x toward +y, v = theta / pi from +z
+    for (int y = 0; y < 4; ++y)
+        for (int x = 0; x < 16; ++x) er.at(x, y) = glm::vec3(0.25f, 0.5f, 1.0f);  // sky above, black below
+    er.at(2, 3) = glm::vec3(1, 0, 0);  // phi in (2, 3) / 16 turns, theta in (3, 4) / 8 of pi: just above the horizon
+    write_image(er, dir.path() / "sky.pfm");
+    std::vector<std::string> warnings;
+    const Scene sc = load_pbrt_scene(dir.write("v3.pbrt", "WorldBegin\nAttributeBegin\nRotate 90 0 1 0\n"
+                                                          "ConcatTransform [ -1 0 0 0  0 0 -1 0  0 1 0 0  0 0 0 1 ]\n"
+                                                          "LightSource \"infinite\" \"string mapname\" \"sky.pfm\" \"rgb L\" [2 2 2]\n"
+                                                          "AttributeEnd\n"),
+                                     false, warnings);
+    CHECK(warnings.empty());
+    REQUIRE(sc.background.kind == Background::Kind::Environment);
+    const double theta = 3.5 / 8.0 * M_PI, phi = 2.5 / 16.0 * 2.0 * M_PI;
+    const glm::dvec3 light(std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta));
+    const glm::vec3 world(-light.y, light.z, light.x);
+    CHECK(environment_radiance(sc.background, world) == glm::vec3(2, 0, 0));
+    // Its neighbour one texel less in phi is sky, and straight down is the map's black lower half.
+    const double phi0 = 1.5 / 16.0 * 2.0 * M_PI;
+    const glm::vec3 beside(-std::sin(theta) * std::sin(phi0), std::cos(theta), std::sin(theta) * std::cos(phi0));
+    CHECK(environment_radiance(sc.background, beside) == glm::vec3(0.5f, 1.0f, 2.0f));
+    CHECK(environment_radiance(sc.background, glm::vec3(0.1f, -1.0f, 0.2f)) == glm::vec3(0.0f));
+}
+
 TEST_CASE("pbrt film: the sensor's imaging ratio (shutter time x iso / 100) multiplies every emitter", "[pbrt]") {
     const TempDir dir;
     write_image(Image(4, 2), dir.path() / "sky.pfm");
