@@ -7,6 +7,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "convergence_harness.hpp"
 #include "pbrt_test_support.hpp"
 #include "raytracer/image/image.hpp"
 #include "raytracer/input_error.hpp"
@@ -209,6 +210,29 @@ TEST_CASE("pbrt lights: area, point, spot, distant, infinite", "[pbrt]") {
     const auto p = convert_text(dir, std::string(kFlipped) + "WorldBegin\nAreaLightSource \"diffuse\" \"float power\" 10\nShape \"disk\"\n");
     const json pm = p.doc["materials"][p.doc["objects"][0]["material"].get<std::string>()];
     CHECK(pm["emission"][0].get<double>() == Approx(10.0 / (M_PI * M_PI)));
+}
+
+TEST_CASE("pbrt diffusetransmission: a blind lit from behind glows T E / pi toward the room", "[pbrt][render]") {
+    // A plane z = 0 filling the view, seen from z = 5, lit from behind (z < 0) at normal incidence
+    // by a distant light of irradiance E = 2; reflectance 0, so all its light is transmitted
+    // diffusely: radiance T E / pi toward the camera, exactly, in every sample (the light is a
+    // delta, found by next event estimation; paths sampled through the plane escape to black).
+    // With the transmission dropped (our diffuse alone) the plane was black.
+    const TempDir dir;
+    const std::string text =
+        "LookAt 0 0 5  0 0 0  0 1 0\nCamera \"perspective\" \"float fov\" 40\n"
+        "Film \"rgb\" \"integer xresolution\" 8 \"integer yresolution\" 8\nWorldBegin\n"
+        "LightSource \"distant\" \"point3 from\" [0 0 -1] \"point3 to\" [0 0 0] \"rgb L\" [2 2 2]\n"
+        "Material \"diffusetransmission\" \"rgb reflectance\" [0 0 0] \"rgb transmittance\" [0.5 0.4 0.3]\n"
+        "Shape \"trianglemesh\" \"point3 P\" [-10 -10 0  10 -10 0  10 10 0  -10 10 0] \"integer indices\" [0 1 2  0 2 3]\n";
+    std::vector<std::string> warnings;
+    const Scene s = load_pbrt_scene(dir.write("blind.pbrt", text), false, warnings);
+    CHECK(warnings.empty());
+    const RenderResult r = testing::render_with(s, AccelKind::Bvh, 4, 3, 1);
+    const glm::vec3 expected = glm::vec3(0.5f, 0.4f, 0.3f) * (2.0f / static_cast<float>(M_PI));
+    for (int y = 0; y < 8; ++y)
+        for (int x = 0; x < 8; ++x)
+            for (int c = 0; c < 3; ++c) CHECK(r.image.at(x, y)[c] == Approx(expected[c]).epsilon(1e-4));
 }
 
 TEST_CASE("pbrt film, sampler, integrator and pixel filter", "[pbrt]") {
