@@ -43,6 +43,16 @@ glm::vec3 schlick(const glm::vec3& f0, float cos_d) {
 
 using ggx_reflection::valid;
 
+float max3(const glm::vec3& v) { return std::max(v.x, std::max(v.y, v.z)); }
+
+// Diffuse: the probability of sampling the transmitted lobe, in proportion to the two lobes'
+// largest channels; exactly 0 for an opaque surface, whose sampling (and random stream) is then
+// the plain Lambertian's.
+float diffuse_transmit_probability(const Material& m) {
+    const float t = max3(m.transmittance);
+    return t > 0.0f ? t / (t + max3(m.albedo)) : 0.0f;
+}
+
 bool sample_smooth_dielectric(const Material& m, const ShadingContext& ctx, float u0, BsdfSample& out) {
     const glm::vec3& wo = ctx.wo_local;
     if (wo.z <= 0.0f) return false;
@@ -71,9 +81,15 @@ BsdfEval eval_bsdf(const Material& m, const ShadingContext& ctx, const glm::vec3
     switch (m.type) {
         case Material::Type::Diffuse: {
             const glm::vec3 wl = ctx.frame.to_local(wi);
-            if (!valid(ctx, wl, wi)) return e;
-            e.f_cos = m.albedo * (kInvPi * wl.z);
-            e.pdf = kInvPi * wl.z;
+            const float pt = diffuse_transmit_probability(m);
+            if (valid(ctx, wl, wi)) {
+                e.f_cos = m.albedo * (kInvPi * wl.z);
+                e.pdf = (1.0f - pt) * kInvPi * wl.z;
+            } else if (pt > 0.0f && ctx.wo_local.z > 0.0f && wl.z < 0.0f && glm::dot(wi, ctx.ng) < 0.0f) {
+                // Transmission: wi on the far side of both the shading and the geometric normal.
+                e.f_cos = m.transmittance * (kInvPi * -wl.z);
+                e.pdf = pt * kInvPi * -wl.z;
+            }
             return e;
         }
         case Material::Type::Metal:
@@ -95,10 +111,20 @@ BsdfEval eval_bsdf(const Material& m, const ShadingContext& ctx, const glm::vec3
 bool sample_bsdf(const Material& m, const ShadingContext& ctx, float u0, float u1, float u2, BsdfSample& out) {
     switch (m.type) {
         case Material::Type::Diffuse: {
+            const float pt = diffuse_transmit_probability(m);
+            if (pt > 0.0f && u0 < pt) {
+                if (ctx.wo_local.z <= 0.0f) return false;
+                glm::vec3 wl = cosine_hemisphere(u1, u2);
+                wl.z = -wl.z;
+                const glm::vec3 wi = ctx.frame.to_world(wl);
+                if (glm::dot(wi, ctx.ng) >= 0.0f) return false;
+                out = BsdfSample{wi, m.transmittance / pt, pt * kInvPi * -wl.z, false};
+                return out.pdf > 0.0f;
+            }
             const glm::vec3 wl = cosine_hemisphere(u1, u2);
             const glm::vec3 wi = ctx.frame.to_world(wl);
             if (!valid(ctx, wl, wi)) return false;
-            out = BsdfSample{wi, m.albedo, kInvPi * wl.z, false};
+            out = BsdfSample{wi, pt > 0.0f ? m.albedo / (1.0f - pt) : m.albedo, (1.0f - pt) * kInvPi * wl.z, false};
             return out.pdf > 0.0f;
         }
         case Material::Type::Metal:

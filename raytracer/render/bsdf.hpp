@@ -8,7 +8,9 @@
 // wo's side of the *geometric* normal and transmission the other side, so interpolated normals
 // never let light leak through a surface.
 //
-// - Diffuse: Lambert, f = albedo / pi, cosine-weighted sampling.
+// - Diffuse: Lambert, f = albedo / pi, cosine-weighted sampling; with a transmittance T (pbrt-v4's
+//   diffusetransmission) also f = T / pi on the far side (wi behind both normals), the side
+//   chosen with probability in proportion to max(albedo) and max(T), then cosine-weighted.
 // - Metal: GGX (Trowbridge-Reitz) microfacet reflection with height-correlated Smith masking,
 //   Schlick Fresnel with F0 = albedo, visible-normal sampling (Heitz 2018), alpha = roughness^2
 //   clamped below at kMinMetalAlpha. Single scattering only: very rough metal loses the energy of

@@ -182,8 +182,9 @@ Material read_material(const Node& node, const std::string& name, std::vector<Te
         node.require_object(keys);
     };
     if (type == "diffuse") {
-        require_surface_keys({});
+        require_surface_keys({"transmittance"});
         m.type = Material::Type::Diffuse;
+        if (auto t = node.find("transmittance")) m.transmittance = read_albedo(*t);
     } else if (type == "metal") {
         require_surface_keys({"roughness"});
         m.type = Material::Type::Metal;

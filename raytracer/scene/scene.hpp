@@ -134,6 +134,9 @@ struct Material {
     Type type = Type::Diffuse;
     glm::vec3 albedo{0.8f};    // Diffuse reflectance / Metal tint / (Thin)Dielectric transmission tint
     int albedo_texture = -1;   // index into Scene::textures replacing `albedo` at each hit, or -1
+    // Diffuse: the diffuse transmission T (pbrt-v4's diffusetransmission), f = T / pi on the far
+    // side of the surface beside albedo / pi on wo's side; 0 (the default) is an opaque Lambertian.
+    glm::vec3 transmittance{0.0f};
     float roughness = 0.0f;    // Metal: 0 = perfect mirror
     float ior = 1.5f;          // Dielectric, ThinDielectric
     // Conductor: the complex index of refraction eta + i k per RGB channel, relative to the

@@ -7,6 +7,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "convergence_harness.hpp"
 #include "pbrt_test_support.hpp"
 #include "raytracer/image/image.hpp"
 #include "raytracer/input_error.hpp"
@@ -211,6 +212,29 @@ TEST_CASE("pbrt lights: area, point, spot, distant, infinite", "[pbrt]") {
     CHECK(pm["emission"][0].get<double>() == Approx(10.0 / (M_PI * M_PI)));
 }
 
+TEST_CASE("pbrt diffusetransmission: a blind lit from behind glows T E / pi toward the room", "[pbrt][render]") {
+    // A plane z = 0 filling the view, seen from z = 5, lit from behind (z < 0) at normal incidence
+    // by a distant light of irradiance E = 2; reflectance 0, so all its light is transmitted
+    // diffusely: radiance T E / pi toward the camera, exactly, in every sample (the light is a
+    // delta, found by next event estimation; paths sampled through the plane escape to black).
+    // With the transmission dropped (our diffuse alone) the plane was black.
+    const TempDir dir;
+    const std::string text =
+        "LookAt 0 0 5  0 0 0  0 1 0\nCamera \"perspective\" \"float fov\" 40\n"
+        "Film \"rgb\" \"integer xresolution\" 8 \"integer yresolution\" 8\nWorldBegin\n"
+        "LightSource \"distant\" \"point3 from\" [0 0 -1] \"point3 to\" [0 0 0] \"rgb L\" [2 2 2]\n"
+        "Material \"diffusetransmission\" \"rgb reflectance\" [0 0 0] \"rgb transmittance\" [0.5 0.4 0.3]\n"
+        "Shape \"trianglemesh\" \"point3 P\" [-10 -10 0  10 -10 0  10 10 0  -10 10 0] \"integer indices\" [0 1 2  0 2 3]\n";
+    std::vector<std::string> warnings;
+    const Scene s = load_pbrt_scene(dir.write("blind.pbrt", text), false, warnings);
+    CHECK(warnings.empty());
+    const RenderResult r = testing::render_with(s, AccelKind::Bvh, 4, 3, 1);
+    const glm::vec3 expected = glm::vec3(0.5f, 0.4f, 0.3f) * (2.0f / static_cast<float>(M_PI));
+    for (int y = 0; y < 8; ++y)
+        for (int x = 0; x < 8; ++x)
+            for (int c = 0; c < 3; ++c) CHECK(r.image.at(x, y)[c] == Approx(expected[c]).epsilon(1e-4));
+}
+
 TEST_CASE("pbrt film, sampler, integrator and pixel filter", "[pbrt]") {
     const TempDir dir;
     const auto c = convert_text(dir, "Film \"rgb\" \"integer xresolution\" 64 \"integer yresolution\" 48 \"string filename\" \"out.exr\"\n"
@@ -365,6 +389,38 @@ TEST_CASE("pbrt infinite light: pbrt's light-space directions land where pbrt pu
     // The mirror matters: the texel left of +y (phi a little less than pi/2) is not what +y shows.
     CHECK(radiance_toward("er.pfm", world_of(sph(t4, (3.5 / 16.0) * 2.0 * M_PI))) == glm::vec3(0, 0, 0));
     }
+}
+
+TEST_CASE("pbrt-v3's infinite light \"mapname\" under Rotate and a z-up ConcatTransform reads its map, not a white sky", "[pbrt][environment]") {
+    // A pbrt-v3 scene lit like Bitterli's classroom: the sky map named by "mapname" (pbrt-v4 says
+    // "filename"), "L" multiplying it, under `Rotate 90 0 1 0` (aiming) and Tungsten's z-up-to-y-up
+    // ConcatTransform. Read as pbrt's constant light, it was a white background (L's default 1),
+    // bright where the map's lower half is black. Worked by hand: the CTM is Ry(90) * M, M taking
+    // light x -> world -x, y -> -z, z -> +y; then Ry(90) takes -x -> +z, -z -> -x, +y -> +y, so
+    // light (a, b, c) is world (-b, c, a): light +z is up.
+    const TempDir dir;
+    Image er(16, 8);  // pbrt-v3 equirect: u = phi / 2 pi from light +x toward +y, v = theta / pi from +z
+    for (int y = 0; y < 4; ++y)
+        for (int x = 0; x < 16; ++x) er.at(x, y) = glm::vec3(0.25f, 0.5f, 1.0f);  // sky above, black below
+    er.at(2, 3) = glm::vec3(1, 0, 0);  // phi in (2, 3) / 16 turns, theta in (3, 4) / 8 of pi: just above the horizon
+    write_image(er, dir.path() / "sky.pfm");
+    std::vector<std::string> warnings;
+    const Scene sc = load_pbrt_scene(dir.write("v3.pbrt", "WorldBegin\nAttributeBegin\nRotate 90 0 1 0\n"
+                                                          "ConcatTransform [ -1 0 0 0  0 0 -1 0  0 1 0 0  0 0 0 1 ]\n"
+                                                          "LightSource \"infinite\" \"string mapname\" \"sky.pfm\" \"rgb L\" [2 2 2]\n"
+                                                          "AttributeEnd\n"),
+                                     false, warnings);
+    CHECK(warnings.empty());
+    REQUIRE(sc.background.kind == Background::Kind::Environment);
+    const double theta = 3.5 / 8.0 * M_PI, phi = 2.5 / 16.0 * 2.0 * M_PI;
+    const glm::dvec3 light(std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta));
+    const glm::vec3 world(-light.y, light.z, light.x);
+    CHECK(environment_radiance(sc.background, world) == glm::vec3(2, 0, 0));
+    // Its neighbour one texel less in phi is sky, and straight down is the map's black lower half.
+    const double phi0 = 1.5 / 16.0 * 2.0 * M_PI;
+    const glm::vec3 beside(-std::sin(theta) * std::sin(phi0), std::cos(theta), std::sin(theta) * std::cos(phi0));
+    CHECK(environment_radiance(sc.background, beside) == glm::vec3(0.5f, 1.0f, 2.0f));
+    CHECK(environment_radiance(sc.background, glm::vec3(0.1f, -1.0f, 0.2f)) == glm::vec3(0.0f));
 }
 
 TEST_CASE("pbrt film: the sensor's imaging ratio (shutter time x iso / 100) multiplies every emitter", "[pbrt]") {

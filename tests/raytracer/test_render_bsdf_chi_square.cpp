@@ -21,7 +21,7 @@ using sweeptrace::test::chi_square_bsdf;
 
 namespace {
 
-constexpr int kTests = 46, kSamples = 200000;
+constexpr int kTests = 48, kSamples = 200000;
 
 SurfaceHit tilted_hit() {
     SurfaceHit h;
@@ -53,6 +53,13 @@ Material make(Material::Type type, float roughness) {
 
 TEST_CASE("chi-square: diffuse samples follow its density", "[render][bsdf][chi2]") {
     check_chi_square(make(Material::Type::Diffuse, 0.0f), 0.7f, 1.0f, 1);
+}
+
+TEST_CASE("chi-square: diffuse with transmittance (pbrt's diffusetransmission) samples both sides by its density", "[render][bsdf][chi2]") {
+    Material m = make(Material::Type::Diffuse, 0.0f);
+    m.albedo = glm::vec3(0.3f, 0.25f, 0.2f);
+    m.transmittance = glm::vec3(0.6f, 0.5f, 0.4f);
+    for (float side : {1.0f, -1.0f}) check_chi_square(m, 0.7f, side, 2);
 }
 
 TEST_CASE("chi-square: GGX metal samples follow its density", "[render][bsdf][chi2]") {

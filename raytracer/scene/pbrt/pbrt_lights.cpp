@@ -56,14 +56,28 @@ void infinite(WorldContext& w, const LightRecord& l, const std::string& what, do
     const Where& at = l.statement.where;
     p.find("portal");  // portals guide sampling only: the image is the same without
     const double illuminance = p.get_float("illuminance", -1.0, d);
-    const std::string file = p.get_string("filename", "", d);
+    std::string file = p.get_string("filename", "", d);
+    // pbrt-v3 named the map "mapname" and let "L" multiply it (pbrt-v4's --upgrade renames the
+    // one and folds a grey "L" into "scale"). Read as a constant light instead, such a file's sky
+    // was a uniform white background (L's default), bright even where its map is black.
+    const bool v3_map = file.empty() && p.has("mapname");
+    if (v3_map) {
+        file = p.get_string("mapname", "", d);
+        if (p.has("L")) {
+            const glm::dvec3 l = w.materials.emitted(p, "L", what);
+            const double mean = (l.x + l.y + l.z) / 3.0;
+            if (l.x != l.y || l.y != l.z)
+                d.warn(at, "environment tint", what + ": a coloured \"L\" on a map is not supported (its mean, " + std::to_string(mean) + ", scales the map)");
+            scale *= mean;
+        }
+    }
     if (file.empty()) {
         glm::dvec3 radiance = w.materials.emitted(p, "L", what) * scale;
         if (illuminance > 0.0) radiance *= illuminance / kPi;
         add_background(w, at, radiance);
         return;
     }
-    if (p.has("L")) d.fail(at, what + ": give either \"L\" or \"filename\", not both");
+    if (!v3_map && p.has("L")) d.fail(at, what + ": give either \"L\" or \"filename\", not both");
     if (illuminance > 0.0) d.warn(at, "environment illuminance", what + ": \"illuminance\" with an image is not supported (\"scale\" alone used)");
     const std::filesystem::path path = w.files.resolve(file);
     const std::shared_ptr<const Image> image =

@@ -274,9 +274,13 @@ MaterialResult MaterialTranslator::translate(const Statement& s, const std::map<
         const double scale = p.get_float("scale", 1.0, diag_);
         json r = colour(p, "reflectance", glm::dvec3(0.25), true, what);
         if (r.is_array()) r = json::array({std::min(1.0, r[0].get<double>() * scale), std::min(1.0, r[1].get<double>() * scale), std::min(1.0, r[2].get<double>() * scale)});
-        diag_.warn(s.where, "diffusetransmission", what + ": the transmitted part is dropped: diffuse reflection only (approximated)");
-        p.find("transmittance");
-        m = {{"type", "diffuse"}, {"albedo", r}};
+        json t = colour(p, "transmittance", glm::dvec3(0.25), true, what);
+        if (!t.is_array()) {
+            diag_.warn(s.where, "transmittance texture", what + ": a \"transmittance\" texture is not supported (pbrt's default 0.25 used)");
+            t = json::array({0.25, 0.25, 0.25});
+        }
+        t = json::array({std::min(1.0, t[0].get<double>() * scale), std::min(1.0, t[1].get<double>() * scale), std::min(1.0, t[2].get<double>() * scale)});
+        m = {{"type", "diffuse"}, {"albedo", r}, {"transmittance", t}};
     } else if (type == "interface") {
         out.invisible = true;
         m = {{"type", "diffuse"}};

@@ -1,0 +1,269 @@
+// The experiments behind docs/reference-deviations.md: Bitterli's scenes (../shared/bitterli)
+// rendered small through the pbrt importer and compared with TungstenRender.exr box-filtered to
+// the same size, once as the pbrt-v4 file says and once with what the file lost in conversion put
+// back. Each asserts the explanation (the change brings the compared region within a few percent
+// of the reference, and without it the region is far off) and prints its figures.
+// Hidden from the default suite ([.]: minutes of CPU); run them with
+//   ./build/tests/raytracer_tests "[reference-deviations]" -s
+// They say SKIPPED and pass without ../shared/bitterli.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+#include "raytracer/accel/accel.hpp"
+#include "raytracer/image/image.hpp"
+#include "raytracer/render/renderer.hpp"
+#include "raytracer/scene/pbrt/pbrt_import.hpp"
+#include "raytracer/scene/scene.hpp"
+
+using namespace sweeptrace;
+
+namespace {
+
+std::filesystem::path bitterli(const std::string& scene) {
+    return std::filesystem::path(SWEEPTRACE_SHARED_DIR) / "bitterli" / scene;
+}
+
+bool have(const std::string& scene) {
+    if (std::filesystem::is_regular_file(bitterli(scene) / "scene-v4.pbrt")) return true;
+    std::printf("SKIPPED: needs %s (the shared/ folder beside the checkout)\n", bitterli(scene).string().c_str());
+    return false;
+}
+
+Scene load(const std::string& scene, int width) {
+    std::vector<std::string> warnings;
+    Scene s = load_pbrt_scene(bitterli(scene) / "scene-v4.pbrt", false, warnings);
+    s.film.height = static_cast<int>(std::lround(static_cast<double>(s.film.height) * width / s.film.width));
+    s.film.width = width;
+    return s;
+}
+
+Material& material(Scene& s, const std::string& name) {
+    for (Material& m : s.materials)
+        if (m.name == name) return m;
+    FAIL("no material " << name);
+    throw;
+}
+
+Image render_small(const Scene& s, int spp, int max_depth, Sampling sampling = Sampling::NeeMis) {
+    const auto accel = make_accel(AccelKind::Bvh, s);
+    RenderOptions o;
+    o.sampling = sampling;
+    o.spp = spp;
+    o.max_depth = max_depth;
+    o.seed = 7;
+    o.sampler = s.film.sampler;
+    return render(s, *accel, o).image;
+}
+
+// The reference box-filtered by an integer factor to `width` (a non-finite pixel counts as 0).
+Image reference(const std::string& scene, int width, int height) {
+    const Image full = read_image(bitterli(scene) / "TungstenRender.exr");
+    const int k = full.width / width;
+    Image out(width, height);
+    for (int y = 0; y < height; ++y)
+        for (int x = 0; x < width; ++x) {
+            glm::dvec3 sum(0.0);
+            for (int j = 0; j < k; ++j)
+                for (int i = 0; i < k; ++i) {
+                    const glm::vec3 p = full.at(std::min(x * k + i, full.width - 1), std::min(y * k + j, full.height - 1));
+                    if (std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z)) sum += glm::dvec3(p);
+                }
+            out.at(x, y) = glm::vec3(sum / double(k * k));
+        }
+    return out;
+}
+
+// Per channel, sum(ours) / sum(reference) over the rectangle [x0, x1) x [y0, y1) in fractions of
+// the image (the whole image by default).
+glm::dvec3 ratio(const Image& ours, const Image& ref, double x0 = 0, double y0 = 0, double x1 = 1, double y1 = 1) {
+    glm::dvec3 a(0.0), b(0.0);
+    for (int y = int(y0 * ours.height); y < int(y1 * ours.height); ++y)
+        for (int x = int(x0 * ours.width); x < int(x1 * ours.width); ++x) {
+            a += glm::dvec3(ours.at(x, y));
+            b += glm::dvec3(ref.at(x, y));
+        }
+    return a / b;
+}
+
+void print(const char* what, const glm::dvec3& r) { std::printf("  %-58s %.3f %.3f %.3f\n", what, r.x, r.y, r.z); }
+
+bool within(const glm::dvec3& r, double tol) {
+    return std::fabs(r.x - 1.0) <= tol && std::fabs(r.y - 1.0) <= tol && std::fabs(r.z - 1.0) <= tol;
+}
+
+}  // namespace
+
+TEST_CASE("reference deviations: classroom's conductors lost Tungsten's albedo multipliers", "[.][reference-deviations]") {
+    if (!have("classroom")) return;
+    // Tungsten's form (tungsten-scene.json) gives ChairFrame albedo 0.75 and WindowFrame 0.47 on
+    // top of the metal's Fresnel term; pbrt-v4's conductor has no such factor and the file dropped it.
+    Scene s = load("classroom", 160);
+    const Image ref = reference("classroom", s.film.width, s.film.height);
+    const glm::dvec3 as_file = ratio(render_small(s, 64, s.film.max_depth), ref);
+    material(s, "ChairFrame").albedo = glm::vec3(0.75f);
+    material(s, "WindowFrame").albedo = glm::vec3(0.47f);
+    const glm::dvec3 restored = ratio(render_small(s, 64, s.film.max_depth), ref);
+    std::printf("classroom, 160 px, 64 spp: image mean / reference, r g b\n");
+    print("as the pbrt-v4 file says", as_file);
+    print("ChairFrame x 0.75, WindowFrame x 0.47 (Tungsten's albedos)", restored);
+    CHECK(as_file.y > 1.1);
+    CHECK(within(restored, 0.03));
+}
+
+TEST_CASE("reference deviations: veach-mis's plates lost an albedo of 0.3, and the reference is direct light", "[.][reference-deviations]") {
+    if (!have("veach-mis")) return;
+    // The plates' reflections of the lights, where a near-mirror shows the light's radiance times
+    // the Fresnel term, are 3.3 times the reference's in every channel alike: the same copper
+    // Fresnel colour scaled by 0.30, the kind of albedo multiplier classroom's conductors lost.
+    // Our pbrt maxdepth 1 (direct light only) is --max-depth 2 here; the file's maxdepth 3 is 4.
+    Scene s = load("veach-mis", 320);
+    const Image ref = reference("veach-mis", s.film.width, s.film.height);
+    // The top (smoothest, alpha 0.01) plate's reflection of the two larger lights, and the floor
+    // in front of the plates (image fractions at 320 x 180).
+    auto plate = [&](const Image& im) { return ratio(im, ref, 0.45, 0.42, 0.70, 0.45); };
+    auto floor = [&](const Image& im) { return ratio(im, ref, 0.80, 0.92, 1.00, 1.00); };
+    auto wall = [&](const Image& im) { return ratio(im, ref, 0.00, 0.05, 0.25, 0.35); };
+    const Image as_file = render_small(s, 64, 2);
+    for (const char* m : {"Smooth", "Glossy", "Rough", "SuperRough"}) material(s, m).albedo = glm::vec3(0.3f);
+    const Image direct = render_small(s, 64, 2);
+    const Image depth3 = render_small(s, 64, 3);
+    const Image full = render_small(s, 64, 4);
+    std::printf("veach-mis, 320 px, 64 spp: ours / reference, r g b\n");
+    print("top plate's highlights, plates as the file says, direct", plate(as_file));
+    print("top plate's highlights, plates x 0.3, direct", plate(direct));
+    print("image mean, plates as the file says, direct", ratio(as_file, ref));
+    print("image mean, plates x 0.3, direct (pbrt maxdepth 1)", ratio(direct, ref));
+    print("image mean, plates x 0.3, pbrt maxdepth 2", ratio(depth3, ref));
+    print("image mean, plates x 0.3, pbrt maxdepth 3 (the file's)", ratio(full, ref));
+    print("wall, plates x 0.3, direct", wall(direct));
+    print("wall, plates x 0.3, pbrt maxdepth 3", wall(full));
+    print("floor, plates x 0.3, direct", floor(direct));
+    print("floor, plates x 0.3, pbrt maxdepth 2", floor(depth3));
+    print("floor, plates x 0.3, pbrt maxdepth 3", floor(full));
+    // The three rougher plates (alpha 0.05, 0.1, 0.25): ours is dimmer at the highlights' centres
+    // and wider (GGX's long tails); our estimator is not the cause: BSDF sampling alone agrees.
+    auto rough = [&](const Image& a, const Image& b) { return ratio(a, b, 0.25, 0.52, 0.80, 0.92); };
+    const Image bsdf_only = render_small(s, 256, 2, Sampling::BsdfOnly);
+    print("rough plates, plates x 0.3, direct", rough(direct, ref));
+    print("rough plates: NEE + MIS / BSDF sampling alone (256 spp)", rough(direct, bsdf_only));
+    CHECK(within(rough(direct, bsdf_only), 0.03));
+    CHECK(plate(as_file).y > 3.0);
+    CHECK(within(plate(direct), 0.03));
+    CHECK(within(floor(direct), 0.06));
+    CHECK(floor(full).y > 1.15);
+}
+
+TEST_CASE("reference deviations: staircase2's colour shift is its stand-in wood, not the glass's medium", "[.][reference-deviations]") {
+    if (!have("staircase2")) return;
+    // textures/wood5.tga, the stairs' texture, is an 8 x 8 mid-grey stand-in (210 bytes, every
+    // value 128) where the reference has red-brown wood. Two renders with the same seed, the stairs
+    // once nearly black and once nearly white, differ exactly in the pixels whose paths touch the
+    // stairs; over the pixels they leave alone, the colour shift is gone.
+    Scene s = load("staircase2", 128);
+    const Image ref = reference("staircase2", s.film.width, s.film.height);
+    const Image as_file = render_small(s, 64, s.film.max_depth);
+    Material& wood = material(s, "Wood");
+    const Material file_wood = wood;
+    wood.albedo_texture = -1;
+    wood.albedo = glm::vec3(0.05f);
+    const Image dark = render_small(s, 64, s.film.max_depth);
+    wood.albedo = glm::vec3(0.9f);
+    const Image light = render_small(s, 64, s.film.max_depth);
+    glm::dvec3 a(0.0), b(0.0);
+    int untouched = 0;
+    for (int y = 0; y < ref.height; ++y)
+        for (int x = 0; x < ref.width; ++x)
+            if (dark.at(x, y) == light.at(x, y)) {
+                a += glm::dvec3(as_file.at(x, y));
+                b += glm::dvec3(ref.at(x, y));
+                ++untouched;
+            }
+    std::printf("staircase2, 128 px, 64 spp: ours / reference, r g b\n");
+    print("image mean, as the file says", ratio(as_file, ref));
+    std::printf("  pixels whose paths never touch the stairs: %d of %d\n", untouched, ref.width * ref.height);
+    print("those pixels' mean", a / b);
+    // The medium we ignore: "green", sigma_a (0.5, 0.2, 0.4) per unit, fills glass panels 0.031 to
+    // 0.037 units thick (Mesh014.ply's three boxes). As a tint of exp(-sigma_a 0.037 / 2) per
+    // crossing of a face (two per pass through a panel), which overstates every path but the
+    // most oblique, it moves the image mean by less than half a percent.
+    Material& glass = material(s, "Glass");
+    glass.albedo = glm::vec3(std::exp(-0.5f * 0.0185f), std::exp(-0.2f * 0.0185f), std::exp(-0.4f * 0.0185f));
+    wood = file_wood;
+    const Image tinted = render_small(s, 64, s.film.max_depth);
+    print("image mean with the medium as a tint / without", ratio(tinted, as_file));
+    CHECK(untouched > 200);
+    CHECK(std::fabs(ratio(as_file, ref).x - ratio(as_file, ref).z) > 0.03);
+    CHECK(within(a / b, 0.02));
+    CHECK(within(ratio(tinted, as_file), 0.005));
+}
+
+TEST_CASE("reference deviations: kitchen's blinds transmit (pbrt's diffusetransmission)", "[.][reference-deviations]") {
+    if (!have("kitchen")) return;
+    // The blinds before the window, as the importer reads them now and with their transmission
+    // dropped (as it read them before issue 31): the image mean and the blocks over the window.
+    Scene s = load("kitchen", 160);
+    const Image ref = reference("kitchen", s.film.width, s.film.height);
+    const Image now = render_small(s, 64, s.film.max_depth);
+    material(s, "Blinds").transmittance = glm::vec3(0.0f);
+    const Image dropped = render_small(s, 64, s.film.max_depth);
+    auto window = [&](const Image& im) { return ratio(im, ref, 0.70, 0.0, 0.90, 0.18); };
+    std::printf("kitchen, 160 px, 64 spp: ours / reference, r g b\n");
+    print("image mean, transmission dropped", ratio(dropped, ref));
+    print("image mean, transmission kept", ratio(now, ref));
+    print("the window's blocks, transmission dropped", window(dropped));
+    print("the window's blocks, transmission kept", window(now));
+    CHECK(window(now).y > window(dropped).y);
+    CHECK(ratio(now, ref).y > ratio(dropped, ref).y);
+}
+
+TEST_CASE("reference deviations: classroom rebuilt z-up, its sky under Rotate and ConcatTransform, renders as the original", "[.][reference-deviations]") {
+    if (!have("classroom")) return;
+    // The world under `Rotate 90 1 0 0` (y up -> z up), the camera under the inverse turn, and every
+    // world `Transform` (absolute) made a `ConcatTransform`, so the sky light sits under `Rotate` +
+    // pbrt-v3's z-up matrix: the same picture, if the importer composes the light's transforms
+    // and writes the map's frame right.
+    const std::filesystem::path dir = std::filesystem::temp_directory_path() / "sweeptrace-zup-classroom";
+    std::filesystem::remove_all(dir);
+    std::filesystem::create_directories(dir);
+    std::filesystem::create_directory_symlink(bitterli("classroom") / "models", dir / "models");
+    std::filesystem::create_directory_symlink(bitterli("classroom") / "textures", dir / "textures");
+    std::ifstream in(bitterli("classroom") / "scene-v4.pbrt");
+    std::ofstream out(dir / "scene-v4.pbrt");
+    std::string line;
+    bool world = false, camera_turned = false;
+    while (std::getline(in, line)) {
+        if (world) {
+            const std::size_t t = line.find("Transform [");
+            if (t != std::string::npos && (t == 0 || line[t - 1] == ' ')) line.insert(t, "Concat");
+        }
+        out << line << "\n";
+        if (!world && !camera_turned && line.rfind("Transform [", 0) == 0) {
+            out << "Rotate -90 1 0 0\n";
+            camera_turned = true;
+        }
+        if (line.rfind("WorldBegin", 0) == 0) {
+            out << "Rotate 90 1 0 0\n";
+            world = true;
+        }
+    }
+    out.close();
+    REQUIRE(camera_turned);
+    std::vector<std::string> warnings;
+    Scene z = load_pbrt_scene(dir / "scene-v4.pbrt", false, warnings);
+    z.film.height = static_cast<int>(std::lround(static_cast<double>(z.film.height) * 160 / z.film.width));
+    z.film.width = 160;
+    const Scene y = load("classroom", 160);
+    const glm::dvec3 r = ratio(render_small(z, 32, 4), render_small(y, 32, 4));
+    std::printf("classroom rebuilt z-up / the original, 160 px, 32 spp, depth 4\n");
+    print("image mean", r);
+    std::filesystem::remove_all(dir);
+    CHECK(within(r, 0.01));
+}
