@@ -5,26 +5,12 @@
 
 #include <glm/geometric.hpp>
 
-#include "raytracer/geometry/object_world_bounds.hpp"
 #include "raytracer/render/lights.hpp"
 #include "raytracer/render/sampling.hpp"
 
 namespace sweeptrace {
 
 namespace {
-
-// Radius of the sphere around the world bounds of every object (meshes by their vertices' box),
-// at least 1 so that a scene of points still gives a directional light a weight.
-float scene_radius(const Scene& scene) {
-    collision::Bounds3 world;
-    for (const Object& obj : scene.objects) {
-        const collision::Bounds3 box = object_world_bounds(obj, scene.meshes);
-        if (!box.empty()) world.extend(box);
-    }
-    if (world.empty()) return 1.0f;
-    const float r = 0.5f * glm::length(world.hi - world.lo);
-    return std::isfinite(r) && r > 1.0f ? r : 1.0f;
-}
 
 // pbrt-v4's smooth spotlight edge: 1 inside the falloff start, 0 outside the cone, smoothstep
 // in cos(theta) between.
@@ -38,7 +24,6 @@ float spot_falloff(const SceneLight& l, float cos_theta) {
 }  // namespace
 
 void LightSet::add_scene_lights(const Scene& scene, std::vector<float>& weights) {
-    float radius = -1.0f;
     for (const SceneLight& sl : scene.lights) {
         NonSurfaceLight l;
         l.light = &sl;
@@ -49,8 +34,7 @@ void LightSet::add_scene_lights(const Scene& scene, std::vector<float>& weights)
             weight = 2.0f * luminance(sl.intensity) * (1.0f - 0.5f * (sl.cos_falloff_start + sl.cos_cone));
             break;
         case SceneLight::Type::Directional: {
-            if (radius < 0.0f) radius = scene_radius(scene);
-            weight = luminance(sl.irradiance) * radius * radius;
+            weight = luminance(sl.irradiance);  // E: lights at infinity split their fixed share by it
             if (sl.half_angle > 0.0f) {
                 Sun sun;
                 sun.to_light = -sl.direction;
@@ -73,8 +57,7 @@ void LightSet::add_scene_lights(const Scene& scene, std::vector<float>& weights)
     }
     if (scene.background.kind == Background::Kind::Environment && scene.background.environment) {
         auto env = std::make_shared<const EnvironmentLight>(scene.background);
-        if (radius < 0.0f) radius = scene_radius(scene);
-        const float weight = static_cast<float>(env->luminance_integral()) * radius * radius;
+        const float weight = static_cast<float>(env->luminance_integral());  // its E, as above
         if (env->emits() && weight > 0.0f && std::isfinite(weight)) {
             env_ = std::move(env);
             weights.push_back(weight);
