@@ -26,6 +26,7 @@
 #include "raytracer/render/guiding_sd_tree.hpp"
 #include "raytracer/render/integrator.hpp"
 #include "raytracer/render/lights.hpp"
+#include "raytracer/render/path_forensics.hpp"
 #include "raytracer/render/planted_defect.hpp"
 #include "raytracer/render/sampler.hpp"
 
@@ -59,6 +60,7 @@ public:
             integrator_.set_guide(&guide_);
             guide_.set_paths_per_pass(sum_.size());
         }
+        if (opt.forensics != nullptr) opt.forensics->start(width_, height_, kTileSize, lights_);
     }
 
     void run() {
@@ -84,9 +86,13 @@ public:
                         tiles_done_.fetch_add(1, std::memory_order_relaxed);
                     }
                 });
-                if (abandoned.load()) break;
+                if (abandoned.load()) {
+                    if (opt_.forensics != nullptr) opt_.forensics->drop_pass();
+                    break;
+                }
                 if (opt_.guiding && guide_.training()) learn(s + 1);
                 accumulate_pass();
+                if (opt_.forensics != nullptr) opt_.forensics->end_pass();
                 completed_spp_.store(s + 1, std::memory_order_release);
             }
         });
@@ -167,6 +173,8 @@ private:
         std::vector<GuideRecord>* records =
             opt_.guiding && guide_.training() ? &tile_records_[static_cast<std::size_t>(tile)] : nullptr;
         if (records != nullptr) records->clear();
+        PathTally tally_storage;
+        PathTally* tally = opt_.forensics != nullptr ? &tally_storage : nullptr;
         for (int y = y0; y < y1; ++y) {
             for (int x = x0; x < x1; ++x) {
                 const std::size_t pixel = static_cast<std::size_t>(y) * width_ + x;
@@ -178,12 +186,14 @@ private:
                 const float fy = static_cast<float>(y) + film.dy;
                 // Drawn only with a shutter, so still scenes take exactly the numbers they did.
                 const float time = camera_.has_shutter() ? camera_.shutter_fraction(sampler.get1d(sample_dim::kTime)) : 0.0f;
+                if (tally != nullptr) tally->begin();
                 glm::vec3 l = film.weight * limited(integrator_.radiance(camera_.generate(fx, fy, lens.x, lens.y), sampler,
-                                                                         rays, records, time));
+                                                                         rays, records, time, tally));
                 if (!collision::finite(l)) {
                     l = glm::vec3(0.0f);
                     ++nonfinite;
                 }
+                if (tally != nullptr) opt_.forensics->finish_sample(tile, *tally, l);
                 pass_[pixel] = l;
             }
         }
