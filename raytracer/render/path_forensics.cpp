@@ -76,6 +76,9 @@ void PathForensics::start(int width, int height, int tile_size, const LightSet& 
     width_ = width;
     height_ = height;
     regions_.clear();
+    pixel_sum_.assign(static_cast<std::size_t>(width) * height, 0.0);
+    pixel_pass_.assign(pixel_sum_.size(), 0.0);
+    passes_ = 0;
     for (int y0 = 0; y0 < height; y0 += tile_size)
         for (int x0 = 0; x0 < width; x0 += tile_size) {
             Region r;
@@ -87,18 +90,21 @@ void PathForensics::start(int width, int height, int tile_size, const LightSet& 
         }
 }
 
-void PathForensics::finish_sample(int tile, const PathTally& tally, const glm::vec3& sample) {
+void PathForensics::finish_sample(int tile, std::size_t pixel, const PathTally& tally, const glm::vec3& sample) {
     Region& r = regions_[static_cast<std::size_t>(tile)];
     ++r.pending_samples;
+    const double x = luminance(sample);
+    pixel_pass_[pixel] = x;
     double raw = 0.0;
     for (const PathTally::Found& f : tally.found()) raw += f.value;
-    const double x = luminance(sample);
     if (raw == 0.0 || x == 0.0) return;
+    // The pixel's mean over the passes before this one: independent of this sample.
+    const double m = passes_ > 0 ? pixel_sum_[pixel] / passes_ : 0.0;
     // The filter weight, a film clamp or a non-finite sample made black: scale every part alike.
     const double scale = x / raw;
     for (const PathTally::Found& f : tally.found()) {
         const double c = scale * f.value;
-        r.pending.push_back({f.key, PathMoments{c * x, c}});
+        r.pending.push_back({f.key, PathMoments{passes_ > 0 ? c * (x - m) : 0.0, c * x, c}});
     }
 }
 
@@ -106,13 +112,17 @@ void PathForensics::end_pass() {
     for (Region& r : regions_) {
         for (const auto& [key, m] : r.pending) {
             PathMoments& t = r.totals[key];
+            t.variance += m.variance;
             t.second += m.second;
             t.first += m.first;
         }
         r.pending.clear();
         r.samples += r.pending_samples;
+        if (passes_ > 0) r.variance_samples += r.pending_samples;
         r.pending_samples = 0;
     }
+    for (std::size_t i = 0; i < pixel_sum_.size(); ++i) pixel_sum_[i] += pixel_pass_[i];
+    ++passes_;
 }
 
 void PathForensics::drop_pass() {
@@ -148,6 +158,7 @@ std::map<PathKey, PathMoments> PathForensics::image_totals(bool by_path) const {
     for (const Region& r : regions_)
         for (const auto& [key, m] : r.totals) {
             PathMoments& t = all[by_path ? path_only(key) : key];
+            t.variance += m.variance;
             t.second += m.second;
             t.first += m.first;
         }
@@ -159,6 +170,7 @@ PathForensics::Totals PathForensics::totals() const {
     for (const Region& r : regions_) {
         t.samples += r.samples;
         for (const auto& [key, m] : r.totals) {
+            t.variance += m.variance;
             t.second += m.second;
             t.first += m.first;
         }
@@ -168,8 +180,9 @@ PathForensics::Totals PathForensics::totals() const {
 
 std::vector<PathForensics::Row> PathForensics::rows(bool by_path, std::size_t limit) const {
     const std::map<PathKey, PathMoments> all = image_totals(by_path);
-    double second = 0.0, first = 0.0;
+    double variance = 0.0, second = 0.0, first = 0.0;
     for (const auto& [key, m] : all) {
+        variance += m.variance;
         second += m.second;
         first += m.first;
     }
@@ -179,13 +192,14 @@ std::vector<PathForensics::Row> PathForensics::rows(bool by_path, std::size_t li
         row.path = path_text(key);
         row.light = by_path ? "" : light_text(key.light);
         row.material = by_path ? "" : material_text(key.material);
+        row.variance = variance > 0.0 ? m.variance / variance : 0.0;
         row.second = second > 0.0 ? m.second / second : 0.0;
         row.first = first > 0.0 ? m.first / first : 0.0;
         out.push_back(std::move(row));
     }
     // Ties broken by the text, so the order never depends on anything but the sums.
     std::stable_sort(out.begin(), out.end(), [](const Row& a, const Row& b) {
-        if (a.second != b.second) return a.second > b.second;
+        if (a.variance != b.variance) return a.variance > b.variance;
         return std::tie(a.path, a.light, a.material) < std::tie(b.path, b.light, b.material);
     });
     if (out.size() > limit) out.resize(limit);
@@ -195,26 +209,28 @@ std::vector<PathForensics::Row> PathForensics::rows(bool by_path, std::size_t li
 std::string PathForensics::table(std::size_t limit) const {
     std::ostringstream s;
     char buf[512];
-    s << "noise forensics: share of the image's second moment (E[X^2]) and of its mean, by path type\n";
-    std::snprintf(buf, sizeof buf, "  %-26s %8s %8s\n", "path (light->eye)", "E[X^2]", "mean");
+    s << "noise forensics: share of the pixels' variance, of the second moment E[X^2] and of the mean, by path type\n";
+    std::snprintf(buf, sizeof buf, "  %-26s %8s %8s %8s\n", "path (light->eye)", "variance", "E[X^2]", "mean");
     s << buf;
     for (const Row& r : rows(true, limit)) {
-        std::snprintf(buf, sizeof buf, "  %-26s %7.1f%% %7.1f%%\n", r.path.c_str(), 100.0 * r.second, 100.0 * r.first);
+        std::snprintf(buf, sizeof buf, "  %-26s %7.1f%% %7.1f%% %7.1f%%\n", r.path.c_str(), 100.0 * r.variance,
+                      100.0 * r.second, 100.0 * r.first);
         s << buf;
     }
     s << "by path type, light, and the material of the vertex with the largest throughput factor\n";
-    std::snprintf(buf, sizeof buf, "  %-26s %-28s %-20s %8s %8s\n", "path", "light", "largest vertex", "E[X^2]", "mean");
+    std::snprintf(buf, sizeof buf, "  %-26s %-28s %-20s %8s %8s %8s\n", "path", "light", "largest vertex", "variance",
+                  "E[X^2]", "mean");
     s << buf;
     for (const Row& r : rows(false, limit)) {
-        std::snprintf(buf, sizeof buf, "  %-26s %-28.28s %-20.20s %7.1f%% %7.1f%%\n", r.path.c_str(), r.light.c_str(),
-                      r.material.c_str(), 100.0 * r.second, 100.0 * r.first);
+        std::snprintf(buf, sizeof buf, "  %-26s %-28.28s %-20.20s %7.1f%% %7.1f%% %7.1f%%\n", r.path.c_str(),
+                      r.light.c_str(), r.material.c_str(), 100.0 * r.variance, 100.0 * r.second, 100.0 * r.first);
         s << buf;
     }
     return s.str();
 }
 
 // The path types that dominate the most regions get the colours (ties: the larger share of the
-// image's second moment first), so that the picture shows as few grey "other" regions as it can.
+// image's variance first), so that the picture shows as few grey "other" regions as it can.
 std::vector<std::string> PathForensics::palette_order() const {
     std::vector<Row> all = rows(true, std::numeric_limits<std::size_t>::max());
     std::map<std::string, int> regions;
@@ -230,7 +246,7 @@ std::vector<std::string> PathForensics::palette_order() const {
 
 std::string PathForensics::dominant(const Region& r) const {
     std::map<PathKey, double> by_path;
-    for (const auto& [key, m] : r.totals) by_path[path_only(key)] += m.second;
+    for (const auto& [key, m] : r.totals) by_path[path_only(key)] += m.variance;
     const PathKey* best = nullptr;
     double best_value = 0.0;
     for (const auto& [key, v] : by_path)
@@ -252,13 +268,14 @@ std::string PathForensics::json(int spp) const {
     };
     std::ostringstream s;
     s << "{\n  \"width\": " << width_ << ", \"height\": " << height_ << ", \"spp\": " << spp << ",\n";
-    s << "  \"attribution\": \"each contribution c_k of a sample X = sum c_k (luminance) is credited c_k X; the "
-         "credits sum to X^2, so a type's share is its share of the second moment E[X^2]\",\n";
+    s << "  \"attribution\": \"each contribution c_k of a sample X = sum c_k (luminance) is credited c_k (X - m), m the "
+         "pixel's mean over the earlier passes (their sums are Cov(c_k, X), which add up to Var X: variance_share), and "
+         "c_k X (sums add up to E[X^2]: second_moment_share)\",\n";
     s << "  \"path_types\": [";
     bool first = true;
     for (const Row& r : rows(true, 1000)) {
-        s << (first ? "\n" : ",\n") << "    {\"path\": " << json_string(r.path) << ", \"second_moment_share\": "
-          << number(r.second) << ", \"mean_share\": " << number(r.first) << ", \"colour\": " << colour_of(r.path)
+        s << (first ? "\n" : ",\n") << "    {\"path\": " << json_string(r.path) << ", \"variance_share\": "
+          << number(r.variance) << ", \"second_moment_share\": " << number(r.second) << ", \"mean_share\": " << number(r.first) << ", \"colour\": " << colour_of(r.path)
           << "}";
         first = false;
     }
@@ -266,34 +283,36 @@ std::string PathForensics::json(int spp) const {
     first = true;
     for (const Row& r : rows(false, 50)) {
         s << (first ? "\n" : ",\n") << "    {\"path\": " << json_string(r.path) << ", \"light\": " << json_string(r.light)
-          << ", \"largest_vertex_material\": " << json_string(r.material) << ", \"second_moment_share\": "
-          << number(r.second) << ", \"mean_share\": " << number(r.first) << "}";
+          << ", \"largest_vertex_material\": " << json_string(r.material) << ", \"variance_share\": "
+          << number(r.variance) << ", \"second_moment_share\": " << number(r.second) << ", \"mean_share\": " << number(r.first) << "}";
         first = false;
     }
     s << "\n  ],\n  \"regions\": [";
     first = true;
     for (const Region& r : regions_) {
-        double second = 0.0, mean = 0.0;
+        double variance = 0.0, second = 0.0, mean = 0.0;
         for (const auto& [key, m] : r.totals) {
+            variance += m.variance;
             second += m.second;
             mean += m.first;
         }
         const double n = r.samples > 0 ? double(r.samples) : 1.0;
+        const double nv = r.variance_samples > 0 ? double(r.variance_samples) : 1.0;
         s << (first ? "\n" : ",\n") << "    {\"x\": " << r.x0 << ", \"y\": " << r.y0 << ", \"width\": " << r.x1 - r.x0
           << ", \"height\": " << r.y1 - r.y0 << ", \"samples\": " << r.samples << ", \"mean\": " << number(mean / n)
-          << ", \"second_moment\": " << number(second / n) << ", \"dominant\": " << json_string(dominant(r))
+          << ", \"variance\": " << number(variance / nv) << ", \"second_moment\": " << number(second / n) << ", \"dominant\": " << json_string(dominant(r))
           << ", \"top\": [";
         first = false;
         std::vector<std::pair<PathKey, PathMoments>> top(r.totals.begin(), r.totals.end());
         std::stable_sort(top.begin(), top.end(),
-                         [](const auto& a, const auto& b) { return a.second.second > b.second.second; });
+                         [](const auto& a, const auto& b) { return a.second.variance > b.second.variance; });
         if (top.size() > 5) top.resize(5);
         bool first_top = true;
         for (const auto& [key, m] : top) {
             s << (first_top ? "" : ", ") << "{\"path\": " << json_string(path_text(key))
               << ", \"light\": " << json_string(light_text(key.light))
               << ", \"largest_vertex_material\": " << json_string(material_text(key.material))
-              << ", \"second_moment_share\": " << number(second > 0.0 ? m.second / second : 0.0) << "}";
+              << ", \"variance_share\": " << number(variance > 0.0 ? m.variance / variance : 0.0) << "}";
             first_top = false;
         }
         s << "]}";

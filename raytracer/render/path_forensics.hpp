@@ -12,14 +12,19 @@
 //     |f cos| w / pdf of the light sample, w its MIS weight).
 //
 // Attribution. A sample's value X (luminance, after the pixel filter's weight and film clamps)
-// is the sum of its contributions c_k. Type k is credited c_k X: these sum to X^2 exactly, are
-// never negative (c_k, X >= 0), and a firefly's X^2 goes almost whole to the contribution that
-// made it. Summed over a region's samples they split the region's second moment E[X^2] =
-// Var[X] + E[X]^2 among the types; where noise shows, E[X^2] is mostly variance. The simpler
-// sum of c_k^2 drops the cross terms (two types meeting in one sample) and no longer adds up to
-// anything measurable, which is why it is not used. Each type's share of the mean, sum c_k, is
-// reported beside it, so a type that carries much more of the second moment than of the mean
-// stands out as the noisy one.
+// is the sum of its contributions c_k. Two credits per contribution:
+//   - variance: c_k (X - m), m the mean of the pixel's samples from the passes before this one.
+//     m is independent of this sample, so E[c_k (X - m)] = E[c_k X] - E[c_k] E[X] = Cov(c_k, X),
+//     and these covariances add up to Var(X) exactly: each type's share of the pixel's variance,
+//     its noise. Credited from the second pass on (the first has no m); a single credit can be
+//     negative, the sums over many samples are the covariances. Regions are ranked and coloured
+//     by this share.
+//   - second moment: c_k X, which sums to X^2 and is never negative; its shares split E[X^2] =
+//     Var(X) + E[X]^2, so a bright, smooth type (an emitter seen directly) also ranks high here
+//     although it is not noisy: the reason the variance credit is the one used. (Summing c_k^2
+//     instead drops the cross terms of two types meeting in one sample and adds up to nothing
+//     measurable.)
+// Each type's share of the mean, sum c_k, is reported beside them.
 //
 // Regions are the renderer's 16x16 tiles: a tile is rendered by one thread per pass, so each
 // region's sums are added in one fixed order (pixel, then contribution), passes are merged only
@@ -52,8 +57,9 @@ struct PathKey {
 };
 
 struct PathMoments {
-    double second = 0.0;  // sum of c_k X
-    double first = 0.0;   // sum of c_k
+    double variance = 0.0;  // sum of c_k (X - m), from the second pass on
+    double second = 0.0;    // sum of c_k X
+    double first = 0.0;     // sum of c_k
 };
 
 // One sample's path, as the integrator builds it. One per thread; begin() before each sample.
@@ -123,8 +129,8 @@ public:
     // Called by the renderer before the first pass: its tiles are the regions, its lights' names
     // the ones reported.
     void start(int width, int height, int tile_size, const LightSet& lights);
-    // A sample of `tile` finished with value `sample` (after filter weight and clamps).
-    void finish_sample(int tile, const PathTally& tally, const glm::vec3& sample);
+    // A sample of `pixel` in `tile` finished with value `sample` (after filter weight and clamps).
+    void finish_sample(int tile, std::size_t pixel, const PathTally& tally, const glm::vec3& sample);
     // The pass all tiles finished joins the totals; a dropped pass is forgotten.
     void end_pass();
     void drop_pass();
@@ -136,15 +142,16 @@ public:
 
     struct Row {
         std::string path, light, material;
-        double second = 0.0, first = 0.0;  // shares of the totals, in [0, 1]
+        double variance = 0.0, second = 0.0, first = 0.0;  // shares of the totals
     };
-    // Sums over the image: of c_k X (= sum of X^2), of c_k (= sum of X), and the samples.
+    // Sums over the image: of c_k (X - m) (= sum of X (X - m), samples of the second pass on),
+    // of c_k X (= sum of X^2), of c_k (= sum of X), and the samples.
     struct Totals {
-        double second = 0.0, first = 0.0;
+        double variance = 0.0, second = 0.0, first = 0.0;
         std::uint64_t samples = 0;
     };
     Totals totals() const;
-    // Totals over the image, largest share of the second moment first; by_path: path types only.
+    // Totals over the image, largest share of the variance first; by_path: path types only.
     std::vector<Row> rows(bool by_path, std::size_t limit) const;
     // The terminal table.
     std::string table(std::size_t limit = 8) const;
@@ -157,7 +164,7 @@ public:
 private:
     struct Region {
         int x0 = 0, y0 = 0, x1 = 0, y1 = 0;
-        std::uint64_t samples = 0, pending_samples = 0;
+        std::uint64_t samples = 0, pending_samples = 0, variance_samples = 0;  // the last: passes 2 on
         std::map<PathKey, PathMoments> totals;
         std::vector<std::pair<PathKey, PathMoments>> pending;  // the pass in flight
     };
@@ -174,6 +181,9 @@ private:
     std::vector<std::string> light_names_;
     int width_ = 0, height_ = 0;
     std::vector<Region> regions_;
+    std::vector<double> pixel_sum_;   // luminance of the pixel's samples over the completed passes
+    std::vector<double> pixel_pass_;  // the pass in flight's sample of each pixel
+    int passes_ = 0;                  // completed
 };
 
 }  // namespace sweeptrace

@@ -193,7 +193,7 @@ private:
                     l = glm::vec3(0.0f);
                     ++nonfinite;
                 }
-                if (tally != nullptr) opt_.forensics->finish_sample(tile, *tally, l);
+                if (tally != nullptr) opt_.forensics->finish_sample(tile, pixel, *tally, l);
                 pass_[pixel] = l;
             }
         }

@@ -42,9 +42,9 @@ struct Run {
     std::vector<PathForensics::Row> types;
 };
 
-Run run(const Scene& scene, const Accel& accel, int threads, bool on, int max_depth = 4) {
+Run run(const Scene& scene, const Accel& accel, int threads, bool on, int max_depth = 4, int spp = 6) {
     RenderOptions o;
-    o.spp = 6;
+    o.spp = spp;
     o.max_depth = max_depth;
     o.seed = 5;
     o.threads = threads;
@@ -79,8 +79,8 @@ TEST_CASE("forensics: the credits sum to the samples' second moment and mean, an
           "[render][forensics]") {
     const Scene scene = lit_room();
     const auto accel = make_accel(AccelKind::Bvh, scene);
-    const Run r = run(scene, *accel, 2, true);
-    const int spp = 6;
+    const int spp = 32;
+    const Run r = run(scene, *accel, 2, true, 4, spp);
     // From the result: sum of X = spp * sum of pixel means; sum of X^2 from the unbiased variance
     // of each pixel's mean, var * spp * (spp - 1) + spp * mean^2 (red channel = luminance).
     double sum_x = 0.0, sum_x2 = 0.0;
@@ -92,6 +92,13 @@ TEST_CASE("forensics: the credits sum to the samples' second moment and mean, an
     CHECK(r.totals.samples == r.result.image.pixels.size() * spp);
     CHECK(r.totals.first == Approx(sum_x).epsilon(1e-4));
     CHECK(r.totals.second == Approx(sum_x2).epsilon(1e-4));
+    // The variance credits, sum over passes 2..n of X (X - m), have the mean (n - 1) Var X per
+    // pixel; the unbiased sample variance s^2 = var * spp estimates Var X from the same samples.
+    double expected_variance = 0.0;
+    for (const glm::vec3& v : r.result.variance.pixels) expected_variance += (spp - 1) * double(v.r) * spp;
+    INFO("variance credits " << r.totals.variance << ", (n - 1) s^2 summed " << expected_variance);
+    CHECK(r.totals.variance > 0.7 * expected_variance);
+    CHECK(r.totals.variance < 1.3 * expected_variance);
     // Diffuse floor, mirror ball, emitter: D and S vertices only, and the lamp is in view (L E).
     std::set<std::string> seen;
     for (const PathForensics::Row& row : r.types) {
