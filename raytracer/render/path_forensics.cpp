@@ -61,6 +61,20 @@ PathTally::Kind PathTally::kind_of(const Material& m, bool delta_lobe) {
     return m.type == Material::Type::Diffuse ? Diffuse : Glossy;
 }
 
+void PathTally::scatter(Kind kind, std::uint32_t material, float factor) {
+    push(key_, kind);
+    note_factor(material, factor);
+}
+
+void PathTally::add(const glm::vec3& c, std::int32_t light) { add_with(key_, largest_material_, c, light); }
+
+void PathTally::add_light_sample(Kind kind, std::uint32_t material, float factor, const glm::vec3& c, std::int32_t light) {
+    PathKey k = key_;
+    push(k, kind);
+    const std::int32_t m = factor > largest_ ? static_cast<std::int32_t>(material) : largest_material_;
+    add_with(k, m, c, light);
+}
+
 void PathTally::add_with(const PathKey& k, std::int32_t material, const glm::vec3& c, std::int32_t light) {
     const float v = luminance(c);
     if (!(v != 0.0f)) return;

@@ -75,19 +75,11 @@ public:
         found_.clear();
     }
     // A vertex scattered the path on (BSDF sample with throughput factor `factor`).
-    void scatter(Kind kind, std::uint32_t material, float factor) {
-        push(key_, kind);
-        note_factor(material, factor);
-    }
+    void scatter(Kind kind, std::uint32_t material, float factor);
     // A contribution `c` ending at `light` (LightSet's index; PathKey::kBackground).
-    void add(const glm::vec3& c, std::int32_t light) { add_with(key_, largest_material_, c, light); }
+    void add(const glm::vec3& c, std::int32_t light);
     // A light sample's contribution: the current vertex (not yet scattered) is part of its path.
-    void add_light_sample(Kind kind, std::uint32_t material, float factor, const glm::vec3& c, std::int32_t light) {
-        PathKey k = key_;
-        push(k, kind);
-        const std::int32_t m = factor > largest_ ? static_cast<std::int32_t>(material) : largest_material_;
-        add_with(k, m, c, light);
-    }
+    void add_light_sample(Kind kind, std::uint32_t material, float factor, const glm::vec3& c, std::int32_t light);
 
     struct Found {
         PathKey key;
