@@ -28,6 +28,9 @@ import time
 
 import numpy as np
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from equal_time import read_pfm  # noqa: E402  (the PFM reader of the guiding study)
+
 SHARED = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "shared", "bitterli")
 REPO = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..")
 # (name, scene file, target ratio new / old from the issue)
@@ -39,16 +42,6 @@ SCENES = [
     ("smallpt", os.path.join(REPO, "scenes", "smallpt.json"), 0.7),
     ("cornell-box", os.path.join(REPO, "scenes", "cornell-box.json"), 0.7),
 ]
-
-
-def read_pfm(path):
-    with open(path, "rb") as f:
-        if f.readline().strip() != b"PF":
-            raise SystemExit(f"equal-time-interiors: {path}: not a colour PFM")
-        w, h = (int(v) for v in f.readline().split())
-        scale = float(f.readline())
-        data = np.fromfile(f, dtype="<f4" if scale < 0 else ">f4")
-    return data.reshape(h, w, 3)[::-1].astype(np.float64)
 
 
 def render(binary, scene, args, seconds, seed, out):
