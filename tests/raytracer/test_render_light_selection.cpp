@@ -87,6 +87,12 @@ TEST_CASE("light selection: lights at infinity share a fixed part by irradiance,
             } else if (ls.light == 2) {
                 const float omc = 1.0f - std::cos(0.2f);
                 REQUIRE(ls.pdf == Approx(expected[2] * uniform_cone_pdf(omc)).epsilon(1e-3));
+                // A BSDF-sampled ray that escapes along ls.wi with the same density: the sun's
+                // MIS weight is 1/2 only if escaped_radiance uses that same selection probability;
+                // the map's, lit behind it, by its own.
+                const double b = ls.pdf, p_env = expected[3] * env.pdf(ls.wi);
+                const double want = 0.5 * luminance(ls.radiance) + luminance(env.radiance(ls.wi)) * b * b / (b * b + p_env * p_env);
+                REQUIRE(luminance(lights.escaped_radiance(ls.wi, ls.pdf)) == Approx(want).epsilon(1e-3));
             } else {
                 SurfaceHit h;
                 h.object = ls.light == 0 ? dim : bright;
