@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <memory>
 #include <optional>
 #include <string>
@@ -26,6 +27,8 @@
 #include "raytracer/cli/output_guard.hpp"
 #include "raytracer/cli/render_limits.hpp"
 #include "raytracer/input_error.hpp"
+#include "raytracer/image/atomic_file.hpp"
+#include "raytracer/render/path_forensics.hpp"
 #include "raytracer/render/renderer.hpp"
 #include "raytracer/render/tone_map.hpp"
 #include "raytracer/scene/emitter_check.hpp"
@@ -43,6 +46,7 @@ struct RenderArgs {
     std::string scene;
     std::string output;
     std::string variance;  // optional: per-pixel variance of the pixel means (float formats only)
+    std::string forensics;  // optional: noise forensics report (.json), its picture beside it
     RenderLimits limits;   // --width --height --spp --max-depth --seed --threads --max-memory
     double time = 0.0;
     std::string accel = "bvh";
@@ -116,6 +120,12 @@ private:
     int printed_tenths_ = 0;
 };
 
+// The picture of a forensics report: beside it, `NAME-regions.png` for `NAME.json`.
+std::filesystem::path forensics_picture(const std::filesystem::path& report) {
+    std::filesystem::path p = report;
+    return p.replace_filename(report.stem().string() + "-regions.png");
+}
+
 void require(bool ok, const std::string& message) {
     if (!ok) throw InputError(message);
 }
@@ -163,6 +173,16 @@ int run_render(const RenderArgs& a) {
             require(vdir.empty() || std::filesystem::is_directory(vdir, ec),
                     "--variance '" + a.variance + "': directory '" + vdir.string() + "' does not exist");
         }
+        if (!a.forensics.empty()) {
+            const std::filesystem::path f(a.forensics);
+            require(f.extension() == ".json", "--forensics '" + a.forensics + "': the report is a .json file");
+            const std::filesystem::path fdir = f.parent_path();
+            require(fdir.empty() || std::filesystem::is_directory(fdir, ec),
+                    "--forensics '" + a.forensics + "': directory '" + fdir.string() + "' does not exist");
+            require(forensics_picture(f) != out && f != out && (a.variance.empty() || (f != a.variance && forensics_picture(f) != a.variance)),
+                    "--forensics '" + a.forensics + "': its report or picture (" + forensics_picture(f).string() +
+                        ") would overwrite another output");
+        }
     }
 
     Scene scene = pbrt ? std::move(*pbrt_scene) : load_scene(scene_path);
@@ -174,6 +194,10 @@ int run_render(const RenderArgs& a) {
     for (const Mesh& m : scene.meshes) inputs.push_back({"mesh", m.source});
     refuse_output_over_input(out, inputs);
     if (!a.variance.empty()) refuse_output_over_input(a.variance, inputs);
+    if (!a.forensics.empty()) {
+        refuse_output_over_input(a.forensics, inputs);
+        refuse_output_over_input(forensics_picture(a.forensics), inputs);
+    }
     check_render_memory(scene, a.limits.memory_limit());
 
     // A farm part: which samples, and the render they belong to; a re-run task skips a finished one.
@@ -202,6 +226,8 @@ int run_render(const RenderArgs& a) {
     // Guiding is the path tracer's: a scene that asks for it is rendered unguided by bdpt, and
     // asking for both on the command line is an error.
     require(!(a.guiding == "on" && opt.integrator != IntegratorKind::Path), "--guiding on needs the path integrator");
+    require(a.forensics.empty() || opt.integrator == IntegratorKind::Path,
+            "--forensics needs the path integrator: it follows a camera path's vertices, and bdpt's light paths have none of them");
     opt.guiding = opt.integrator == IntegratorKind::Path && (a.guiding.empty() ? scene.film.guiding : a.guiding == "on");
     if (!a.samples.empty()) {
         // A part must be exactly the samples [A, B) a whole render draws: a time budget would cut
@@ -216,6 +242,8 @@ int run_render(const RenderArgs& a) {
     ProgressDisplay progress(isatty(fileno(stderr)) != 0, std::uint64_t(scene.film.width) * scene.film.height);
     if (!a.quiet) opt.progress = [&progress](const RenderProgress& p) { progress.update(p); };
 
+    std::optional<PathForensics> forensics;
+    if (!a.forensics.empty()) opt.forensics = &forensics.emplace(scene);
     const RenderResult result = render(scene, *accel, opt);
     if (!a.quiet) progress.finish();
 
@@ -233,6 +261,17 @@ int run_render(const RenderArgs& a) {
     if (!a.samples.empty()) write_part(result, identity, range.begin, out);
     else write_image(is_display_format(out) ? to_display(result.image, scene.film.exposure, scene.film.tone_curve) : result.image, out);
     if (!a.variance.empty()) write_image(result.variance, a.variance);
+    if (forensics) {
+        const std::string text = forensics->json(st.completed_spp);
+        write_atomically(a.forensics, [&](const std::filesystem::path& temp) {
+            std::ofstream f(temp, std::ios::binary);
+            f << text;
+            if (!f) throw InputError("--forensics '" + a.forensics + "': could not write it");
+        });
+        write_image(forensics->picture(result.image), forensics_picture(a.forensics));
+        std::fputs(forensics->table().c_str(), stdout);
+        std::fflush(stdout);
+    }
     if (st.cancelled)
         std::fprintf(stderr, "sweeptrace: interrupted: wrote %s with %d of %d samples per pixel\n", out.string().c_str(),
                      st.completed_spp, opt.spp);
@@ -268,6 +307,10 @@ void add_render_command(CLI::App& app, int& exit_code) {
                     "variance / spp, from the same samples (needs spp >= 2); for `diff --variance-a/-b`. Exact for "
                     "--sampler independent; under sobol (stratified) the true variance is smaller, so the file "
                     "overstates it and diff's noise test is conservative");
+    cmd->add_option("--forensics", args->forensics,
+                    "Noise forensics: also write FILE.json, which path types (L D S E ...), lights and materials carry "
+                    "each 16x16 region's second moment, and FILE-regions.png, each region coloured by its dominant "
+                    "path type; print the image's table (docs/noise-forensics.md). The image is unchanged");
     args->limits.add_options(*cmd);
     args->time_opt = cmd->add_option("--time", args->time,
                                      "Time budget in seconds (wall clock): whole passes of 1 spp until it is spent, at "

@@ -20,16 +20,19 @@
 // and return nothing (the shadow ray or the emission side test rejects them): wasteful for closed
 // shapes, but unbiased, and the BSDF strategy covers the same directions in MIS.
 //
-// A light is chosen with probability proportional to its (estimated) power: luminance of the
-// emission times area (times 2 when two-sided), the area as the shape's home states it (a
-// stand-in for curved shapes under non-uniform scales): any positive weight is unbiased, and
-// pdf() uses exactly the probabilities sample() used.
+// Which light: the lights at infinity (directional lights, suns, the environment) together get
+// the share pbrt-v4's BVHLightSampler gives them, n_infinite / (n_infinite + 1) when the scene
+// also has lights at finite places (else all of it), and split it by the irradiance E each gives
+// a disc facing it (int lum(L) d omega for the environment); the finite ones (emissive objects,
+// points, spots) share the rest in proportion to their (estimated) power / pi: an emitter's
+// luminance of the emission times area (times 2 when two-sided, the area as the shape's home
+// states it, a stand-in for curved shapes under non-uniform scales), a point light 4 I, a spot
+// 2 I (1 - (cos_start + cos_cone) / 2). A power for a light at infinity would need the scene's
+// size (E pi R^2): the room around a lamp, not the light, then set the sky's share. Any positive
+// probabilities are unbiased, and pdf() uses exactly the probabilities sample() used.
 //
 // The scene's "lights" (scene/scene_light.hpp; render/scene_lights.cpp) join the same selection,
-// after the emissive objects, weighted by power / pi like them (an emitter's weight, luminance x
-// area, is its power / pi): a point light 4 I, a spot 2 I (1 - (cos_start + cos_cone) / 2), a
-// directional light E R^2 with R the radius of the sphere around the scene's bounds (the power it
-// puts into the scene, pbrt-v4's estimate). Strategies:
+// after the emissive objects. Strategies:
 // - Point and spot: the one direction toward the position, pdf = selection probability, marked
 //   delta (no MIS: a BSDF-sampled ray never finds a point);
 // - Directional with angular_diameter 0: the one direction, delta likewise, shadow ray to infinity;
@@ -37,11 +40,11 @@
 //   radiance L = E / (pi sin^2 alpha), so the irradiance on a surface facing it is E whatever
 //   the diameter; BSDF-sampled rays that escape into the cone find it too (escaped_radiance),
 //   weighted by MIS against the same cone density.
-// - An environment background (render/environment_light.hpp) is one more light, last, weighted
-//   R^2 int lum(L) d omega (its power / pi, as for a directional light); sampled by its texel
-//   distribution, found by escaped rays, MIS between the two.
+// - An environment background (render/environment_light.hpp) is one more light at infinity,
+//   last; sampled by its texel distribution, found by escaped rays, MIS between the two.
 #include <cstdint>
 #include <memory>
+#include <string>
 #include <vector>
 
 #include <glm/vec2.hpp>
@@ -73,6 +76,8 @@ struct LightSample {
     // square the two uniforms became (warped when NEE was guided: light_guide.hpp).
     bool on_square = false;
     glm::vec2 square{0.0f};
+    // Which light was chosen (LightSet::light_name): noise forensics name the light with it.
+    std::int32_t light = -1;
 };
 
 class DirectionalQuadtree;
@@ -111,6 +116,13 @@ public:
     }
     // Probability of choosing the light made of `object` (0 if it is not one).
     float selection_probability(std::uint32_t object) const;
+    // Lights by index, in selection order (emissive objects, scene lights, environment), for
+    // reports: the index of the light made of `object` (-1 if none), of the sun whose cone holds
+    // the escaped direction `dir` or else the environment (-1 if neither), and a light's name.
+    std::int32_t light_of_object(std::uint32_t object) const { return is_light(object) ? light_of_object_[object] : -1; }
+    std::int32_t escaped_light(const glm::vec3& dir) const;
+    std::string light_name(std::int32_t light) const;
+    std::int32_t light_count() const { return static_cast<std::int32_t>(cdf_.size()); }
 
     // Marks a shading point that lies on no object's surface (a camera, a test probe).
     static constexpr std::uint32_t kNoObject = 0xffffffffu;

@@ -27,6 +27,7 @@
 #include "raytracer/render/integrators/bdpt.hpp"
 #include "raytracer/render/integrators/path.hpp"
 #include "raytracer/render/lights.hpp"
+#include "raytracer/render/path_forensics.hpp"
 #include "raytracer/render/planted_defect.hpp"
 #include "raytracer/render/sampler.hpp"
 
@@ -63,6 +64,7 @@ public:
             integrator_.set_guide(&guide_);
             guide_.set_paths_per_pass(sum_.size());
         }
+        if (opt.forensics != nullptr) opt.forensics->start(width_, height_, kTileSize, lights_);
     }
 
     void run() {
@@ -88,10 +90,14 @@ public:
                         tiles_done_.fetch_add(1, std::memory_order_relaxed);
                     }
                 });
-                if (abandoned.load()) break;
+                if (abandoned.load()) {
+                    if (opt_.forensics != nullptr) opt_.forensics->drop_pass();
+                    break;
+                }
                 if (!tile_splats_.empty()) add_splats();
                 if (opt_.guiding && guide_.training()) learn(s + 1);
                 accumulate_pass();
+                if (opt_.forensics != nullptr) opt_.forensics->end_pass();
                 completed_spp_.store(s + 1, std::memory_order_release);
             }
         });
@@ -196,6 +202,9 @@ private:
         if (records != nullptr) records->clear();
         const bool bdpt = !tile_splats_.empty();
         std::vector<Splat>* splats = bdpt ? &tile_splats_[static_cast<std::size_t>(tile)] : nullptr;
+        // Forensics follow the path integrator's vertices; the command line refuses them with bdpt.
+        PathTally tally_storage;
+        PathTally* tally = opt_.forensics != nullptr && !bdpt ? &tally_storage : nullptr;
         for (int y = y0; y < y1; ++y) {
             for (int x = x0; x < x1; ++x) {
                 const std::size_t pixel = static_cast<std::size_t>(y) * width_ + x;
@@ -207,13 +216,15 @@ private:
                 const float fy = static_cast<float>(y) + film.dy;
                 // Drawn only with a shutter, so still scenes take exactly the numbers they did.
                 const float time = camera_.has_shutter() ? camera_.shutter_fraction(sampler.get1d(sample_dim::kTime)) : 0.0f;
+                if (tally != nullptr) tally->begin();
                 glm::vec3 l = film.weight * limited(bdpt ? bdpt_.sample(fx, fy, lens, time, sampler, rays, *splats)
                                                          : integrator_.radiance(camera_.generate(fx, fy, lens.x, lens.y),
-                                                                                sampler, rays, records, time));
+                                                                                sampler, rays, records, time, tally));
                 if (!collision::finite(l)) {
                     l = glm::vec3(0.0f);
                     ++nonfinite;
                 }
+                if (tally != nullptr) opt_.forensics->finish_sample(tile, pixel, *tally, l);
                 pass_[pixel] = l;
             }
         }

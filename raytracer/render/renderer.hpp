@@ -14,6 +14,8 @@
 
 namespace sweeptrace {
 
+class PathForensics;
+
 enum class Sampling {
     NeeMis,    // next event estimation + BSDF sampling, combined by the power heuristic
     BsdfOnly,  // light found only by BSDF-sampled paths (the reference the MIS test compares to)
@@ -45,6 +47,9 @@ struct RenderOptions {
     // Path guiding (render/guiding_*.hpp): learned from whole passes, so the image stays the same
     // for any thread count; unbiased, like the unguided render of the same scene.
     bool guiding = false;
+    // Noise forensics (path_forensics.hpp): when set, every sample's contributions are recorded
+    // there by path type, per 16x16 tile; the image is the same bit for bit.
+    PathForensics* forensics = nullptr;
     const std::atomic<bool>* cancel = nullptr;  // set (e.g. by SIGINT) to stop early
     // Seconds (0 = none) after which the pass in flight is dropped and the render ends; the first
     // pass always completes. Counted on budget_clock from the start of render().

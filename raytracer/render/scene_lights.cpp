@@ -42,7 +42,6 @@ float spot_falloff(const SceneLight& l, float cos_theta) {
 }  // namespace
 
 void LightSet::add_scene_lights(const Scene& scene, std::vector<float>& weights) {
-    float radius = -1.0f;
     for (const SceneLight& sl : scene.lights) {
         NonSurfaceLight l;
         l.light = &sl;
@@ -53,8 +52,9 @@ void LightSet::add_scene_lights(const Scene& scene, std::vector<float>& weights)
             weight = 2.0f * luminance(sl.intensity) * (1.0f - 0.5f * (sl.cos_falloff_start + sl.cos_cone));
             break;
         case SceneLight::Type::Directional: {
+            // Bounds for emission sampling (light tracing from lights at infinity), not for the weight.
             if (radius < 0.0f) radius = bounds_radius_ = scene_radius(scene, bounds_centre_);
-            weight = luminance(sl.irradiance) * radius * radius;
+            weight = luminance(sl.irradiance);  // E: lights at infinity split their fixed share by it
             if (sl.half_angle > 0.0f) {
                 Sun sun;
                 sun.to_light = -sl.direction;
@@ -78,7 +78,7 @@ void LightSet::add_scene_lights(const Scene& scene, std::vector<float>& weights)
     if (scene.background.kind == Background::Kind::Environment && scene.background.environment) {
         auto env = std::make_shared<const EnvironmentLight>(scene.background);
         if (radius < 0.0f) radius = bounds_radius_ = scene_radius(scene, bounds_centre_);
-        const float weight = static_cast<float>(env->luminance_integral()) * radius * radius;
+        const float weight = static_cast<float>(env->luminance_integral());  // its E, as above
         if (env->emits() && weight > 0.0f && std::isfinite(weight)) {
             env_ = std::move(env);
             weights.push_back(weight);

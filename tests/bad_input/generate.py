@@ -471,6 +471,12 @@ case("out-is-mesh-in-subdir", 2, O + r"m/tri\.png' is the mesh '.*tri\.png'", "r
      {"scene.json": mesh_scene("m/tri.png"), "m/tri.png": "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n"})
 case("out-is-mesh-symlink", 2, O + r"link\.pfm' is the mesh", "render scene.json -o link.pfm --quiet",
      {"scene.json": mesh_scene("tri.obj"), "tri.obj": "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n"}, "symlink link.pfm tri.obj")
+case("forensics-not-json", 2, E + r"--forensics 'f\.txt': the report is a \.json file",
+     "render scene.json -o out.png --forensics f.txt --quiet", {"scene.json": scene()})
+case("forensics-picture-is-output", 2, E + r"--forensics 'out\.json': its report or picture \(out-regions\.png\) would overwrite",
+     "render scene.json -o out-regions.png --forensics out.json --quiet", {"scene.json": scene()})
+case("forensics-is-scene", 2, O + r"scene\.json' is the scene 'scene\.json'",
+     "render scene.json -o out.png --forensics scene.json --quiet", {"scene.json": scene()})
 case("heatmap-is-a", 2, O + r"a\.png' is the image A 'a\.png'", "diff a.png b.png --heatmap a.png", {"a.png": GOOD, "b.png": GOOD})
 case("heatmap-is-b-dotted", 2, O + r"\./b\.png' is the image B 'b\.png'", "diff a.png b.png --heatmap ./b.png", {"a.png": GOOD, "b.png": GOOD})
 case("heatmap-is-variance", 2, O + r"v\.pfm' is the --variance-a image 'v\.pfm'",

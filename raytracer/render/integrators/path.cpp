@@ -53,7 +53,7 @@ collision::Ray PathIntegrator::shadow_ray(const SurfaceHit& hit, const LightSamp
 }
 
 glm::vec3 PathIntegrator::radiance(collision::Ray ray, PixelSampler& sampler, std::uint64_t& rays,
-                                   std::vector<GuideRecord>* records, float time) const {
+                                   std::vector<GuideRecord>* records, float time, PathTally* tally) const {
     const bool nee = sampling_ == Sampling::NeeMis && !lights_.empty();
     GuidePathRecorder recorder(records);
     // Russian roulette judges a path by the throughput BSDF sampling would have given it: a
@@ -74,9 +74,12 @@ glm::vec3 PathIntegrator::radiance(collision::Ray ray, PixelSampler& sampler, st
         SurfaceHit hit;
         ++rays;
         if (!(moving_ ? accel_.intersect(ray, time, hit) : accel_.intersect(ray, hit))) {
-            if (!lights_.background_is_light()) result += limit.found(beta * background_radiance(scene_.background, ray.dir), depth);
+            if (!lights_.background_is_light())
+                result += tally_found(tally, limit.found(beta * background_radiance(scene_.background, ray.dir), depth),
+                                      PathKey::kBackground);
             if (lights_.has_distant())
-                result += limit.found(beta * lights_.escaped_radiance(ray.dir, nee && !full_weight ? prev_pdf : 0.0f), depth);
+                result += tally_found(tally, limit.found(beta * lights_.escaped_radiance(ray.dir, nee && !full_weight ? prev_pdf : 0.0f), depth),
+                                      tally ? lights_.escaped_light(ray.dir) : -1);
             break;
         }
         if (defect_ == PlantedDefect::FlippedNormals) {  // planted: inward normals
@@ -92,7 +95,7 @@ glm::vec3 PathIntegrator::radiance(collision::Ray ray, PixelSampler& sampler, st
         if (le != glm::vec3(0.0f)) {
             float w = 1.0f;
             if (nee && !full_weight) w = power_heuristic(prev_pdf, lights_.pdf(prev_point, prev_object, hit, prev_light_guide));
-            result += limit.found(beta * le * w, depth);
+            result += tally_found(tally, limit.found(beta * le * w, depth), tally ? lights_.light_of_object(hit.object) : -1);
         }
         if (depth >= max_depth_ || !scatters(mat)) break;
 
@@ -125,7 +128,11 @@ glm::vec3 PathIntegrator::radiance(collision::Ray ray, PixelSampler& sampler, st
                     if (!(moving_ ? accel_.occluded(shadow, time) : accel_.occluded(shadow))) {
                         const float w =
                             ls.delta ? 1.0f : power_heuristic(ls.pdf, guide ? guided_pdf(*guide, e.pdf, ls.wi) : e.pdf);
-                        result += limit.light_sample(beta * e.f_cos * ls.radiance * (w / ls.pdf), depth);
+                        const glm::vec3 c = limit.light_sample(beta * e.f_cos * ls.radiance * (w / ls.pdf), depth);
+                        result += c;
+                        if (tally)
+                            tally->add_light_sample(PathTally::kind_of(mat, false), scene_.objects[hit.object].material,
+                                                    luminance(e.f_cos) * w / ls.pdf, c, ls.light);
                         if (learn) {
                             const glm::vec3 unweighted = ls.radiance / ls.pdf;
                             recorder.add_light_sample(hit.point, ctx.frame.n, ls.wi, unweighted * w, ls.square,
@@ -147,6 +154,7 @@ glm::vec3 PathIntegrator::radiance(collision::Ray ray, PixelSampler& sampler, st
                   : !sample_bsdf(mat, ctx, b0, b.x, b.y, bs))
             break;
         beta *= bs.weight;
+        if (tally) tally->scatter(PathTally::kind_of(mat, bs.delta), scene_.objects[hit.object].material, luminance(bs.weight));
         if (guide != nullptr && !bs.delta) rr_scale *= std::max(1.0f, bs.pdf / bsdf_pdf);
         if (learn && !bs.delta) recorder.add_vertex(hit.point, ctx.frame.n, bs.wi, bs.pdf, beta, result);
         full_weight = bs.delta;

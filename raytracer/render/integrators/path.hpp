@@ -31,6 +31,7 @@
 #include "raytracer/accel/accel.hpp"
 #include "raytracer/render/guiding_sd_tree.hpp"
 #include "raytracer/render/lights.hpp"
+#include "raytracer/render/path_forensics.hpp"
 #include "raytracer/render/planted_defect.hpp"
 #include "raytracer/render/roulette.hpp"
 #include "raytracer/render/sampler.hpp"
@@ -50,9 +51,10 @@ public:
     // `ray` must have a unit direction. Adds every ray traced to `rays`. With `records`, what
     // the path teaches the guide is appended there (guiding_path_recorder.hpp). The whole path,
     // shadow rays included, sees the scene at shutter fraction `time` (geometry/motion.hpp;
-    // ignored when nothing moves).
+    // ignored when nothing moves). With `tally`, every contribution is also recorded there with
+    // its path type (path_forensics.hpp); nothing else changes.
     glm::vec3 radiance(collision::Ray ray, PixelSampler& sampler, std::uint64_t& rays,
-                       std::vector<GuideRecord>* records = nullptr, float time = 0.0f) const;
+                       std::vector<GuideRecord>* records = nullptr, float time = 0.0f, PathTally* tally = nullptr) const;
 
     // Path guiding (guiding_sampler.hpp): at guided vertices where `guide` has learned something,
     // BSDF directions come from the BSDF + guide mixture, and its density is the BSDF strategy's

@@ -1,0 +1,128 @@
+#!/usr/bin/python3
+"""Equal-time RMSE on the interiors (issue 34): an old build against a new one.
+
+For each scene: a long reference render, then `render --time T --time-clock cpu` by each build,
+and the RMSE of each against the reference (linear radiance, over every pixel and channel,
+non-finite reference pixels masked). T is CPU seconds of all the render's threads (the
+renderer's ProcessCpu budget clock), so the figures do not grow while other processes share
+the machine. The reference is a render of --ref-factor x T CPU seconds (default 16) by the same
+build as the render it judges (--shared-reference: the new build's, for both: half the cost).
+The reference's own noise adds to every RMSE about 1/ref-factor of a render's variance.
+
+The issue's settings are the defaults: 320x180, 60 CPU-s, 2 threads. Writes a markdown table
+(--out, default docs/equal-time-interiors.md) with the command that made it.
+
+Build the old binary (main at 644dcf9) beside the new one, e.g.:
+  git worktree add --detach ../wt-base 644dcf9
+  cmake -S ../wt-base -B ../wt-base/build -DSWEEPTRACE_TESTS=OFF && cmake --build ../wt-base/build -j2 --target sweeptrace
+Usage:
+  /usr/bin/python3 tools/equal-time-interiors.py --old ../wt-base/build/sweeptrace --new build/sweeptrace
+      [--time 60] [--ref-factor 16] [--threads 2] [--width 320 --height 180] [--scenes classroom,smallpt]
+"""
+import argparse
+import os
+import re
+import subprocess
+import sys
+import time
+
+import numpy as np
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from equal_time import read_pfm  # noqa: E402  (the PFM reader of the guiding study)
+
+SHARED = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "shared", "bitterli")
+REPO = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..")
+# (name, scene file, target ratio new / old from the issue)
+SCENES = [
+    ("classroom", os.path.join(SHARED, "classroom", "scene-v4.pbrt"), 0.5),
+    ("kitchen", os.path.join(SHARED, "kitchen", "scene-v4.pbrt"), 0.5),
+    ("staircase2", os.path.join(SHARED, "staircase2", "scene-v4.pbrt"), 0.5),
+    ("coffee", os.path.join(SHARED, "coffee", "scene-v4.pbrt"), 0.5),
+    ("smallpt", os.path.join(REPO, "scenes", "smallpt.json"), 0.7),
+    ("cornell-box", os.path.join(REPO, "scenes", "cornell-box.json"), 0.7),
+]
+
+
+def render(binary, scene, args, seconds, seed, out):
+    """A --time render on the CPU clock; returns its spp."""
+    cmd = [binary, "render", scene, "--width", str(args.width), "--height", str(args.height), "--time", str(seconds),
+           "--time-clock", "cpu", "--threads", str(args.threads), "--seed", str(seed), "-o", out]
+    print("equal-time-interiors: " + " ".join(cmd), file=sys.stderr, flush=True)
+    res = subprocess.run(cmd, stderr=subprocess.PIPE, text=True)
+    if res.returncode != 0:
+        raise SystemExit(f"equal-time-interiors: {' '.join(cmd)} failed:\n{res.stderr}")
+    m = re.search(r"\d+x\d+, (\d+) spp", res.stderr)  # the summary line
+    return int(m.group(1)) if m else -1
+
+
+def rmse(image, reference):
+    ok = np.isfinite(reference) & np.isfinite(image)
+    return float(np.sqrt(np.mean((image[ok] - reference[ok]) ** 2)))
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("--old", required=True, help="sweeptrace binary of the baseline (main at 644dcf9)")
+    ap.add_argument("--new", required=True, help="sweeptrace binary of the change")
+    ap.add_argument("--time", type=float, default=60.0, help="CPU seconds per render (default 60)")
+    ap.add_argument("--ref-factor", type=float, default=16.0, help="reference budget / --time (default 16)")
+    ap.add_argument("--shared-reference", action="store_true", help="judge both builds by the new build's reference")
+    ap.add_argument("--threads", type=int, default=2)
+    ap.add_argument("--width", type=int, default=320)
+    ap.add_argument("--height", type=int, default=180)
+    ap.add_argument("--scenes", default=",".join(s[0] for s in SCENES))
+    ap.add_argument("--work", default="equal-time-interiors", help="folder for the renders (kept; references reused)")
+    ap.add_argument("--out", default=os.path.join(REPO, "docs", "equal-time-interiors.md"))
+    args = ap.parse_args()
+    wanted = args.scenes.split(",")
+    unknown = [w for w in wanted if w not in [s[0] for s in SCENES]]
+    if unknown:
+        raise SystemExit(f"equal-time-interiors: --scenes: unknown scene(s) {', '.join(unknown)}")
+    for b in (args.old, args.new):
+        if not os.access(b, os.X_OK):
+            raise SystemExit(f"equal-time-interiors: {b}: not an executable")
+    os.makedirs(args.work, exist_ok=True)
+    builds = [("old", args.old), ("new", args.new)]
+    rows = []
+    started = time.time()
+    for name, scene, target in SCENES:
+        if name not in wanted:
+            continue
+        if not os.path.exists(scene):
+            print(f"equal-time-interiors: {scene} missing, {name} skipped", file=sys.stderr)
+            continue
+        ref_seconds = args.ref_factor * args.time
+        refs = {}
+        for build, binary in builds:
+            if args.shared_reference and build == "old":
+                continue
+            path = os.path.join(args.work, f"{name}-{build}-ref-{ref_seconds:g}s.pfm")
+            spp = render(binary, scene, args, ref_seconds, 1001, path)
+            refs[build] = (read_pfm(path), spp)
+        if args.shared_reference:
+            refs["old"] = refs["new"]
+        result = {}
+        for build, binary in builds:
+            path = os.path.join(args.work, f"{name}-{build}-{args.time:g}s.pfm")
+            spp = render(binary, scene, args, args.time, 7, path)
+            result[build] = (rmse(read_pfm(path), refs[build][0]), spp, refs[build][1])
+        ratio = result["new"][0] / result["old"][0] if result["old"][0] > 0 else float("nan")
+        rows.append((name, target, result, ratio))
+    with open(args.out, "w") as f:
+        f.write("# Equal-time RMSE on the interiors: main at 644dcf9 against this branch\n\n")
+        f.write("Generated by `/usr/bin/python3 tools/equal-time-interiors.py " + " ".join(sys.argv[1:]) + "`")
+        f.write(f" ({time.time() - started:.0f} s wall).\n\n")
+        f.write(f"Each render: {args.width}x{args.height}, `--time {args.time:g} --time-clock cpu --threads {args.threads}`"
+                f" (CPU seconds of all threads), seed 7. Reference: {args.ref_factor:g} x that budget, seed 1001, rendered by ")
+        f.write("the new build for both columns.\n\n" if args.shared_reference else "the same build as the column it judges.\n\n")
+        f.write("| scene | spp old | spp new | ref spp (old / new) | RMSE old | RMSE new | new / old | issue's target |\n")
+        f.write("|---|---|---|---|---|---|---|---|\n")
+        for name, target, r, ratio in rows:
+            f.write(f"| {name} | {r['old'][1]} | {r['new'][1]} | {r['old'][2]} / {r['new'][2]} | {r['old'][0]:.5g} | "
+                    f"{r['new'][0]:.5g} | {ratio:.3f} | <= {target} {'met' if ratio <= target else 'missed'} |\n")
+    print(open(args.out).read())
+
+
+if __name__ == "__main__":
+    main()
