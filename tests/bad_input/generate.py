@@ -645,6 +645,8 @@ pbrt_case("pbrt-area-light-overflow", E + r"scene\.pbrt:3: AreaLightSource \"dif
 pbrt_case("pbrt-iso-overflow", E + r"scene\.pbrt:3: LightSource \"point\": intensity\[0\]: is too large for single precision, got 1\.0+1e\+6\d",
           'Film "rgb" "integer xresolution" 8 "integer yresolution" 8 "float iso" 1e38\nWorldBegin\n'
           'LightSource "point" "rgb I" [1e30 1 1]\n')
+pbrt_case("pbrt-light-singular-transform", E + r"scene\.pbrt:6: LightSource \"spot\": ",
+          PBRT_OK + 'Shape "sphere"\nAttributeBegin\nScale 0 0 0\nLightSource "spot" "rgb I" [1 1 1]\nAttributeEnd\n')
 pbrt_case("pbrt-tga-rle-overrun", E + r"scene\.pbrt:4: material .*t\.tga.*RLE packet at byte 18 runs past the image",
           PBRT_OK + 'Texture "t" "spectrum" "imagemap" "string filename" "t.tga"\nMaterial "diffuse" "texture reflectance" "t"\n'
           'Shape "sphere"\n', extra={"t.tga": tga(2, 2, 10, b"\x84\x80\x80\x80")})

@@ -45,7 +45,6 @@ const std::vector<Default> kDefaults = {
     {"PixelFilter \"gaussian\" {}\nWorldBegin\nShape \"sphere\"\n", "\"float xradius\" 1.5 \"float yradius\" 1.5"},
     {"PixelFilter \"box\" {}\nWorldBegin\nShape \"sphere\"\n", "\"float xradius\" 0.5 \"float yradius\" 0.5"},
     {"PixelFilter \"mitchell\" {}\nWorldBegin\nShape \"sphere\"\n", "\"float xradius\" 2 \"float yradius\" 2"},
-    {"PixelFilter \"mitchell\" {}\nWorldBegin\nShape \"sphere\"\n", "\"float B\" 0.3333333333 \"float C\" 0.3333333333"},
     {"PixelFilter \"triangle\" {}\nWorldBegin\nShape \"sphere\"\n", "\"float xradius\" 2 \"float yradius\" 2"},
     {"WorldBegin\nShape \"sphere\" {}\n", "\"float radius\" 1"},
     {"WorldBegin\nShape \"disk\" {}\n", "\"float radius\" 1"},

@@ -100,7 +100,7 @@ ParamList parse_params(const std::vector<Token>& tokens, std::size_t& pos, const
             } else {
                 if (v->kind != Token::Kind::Word || !parse_number(v->text, x))
                     d.fail(at, "\"" + excerpt(s) + "\" takes finite numbers, got \"" + excerpt(v->text) + "\"");
-                if (p.type == "integer" && (x != std::floor(x) || std::fabs(x) > 2147483647.0))
+                if (p.type == "integer" && (x != std::floor(x) || x < -2147483648.0 || x > 2147483647.0))  // an int
                     d.fail(at, "\"" + excerpt(s) + "\" takes integers, got " + excerpt(v->text));
                 // pbrt-v4 keeps parameters as 32-bit floats: 1e300 is infinity there, and would be
                 // here once written to the scene (a lens radius, a light's L, an ISO).
