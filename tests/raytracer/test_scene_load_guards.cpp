@@ -138,7 +138,7 @@ TEST_CASE("pbrt: the sampler's seed is any integer, as in pbrt-v4", "[pbrt][issu
     }
 }
 
-TEST_CASE("pbrt: control characters from the file are escaped in warnings and errors; TransformBegin has AttributeBegin's depth limit",
+TEST_CASE("pbrt: control characters from the file are escaped in warnings and errors, and TransformBegin has AttributeBegin's depth limit",
           "[pbrt][issue32]") {
     TempDir dir;
     const auto file = dir.write("s.pbrt", std::string(kPbrtHead) + "WorldBegin\nShape \"x\x1b[31m\\nsweeptrace: error: forged\"\nShape \"sphere\"\n");
