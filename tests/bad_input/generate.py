@@ -645,6 +645,8 @@ pbrt_case("pbrt-area-light-overflow", E + r"scene\.pbrt:3: AreaLightSource \"dif
 pbrt_case("pbrt-iso-overflow", E + r"scene\.pbrt:3: LightSource \"point\": intensity\[0\]: is too large for single precision, got 1\.0+1e\+6\d",
           'Film "rgb" "integer xresolution" 8 "integer yresolution" 8 "float iso" 1e38\nWorldBegin\n'
           'LightSource "point" "rgb I" [1e30 1 1]\n')
+pbrt_case("pbrt-focaldistance-far", E + r"scene\.pbrt:1: Camera \"perspective\": look_at: coordinates must lie within \+-1e\+18",
+          'Camera "perspective" "float lensradius" 0.1 "float focaldistance" 1e30\nWorldBegin\nShape "sphere"\n')
 pbrt_case("pbrt-light-singular-transform", E + r"scene\.pbrt:6: LightSource \"spot\": ",
           PBRT_OK + 'Shape "sphere"\nAttributeBegin\nScale 0 0 0\nLightSource "spot" "rgb I" [1 1 1]\nAttributeEnd\n')
 pbrt_case("pbrt-tga-rle-overrun", E + r"scene\.pbrt:4: material .*t\.tga.*RLE packet at byte 18 runs past the image",
