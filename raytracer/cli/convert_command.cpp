@@ -40,7 +40,11 @@ int run_convert(const ConvertArgs& a) {
         throw InputError("output '" + out.string() + "': directory '" + dir.string() + "' does not exist");
     refuse_output_over_input(out, {{"scene", in}});
     const PbrtConversion c = convert_pbrt(in, out, a.strict, true);
-    for (const std::string& w : c.warnings) std::fprintf(stderr, "sweeptrace: warning: %s\n", w.c_str());
+    // Every file the conversion read (Includes, spectra, meshes, images), before anything is written.
+    std::vector<NamedInput> inputs;
+    for (const std::filesystem::path& f : c.input_files) inputs.push_back({"scene's input", f});
+    refuse_output_over_input(out, inputs);
+    for (const std::string& w : c.warnings) std::fprintf(stderr, "sweeptrace: warning: %s\n", escape_control(w).c_str());
     write_text_file(out, c.json_text);
     if (!a.quiet)
         std::fprintf(stderr, "%s -> %s (%zu kind%s of warning)\n", in.string().c_str(), out.string().c_str(), c.warnings.size(),

@@ -1,9 +1,5 @@
 #include "raytracer/cli/memory_budget.hpp"
 
-#include <cstdio>
-#include <fstream>
-#include <variant>
-
 #include "raytracer/input_error.hpp"
 
 namespace sweeptrace {
@@ -20,23 +16,6 @@ constexpr std::uint64_t kAccelBytesPerPrimitive = 256;
 // Per mesh vertex kept in the acceleration structure's own copy (position + normal).
 constexpr std::uint64_t kAccelBytesPerVertex = 24;
 
-std::optional<std::uint64_t> read_number_file(const char* path) {
-    std::ifstream in(path);
-    std::uint64_t v = 0;
-    if (in >> v) return v;
-    return std::nullopt;  // missing, or "max"
-}
-
-std::optional<std::uint64_t> meminfo_available() {
-    std::ifstream in("/proc/meminfo");
-    std::string key;
-    std::uint64_t kb = 0;
-    std::string unit;
-    while (in >> key >> kb >> unit)
-        if (key == "MemAvailable:") return kb * 1024;
-    return std::nullopt;
-}
-
 }  // namespace
 
 MemoryEstimate estimate_render_memory(const Scene& scene) {
@@ -49,26 +28,6 @@ MemoryEstimate estimate_render_memory(const Scene& scene) {
     }
     e.scene = primitives * kAccelBytesPerPrimitive + vertices * kAccelBytesPerVertex;
     return e;
-}
-
-std::optional<std::uint64_t> available_memory() {
-    std::optional<std::uint64_t> avail = meminfo_available();
-    const auto max = read_number_file("/sys/fs/cgroup/memory.max");
-    const auto current = read_number_file("/sys/fs/cgroup/memory.current");
-    if (max && current) {
-        const std::uint64_t room = *max > *current ? *max - *current : 0;
-        if (!avail || room < *avail) avail = room;
-    }
-    return avail;
-}
-
-std::string byte_text(std::uint64_t bytes) {
-    char buf[32];
-    const double b = double(bytes);
-    if (b >= 1e9) std::snprintf(buf, sizeof buf, "%.2f GB", b / 1e9);
-    else if (b >= 1e6) std::snprintf(buf, sizeof buf, "%.1f MB", b / 1e6);
-    else std::snprintf(buf, sizeof buf, "%.0f kB", b / 1e3);
-    return buf;
 }
 
 void check_render_memory(const Scene& scene, std::optional<std::uint64_t> limit) {

@@ -14,6 +14,7 @@
 #include <optional>
 #include <string>
 
+#include "raytracer/load_budget.hpp"  // available_memory, byte_text
 #include "raytracer/scene/scene.hpp"
 
 namespace sweeptrace {
@@ -26,16 +27,9 @@ struct MemoryEstimate {
 
 MemoryEstimate estimate_render_memory(const Scene& scene);
 
-// MemAvailable from /proc/meminfo, lowered to the cgroup's memory.max - memory.current when that
-// is smaller; nullopt when neither can be read.
-std::optional<std::uint64_t> available_memory();
-
 // Throws InputError "render needs an estimated X (film WxH: A, scene: B), more than the Y
 // available ..." when the estimate exceeds `limit` (from --max-memory) or, without one, the
 // available memory.
 void check_render_memory(const Scene& scene, std::optional<std::uint64_t> limit);
-
-// "1.50 GB" style, for messages.
-std::string byte_text(std::uint64_t bytes);
 
 }  // namespace sweeptrace

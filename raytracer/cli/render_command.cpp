@@ -29,6 +29,7 @@
 #include "raytracer/input_error.hpp"
 #include "raytracer/image/atomic_file.hpp"
 #include "raytracer/render/path_forensics.hpp"
+#include "raytracer/load_budget.hpp"
 #include "raytracer/render/renderer.hpp"
 #include "raytracer/render/tone_map.hpp"
 #include "raytracer/scene/emitter_check.hpp"
@@ -137,6 +138,7 @@ int run_render(const RenderArgs& a) {
         require(a.time > 0.0 && std::isfinite(a.time), "--time must be a positive number of seconds, got " + a.time_opt->as<std::string>());
 
     const std::filesystem::path scene_path(a.scene);
+    set_load_memory_limit(a.limits.memory_limit());  // the load's budget (load_budget.hpp) as the render's
     // A pbrt-v4 scene is translated first (cheap next to a render): its Film's filename is the
     // default output, as in pbrt, and its warnings come before the render starts.
     const bool pbrt = is_pbrt_file(scene_path);
@@ -145,7 +147,7 @@ int run_render(const RenderArgs& a) {
     if (pbrt) {
         std::vector<std::string> warnings;
         pbrt_scene.emplace(load_pbrt_scene(scene_path, a.strict, warnings, &film_filename));
-        for (const std::string& w : warnings) std::fprintf(stderr, "sweeptrace: warning: %s\n", w.c_str());
+        for (const std::string& w : warnings) std::fprintf(stderr, "sweeptrace: warning: %s\n", escape_control(w).c_str());
     } else {
         require(!a.strict, "--strict is for .pbrt scenes (a JSON scene never approximates)");
     }
@@ -186,12 +188,13 @@ int run_render(const RenderArgs& a) {
     }
 
     Scene scene = pbrt ? std::move(*pbrt_scene) : load_scene(scene_path);
-    for (const std::string& w : emitters_facing_nothing(scene)) std::fprintf(stderr, "sweeptrace: warning: %s\n", w.c_str());
+    for (const std::string& w : emitters_facing_nothing(scene)) std::fprintf(stderr, "sweeptrace: warning: %s\n", escape_control(w).c_str());
     a.limits.apply(scene);
     if (!a.sampler.empty()) scene.film.sampler = a.sampler == "independent" ? SamplerKind::Independent : SamplerKind::Sobol;
     if (!a.integrator.empty()) scene.film.integrator = a.integrator == "bdpt" ? IntegratorKind::Bdpt : IntegratorKind::Path;
+    // Every file the load read (the scene's own list, read_files.hpp), before any work starts.
     std::vector<NamedInput> inputs{{"scene", scene_path}};
-    for (const Mesh& m : scene.meshes) inputs.push_back({"mesh", m.source});
+    for (const std::filesystem::path& f : scene.input_files) inputs.push_back({"scene's input", f});
     refuse_output_over_input(out, inputs);
     if (!a.variance.empty()) refuse_output_over_input(a.variance, inputs);
     if (!a.forensics.empty()) {

@@ -92,7 +92,7 @@ Image read_exr(const std::filesystem::path& path) {
         const Imath::Box2i window = file.header().dataWindow();
         const long long w = static_cast<long long>(window.max.x) - window.min.x + 1;
         const long long h = static_cast<long long>(window.max.y) - window.min.y + 1;
-        check_image_size(path, "EXR data window", w, h);
+        reserve_image(path, "EXR data window", w, h);
         const Imf::ChannelList& channels = file.header().channels();
         const bool rgb = channels.findChannel("R") && channels.findChannel("G") && channels.findChannel("B");
         const bool grey = !rgb && channels.findChannel("Y");

@@ -72,7 +72,7 @@ void read_header(Reader& in, const std::vector<unsigned char>& bytes, const std:
     char tail = 0;
     if (std::sscanf(res.c_str(), "-Y %lld +X %lld%c", &hh, &ww, &tail) != 2)
         in.fail("the resolution line is not '-Y height +X width'");
-    check_image_size(path, "HDR", ww, hh);
+    reserve_image(path, "HDR", ww, hh);
     w = static_cast<int>(ww);
     h = static_cast<int>(hh);
 }

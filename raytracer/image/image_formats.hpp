@@ -44,6 +44,10 @@ inline constexpr long long kMaxImagePixels = 1LL << 26;
 // 1 <= w, h <= kMaxImageSide and w * h <= kMaxImagePixels.
 void check_image_size(const std::filesystem::path& path, const char* format, long long w, long long h);
 
+// check_image_size, then the decoded image (w x h linear RGB floats) charged to the scene load's
+// memory budget (load_budget.hpp), before the reader allocates it: the readers' one entry.
+void reserve_image(const std::filesystem::path& path, const char* format, long long w, long long h);
+
 // Throws InputError naming `path` unless it is a regular file of at most kMaxImageFileBytes.
 void check_image_file(const std::filesystem::path& path);
 

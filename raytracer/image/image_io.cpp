@@ -11,6 +11,7 @@
 #include "raytracer/image/image.hpp"
 #include "raytracer/image/image_formats.hpp"
 #include "raytracer/input_error.hpp"
+#include "raytracer/load_budget.hpp"
 
 namespace sweeptrace {
 namespace {
@@ -93,13 +94,19 @@ void check_image_size(const std::filesystem::path& path, const char* format, lon
                      ", at most " + std::to_string(kMaxImagePixels) + " pixels)");
 }
 
+void reserve_image(const std::filesystem::path& path, const char* format, long long w, long long h) {
+    check_image_size(path, format, w, h);
+    charge_load_memory(static_cast<std::uint64_t>(w) * static_cast<std::uint64_t>(h) * sizeof(glm::vec3), path.string(),
+                       std::string(format) + " image " + std::to_string(w) + "x" + std::to_string(h));
+}
+
 void check_image_file(const std::filesystem::path& path) {
     std::error_code ec;
     const auto status = std::filesystem::status(path, ec);
     std::string reason;
     if (!std::filesystem::exists(status)) reason = "no such file";
     else if (std::filesystem::is_directory(status)) reason = "is a directory";
-    else if (!std::filesystem::is_regular_file(status)) reason = "not a regular file";
+    else if (!std::filesystem::is_regular_file(status)) reason = file_kind_problem(path);  // a FIFO, a device
     else if (std::filesystem::file_size(path, ec) > kMaxImageFileBytes)
         reason = "larger than the " + std::to_string(kMaxImageFileBytes >> 20) + " MiB an image may be";
     if (!reason.empty()) throw InputError("cannot read '" + path.string() + "': " + reason);

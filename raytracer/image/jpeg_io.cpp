@@ -56,7 +56,7 @@ std::string decode(const std::vector<unsigned char>& bytes, const std::filesyste
     const long long w = info.image_width, h = info.image_height;
     if (!(w >= 1 && h >= 1 && w <= kMaxImageSide && h <= kMaxImageSide && w * h <= kMaxImagePixels)) {
         jpeg_destroy_decompress(&info);
-        check_image_size(path, "JPEG", w, h);  // throws its message, libjpeg's state gone
+        reserve_image(path, "JPEG", w, h);  // throws its message, libjpeg's state gone
     }
     info.out_color_space = JCS_RGB;
     jpeg_start_decompress(&info);

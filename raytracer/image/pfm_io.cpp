@@ -97,7 +97,7 @@ Image read_pfm(const std::filesystem::path& path) {
     const int channels = magic == "PF" ? 3 : 1;
     const long long w = header.integer("width");
     const long long h = header.integer("height");
-    check_image_size(path, "PFM", w, h);
+    reserve_image(path, "PFM", w, h);
     const double scale = header.number("scale");
     if (scale == 0.0 || !std::isfinite(scale)) header.fail("scale must be a non-zero number (its sign is the byte order)");
     const bool little = scale < 0.0;

@@ -106,7 +106,7 @@ Image read_png(const std::filesystem::path& path) {
     if (!stbi_info_from_memory(data, size, &w, &h, &channels))
         throw InputError("cannot read '" + path.string() + "': not a valid PNG (" +
                          reason_or(stbi_failure_reason(), "unreadable header") + ")");
-    check_image_size(path, "PNG", w, h);
+    reserve_image(path, "PNG", w, h);
     const bool sixteen = stbi_is_16_bit_from_memory(data, size) != 0;
     Image image;
     if (sixteen) {

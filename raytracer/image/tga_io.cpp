@@ -219,7 +219,7 @@ Image read_tga(const std::filesystem::path& path) {
     const std::vector<unsigned char> bytes = read_bytes(path);
     TgaBytes in(bytes, path);
     const TgaHeader h = read_tga_header(in);
-    check_image_size(path, "TGA", h.width, h.height);
+    reserve_image(path, "TGA", h.width, h.height);
     in.take(static_cast<std::size_t>(h.id_length), "the image ID of " + std::to_string(h.id_length) + " bytes");
     const std::vector<TgaRgb> map = read_tga_map(in, h);
     const std::size_t n = h.pixels(), per = h.pixel_bytes();

@@ -14,13 +14,6 @@ namespace {
 
 // Keys that are plain identifiers print as `.key`; anything else as `["key"]` so the path stays
 // unambiguous for material names with spaces or dots.
-std::string key_component(const std::string& parent, std::string_view key) {
-    const bool plain = !key.empty() && std::all_of(key.begin(), key.end(), [](char c) {
-        return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_' || c == '-';
-    });
-    if (plain) return parent.empty() ? std::string(key) : parent + "." + std::string(key);
-    return parent + "[" + nlohmann::json(std::string(key)).dump(-1, ' ', false, nlohmann::json::error_handler_t::replace) + "]";
-}
 
 // The path is quoted as an excerpt: a key may be any string, and the message stays one short line.
 std::string where(const std::filesystem::path& file, const std::string& path) {
@@ -165,6 +158,14 @@ private:
 
 }  // namespace
 
+std::string key_component(const std::string& parent, std::string_view key) {
+    const bool plain = !key.empty() && std::all_of(key.begin(), key.end(), [](char c) {
+        return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_' || c == '-';
+    });
+    if (plain) return parent.empty() ? std::string(key) : parent + "." + std::string(key);
+    return parent + "[" + nlohmann::json(std::string(key)).dump(-1, ' ', false, nlohmann::json::error_handler_t::replace) + "]";
+}
+
 nlohmann::json parse(const std::string& text, const std::filesystem::path& file) {
     if (const std::size_t at = too_deep_at(text); at != std::string::npos) {
         const auto [line, column] = line_column(text, at + 1);
@@ -222,6 +223,9 @@ Node::Node(const nlohmann::json& value, const std::filesystem::path& file, std::
 void Node::fail(const std::string& message) const { throw InputError(where(*file_, path_) + message); }
 
 std::string Node::shown() const {
+    // nlohmann prints a non-finite number as "null": a translated pbrt value that overflowed.
+    if (value_->is_number_float())
+        if (const double d = value_->get<double>(); !std::isfinite(d)) return std::isnan(d) ? "nan" : d > 0 ? "inf" : "-inf";
     std::string s;
     bounded_dump(*value_, 40, s);
     return excerpt(s, 40);

@@ -69,6 +69,10 @@ private:
 // Numbers in messages as people write them: 0, 1, 1.5 (not 0.0, 1.0).
 std::string format_number(float f);
 
+// A key's step of a path in messages: `parent.key`, or `parent["a key"]` when the key is not
+// plain letters, digits, '_' and '-' (the pbrt importer matches its material names with it).
+std::string key_component(const std::string& parent, std::string_view key);
+
 // "a number", "a string", "an array", ... for messages about the wrong type.
 std::string describe_type(const nlohmann::json& v);
 

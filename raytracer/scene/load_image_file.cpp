@@ -3,15 +3,16 @@
 #include <system_error>
 
 #include "raytracer/input_error.hpp"
+#include "raytracer/scene/read_files.hpp"
 
 namespace sweeptrace {
 
 std::shared_ptr<const Image> read_image_path(const std::string& relative, const std::filesystem::path& path,
                                              const std::string& what, const ImageFail& fail) {
     if (relative.empty()) fail("must name an image file");
-    std::error_code ec;
-    if (!std::filesystem::is_regular_file(path, ec))
-        fail(what + " \"" + relative + "\" not found (looked for " + path.string() + ")");
+    note_read_file(path);
+    if (const std::string problem = file_kind_problem(path); !problem.empty())
+        fail(what + " \"" + relative + "\" " + problem + " (looked for " + path.string() + ")");
     Image image;
     try {
         image = read_image(path);

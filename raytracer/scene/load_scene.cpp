@@ -14,6 +14,7 @@
 
 #include "raytracer/geometry/shape.hpp"
 #include "raytracer/input_error.hpp"
+#include "raytracer/load_budget.hpp"
 #include "raytracer/scene/film_limits.hpp"
 #include "raytracer/scene/gzip_file.hpp"
 #include "raytracer/scene/inline_mesh.hpp"
@@ -28,6 +29,7 @@
 #include "raytracer/scene/obj_materials.hpp"
 #include "raytracer/scene/obj_loader.hpp"
 #include "raytracer/scene/ply_loader.hpp"
+#include "raytracer/scene/read_files.hpp"
 #include "raytracer/scene/scene_extent.hpp"
 #include "raytracer/scene/scene_transform.hpp"
 #include "raytracer/scene/text_file.hpp"
@@ -340,9 +342,9 @@ public:
         const std::string relative = file_node.string();
         if (relative.empty()) file_node.fail("must name an OBJ or PLY file");
         const std::filesystem::path path = scene_.source.parent_path() / relative;
+        if (const std::string problem = file_kind_problem(path); !problem.empty())
+            file_node.fail("mesh file \"" + relative + "\" " + problem + " (looked for " + path.string() + ")");
         std::error_code ec;
-        if (!std::filesystem::is_regular_file(path, ec))
-            file_node.fail("mesh file \"" + relative + "\" not found (looked for " + path.string() + ")");
         const std::string key = std::filesystem::weakly_canonical(path, ec).string();
         if (auto it = mesh_by_file_.find(key); it != mesh_by_file_.end()) return it->second;
         // mesh.ply.gz is PLY too (the loaders inflate a .gz: gzip_file.hpp), as pbrt-v4's scenes name them.
@@ -422,8 +424,12 @@ private:
 }  // namespace
 
 Scene load_scene(const std::filesystem::path& file) {
+    const LoadBudgetScope budget;
+    const ReadFilesScope read;
     const std::string text = read_text_file(file, "scene", kMaxSceneFileBytes);
-    return load_scene_document(scene_json::parse(text, file), file);
+    Scene scene = load_scene_document(scene_json::parse(text, file), file);
+    scene.input_files = read.files();
+    return scene;
 }
 
 Scene load_scene_document(const nlohmann::json& doc, const std::filesystem::path& file) {

@@ -10,6 +10,7 @@
 #include <tiny_obj_loader.h>
 
 #include "raytracer/input_error.hpp"
+#include "raytracer/load_budget.hpp"
 #include "raytracer/scene/gzip_file.hpp"
 #include "raytracer/scene/obj_outline.hpp"
 #include "raytracer/scene/text_file.hpp"
@@ -107,9 +108,12 @@ Mesh load_obj(const std::filesystem::path& file, ObjOutline* outline_out) {
     bool all_normals = normal_count > 0;
     bool all_uvs = texcoord_count > 0;
     std::size_t face = 0;
+    std::uint64_t triangles = 0, corner_count = 0;
     for (const tinyobj::shape_t& shape : reader.GetShapes()) {
         std::size_t offset = 0;
         for (const unsigned char corners : shape.mesh.num_face_vertices) {
+            triangles += corners - 2u;
+            corner_count += corners;
             for (std::size_t k = 0; k < corners; ++k) {
                 const tinyobj::index_t& idx = shape.mesh.indices[offset + k];
                 if (idx.vertex_index < 0 || static_cast<std::size_t>(idx.vertex_index) >= vertex_count)
@@ -133,6 +137,11 @@ Mesh load_obj(const std::filesystem::path& file, ObjOutline* outline_out) {
         }
     }
 
+    // tinyobjloader's arrays, and our mesh: at most one vertex (position, normal, uv) per corner.
+    charge_load_memory((attrib.vertices.size() + attrib.normals.size() + attrib.texcoords.size()) * sizeof(float) +
+                           corner_count * (sizeof(tinyobj::index_t) + sizeof(glm::vec3) * 2 + sizeof(glm::vec2)) +
+                           triangles * sizeof(glm::uvec3),
+                       name, std::to_string(face) + " faces as " + std::to_string(triangles) + " triangles");
     for (std::size_t v = 0; v < vertex_count; ++v)
         for (int c = 0; c < 3; ++c)
             if (!std::isfinite(attrib.vertices[3 * v + static_cast<std::size_t>(c)]))

@@ -124,10 +124,9 @@ const std::vector<std::uint32_t>& ObjMaterials::triangle_materials(std::uint32_t
             const std::size_t end = std::min(lib.value.find(' ', start), lib.value.size());
             const std::string name = lib.value.substr(start, end - start);
             const std::filesystem::path file = src.obj.parent_path() / name;
-            std::error_code ec;
-            if (!std::filesystem::is_regular_file(file, ec))
-                throw InputError(obj + ": line " + std::to_string(lib.line) + ": mtllib \"" + excerpt(name, 80) +
-                                 "\" not found (looked for " + file.string() + ")");
+            if (const std::string problem = file_kind_problem(file); !problem.empty())
+                throw InputError(obj + ": line " + std::to_string(lib.line) + ": mtllib \"" + excerpt(name, 80) + "\" " + problem +
+                                 " (looked for " + file.string() + ")");
             libraries.push_back({file, load_mtl(file)});
             scene.material_libraries.push_back(file);
             start = end + 1;

@@ -13,6 +13,7 @@
 #include <glm/geometric.hpp>
 
 #include "raytracer/input_error.hpp"
+#include "raytracer/load_budget.hpp"
 #include "raytracer/scene/gzip_file.hpp"
 #include "raytracer/scene/text_file.hpp"
 
@@ -287,6 +288,8 @@ struct PlyData {
 
 void read_vertices(DataReader& r, const Element& e, PlyData& d, const std::string& name) {
     const VertexLayout l = vertex_layout(e, name);
+    charge_load_memory(e.count * (sizeof(glm::vec3) + (l.nx >= 0 ? sizeof(glm::vec3) : 0) + (l.u >= 0 ? sizeof(glm::vec2) : 0)),
+                       name, "element \"vertex\" (" + std::to_string(e.count) + " vertices)");
     d.positions.reserve(e.count);
     if (l.nx >= 0) d.normals.reserve(e.count);
     if (l.u >= 0) d.uvs.reserve(e.count);
@@ -326,13 +329,22 @@ int face_list(const Element& e) {
     return -1;
 }
 
-void read_faces(DataReader& r, const Element& e, PlyData& d, const std::string& name) {
+void read_faces(DataReader& r, const Element& e, PlyData& d, const std::string& name, Format format) {
     const int list = face_list(e);
     if (list < 0)
         throw InputError(name + ": header line " + std::to_string(e.line) +
                          ": the face element needs a list property vertex_indices (or vertex_index)");
     d.has_faces = d.has_faces || e.count > 0;
-    d.face_corners.reserve(e.count);  // the corners grow with the data read, not with the count
+    // The corners are reserved once for the most the data after the header can hold (4 bytes each
+    // however small the file's index type: a uchar index is 4x its data), charged first: grown by
+    // doubling, 2 GB of corners needed 3 GB while the vector moved.
+    const Property& lp = e.properties[static_cast<std::size_t>(list)];
+    const std::uint64_t index_bytes = format == Format::Ascii ? 2 : scalar_size(lp.type);
+    const std::uint64_t most = std::min<std::uint64_t>(e.count * kMaxCorners, r.remaining() / index_bytes);
+    charge_load_memory(e.count * (sizeof(std::uint8_t) + sizeof(std::uint64_t)) + most * sizeof(std::uint32_t), name,
+                       "element \"face\" (" + std::to_string(e.count) + " faces, up to " + std::to_string(most) + " corners)");
+    d.face_corners.reserve(e.count);
+    d.corners.reserve(most);
     for (std::uint64_t i = 0; i < e.count; ++i) {
         for (std::size_t k = 0; k < e.properties.size(); ++k) {
             const Property& p = e.properties[k];
@@ -399,7 +411,7 @@ Mesh parse_ply(std::string_view bytes, const std::string& name) {
             read_vertices(r, e, d, name);
             have_vertices = true;
         } else if (e.name == "face") {
-            read_faces(r, e, d, name);
+            read_faces(r, e, d, name, h.format);
         } else {
             skip_element(r, e);
         }
@@ -409,8 +421,17 @@ Mesh parse_ply(std::string_view bytes, const std::string& name) {
 
     const bool normals = !d.normals.empty() && d.normals_usable && d.normals.size() == d.positions.size();
     const bool uvs = d.uvs.size() == d.positions.size() && !d.uvs.empty();
+    // A face of n corners is n - 2 triangles: a 255-corner face of uchar indices, 256 bytes of
+    // binary PLY, is 253 triangles, 3 KB. Charged before the triangles are allocated, and
+    // reserved once: growing by doubling would hold up to three times the final size.
+    std::uint64_t triangles = 0;
+    for (const std::uint8_t n : d.face_corners) triangles += n - 2u;
+    charge_load_memory(triangles * sizeof(glm::uvec3) +
+                           d.positions.size() * (sizeof(std::uint32_t) + sizeof(glm::vec3) + sizeof(glm::vec3) + sizeof(glm::vec2)),
+                       name, std::to_string(d.face_corners.size()) + " faces as " + std::to_string(triangles) + " triangles");
     Mesh mesh;
     mesh.source = name;
+    mesh.triangles.indices.reserve(triangles);
     std::vector<std::uint32_t> remap(d.positions.size(), std::numeric_limits<std::uint32_t>::max());
     auto vertex_for = [&](std::uint32_t v) {
         std::uint32_t& out = remap[v];

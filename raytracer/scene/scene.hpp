@@ -182,6 +182,9 @@ struct Scene {
     // The material libraries (.mtl) the meshes named, read for their materials: with the scene
     // file, the meshes' files and the images, what a farm part's identity hashes.
     std::vector<std::filesystem::path> material_libraries;
+    // Every file the load read (read_files.hpp): the scene, meshes, libraries, images, spectra,
+    // pbrt Includes. No output may be one of them.
+    std::vector<std::filesystem::path> input_files;
 };
 
 }  // namespace sweeptrace

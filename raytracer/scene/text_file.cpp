@@ -7,6 +7,7 @@
 #include <system_error>
 
 #include "raytracer/input_error.hpp"
+#include "raytracer/scene/read_files.hpp"
 
 namespace sweeptrace {
 
@@ -23,7 +24,7 @@ void check_input_file(const std::filesystem::path& file, const char* what, std::
     else if (std::filesystem::is_directory(status))
         reason = "it is a directory";
     else if (!std::filesystem::is_regular_file(status))
-        reason = "not a regular file";
+        reason = file_kind_problem(file);  // "is a FIFO, not a regular file", "is a device, ..."
     else if (const std::uintmax_t size = std::filesystem::file_size(file, ec); ec)
         reason = reason_or(ec.message().c_str(), "cannot get its size");
     else if (size > max_bytes)
@@ -32,6 +33,7 @@ void check_input_file(const std::filesystem::path& file, const char* what, std::
 }
 
 std::string read_text_file(const std::filesystem::path& file, const char* what, std::uintmax_t max_bytes) {
+    note_read_file(file);
     check_input_file(file, what, max_bytes);
     errno = 0;
     std::ifstream in(file, std::ios::binary);

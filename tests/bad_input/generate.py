@@ -191,13 +191,13 @@ render_case("extent-mesh-vertices", E + r"scene\.json: objects\[0\]: the mesh's 
 # --- scene files: the file itself ---------------------------------------------------------------
 case("scene-missing", 2, E + r"nothere\.json: cannot read scene: no such file", "render nothere.json -o out.png --quiet", {})
 case("scene-directory", 2, E + r"adir: cannot read scene: it is a directory", "render adir -o out.png --quiet", {"adir/keep": ""})
-case("scene-fifo", 2, E + r"pipe\.json: cannot read scene: not a regular file", "render pipe.json -o out.png --quiet", {},
+case("scene-fifo", 2, E + r"pipe\.json: cannot read scene: is a FIFO, not a regular file", "render pipe.json -o out.png --quiet", {},
      "fifo pipe.json")
 case("scene-over-size-limit", 2, E + r"big\.json: cannot read scene: it is 17 MiB, over the limit of 16 MiB",
      "render big.json -o out.png --quiet", {}, "sparse big.json 17825792")
 render_case("mesh-file-missing", E + r"scene\.json: objects\[0\]\.file: mesh file \"nothere\.obj\" not found", mesh_scene("nothere.obj"))
 render_case("mesh-file-empty-name", E + r"scene\.json: objects\[0\]\.file: must name an OBJ or PLY file", mesh_scene(""))
-render_case("mesh-file-directory", E + r"scene\.json: objects\[0\]\.file: mesh file \"sub\" not found", mesh_scene("sub"),
+render_case("mesh-file-directory", E + r"scene\.json: objects\[0\]\.file: mesh file \"sub\" is a directory", mesh_scene("sub"),
             extra={"sub/keep": ""})
 case("mesh-over-size-limit", 2, E + r"scene\.json: objects\[0\]\.file: .*big\.obj: cannot read mesh: it is 513 MiB, over the limit of 512 MiB",
      "render scene.json -o out.png --quiet", {"scene.json": mesh_scene("big.obj")}, "sparse big.obj 537919488")
@@ -405,7 +405,7 @@ diff_case("tga-rle-overrun", E + r"cannot read 'bad\.tga': not a valid TGA file 
 diff_case("tga-huge-header", E + r"cannot read 'bad\.tga': TGA size 65535x65535 is out of range", tga(65535, 65535, data=b""), "bad.tga")
 diff_case("image-unknown-extension", E + r"cannot read 'bad\.bmp': unknown image extension '\.bmp'", b"BM", "bad.bmp")
 case("image-directory", 2, E + r"cannot read 'adir\.png': is a directory", "diff adir.png good.png", {"adir.png/keep": "", "good.png": GOOD})
-case("image-fifo", 2, E + r"cannot read 'pipe\.pfm': not a regular file", "diff pipe.pfm good.png", {"good.png": GOOD}, "fifo pipe.pfm")
+case("image-fifo", 2, E + r"cannot read 'pipe\.pfm': is a FIFO, not a regular file", "diff pipe.pfm good.png", {"good.png": GOOD}, "fifo pipe.pfm")
 case("image-over-size-limit", 2, E + r"cannot read 'big\.pfm': larger than the 1024 MiB", "diff big.pfm good.png", {"good.png": GOOD},
      "sparse big.pfm 1073741825")
 
@@ -465,11 +465,11 @@ case("out-is-scene-symlink", 2, O + r"link\.png' is the scene 'scene\.json'", "r
      {"scene.json": scene()}, "symlink link.png scene.json")
 case("out-is-scene-hardlink", 2, O + r"hard\.png' is the scene 'scene\.json'", "render scene.json -o hard.png --quiet",
      {"scene.json": scene()}, "hardlink hard.png scene.json")
-case("out-is-mesh", 2, O + r"mesh\.exr' is the mesh '.*mesh\.exr'", "render scene.json -o mesh.exr --quiet",
+case("out-is-mesh", 2, O + r"mesh\.exr' is the scene's input '.*mesh\.exr'", "render scene.json -o mesh.exr --quiet",
      {"scene.json": mesh_scene("mesh.exr"), "mesh.exr": "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n"})
-case("out-is-mesh-in-subdir", 2, O + r"m/tri\.png' is the mesh '.*tri\.png'", "render scene.json -o m/tri.png --quiet",
+case("out-is-mesh-in-subdir", 2, O + r"m/tri\.png' is the scene's input '.*tri\.png'", "render scene.json -o m/tri.png --quiet",
      {"scene.json": mesh_scene("m/tri.png"), "m/tri.png": "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n"})
-case("out-is-mesh-symlink", 2, O + r"link\.pfm' is the mesh", "render scene.json -o link.pfm --quiet",
+case("out-is-mesh-symlink", 2, O + r"link\.pfm' is the scene's input 'tri\.obj'", "render scene.json -o link.pfm --quiet",
      {"scene.json": mesh_scene("tri.obj"), "tri.obj": "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n"}, "symlink link.pfm tri.obj")
 case("forensics-not-json", 2, E + r"--forensics 'f\.txt': the report is a \.json file",
      "render scene.json -o out.png --forensics f.txt --quiet", {"scene.json": scene()})
@@ -490,11 +490,11 @@ case("heatmap-is-symlink-to-a", 2, O + r"h\.png' is the image A 'a\.png'", "diff
 PBRT_OK = 'Film "rgb" "integer xresolution" 8 "integer yresolution" 8\nWorldBegin\n'
 
 
-def pbrt_case(name, pattern, text, command="render", extra=None, args=""):
+def pbrt_case(name, pattern, text, command="render", extra=None, args="", setup=""):
     files = {"scene.pbrt": text}
     files.update(extra or {})
     out = "out.json" if command == "convert" else "out.png"
-    case(name, 2, pattern, f"{command} scene.pbrt -o {out} --quiet {args}".strip(), files)
+    case(name, 2, pattern, f"{command} scene.pbrt -o {out} --quiet {args}".strip(), files, setup)
 
 
 pbrt_case("pbrt-unknown-directive", E + r"scene\.pbrt:3: unknown directive \"Shpae\"", PBRT_OK + 'Shpae "sphere"\n')
@@ -554,6 +554,110 @@ case("pbrt-convert-out-not-json", 2, E + r"output 'out\.png': write the scene to
      {"scene.pbrt": PBRT_OK})
 case("pbrt-convert-out-is-input", 2, E + r"output 'scene\.json' is the scene 'scene\.pbrt'", "convert scene.pbrt -o scene.json",
      {"scene.pbrt": PBRT_OK}, "symlink scene.json scene.pbrt")
+
+
+# --- issue 32: the files a scene reads are protected, one memory budget, pbrt errors at pbrt lines --
+# Every file the load read (read_files.hpp) is an input an output may not be: textures, maps,
+# Includes, spectra, a pbrt Film's filename; by identity, so links count.
+IN = r"' is the scene's input '"
+TEX_SCENE = scene(materials__m={"type": "diffuse", "albedo": {"image": {"file": "tex.png"}}})
+case("out-is-texture", 2, O + r"tex\.png" + IN + r"tex\.png'", "render scene.json -o tex.png --quiet",
+     {"scene.json": TEX_SCENE, "tex.png": GOOD})
+case("out-is-texture-hardlink", 2, O + r"h\.png" + IN + r"tex\.png'", "render scene.json -o h.png --quiet",
+     {"scene.json": TEX_SCENE, "tex.png": GOOD}, "hardlink h.png tex.png")
+case("out-is-texture-symlink", 2, O + r"s\.png" + IN + r"tex\.png'", "render scene.json -o s.png --quiet",
+     {"scene.json": TEX_SCENE, "tex.png": GOOD}, "symlink s.png tex.png")
+ENV_SCENE = scene(background={"environment": {"file": "env.pfm"}})
+case("out-is-environment", 2, O + r"env\.pfm" + IN + r"env\.pfm'", "render scene.json -o env.pfm --quiet",
+     {"scene.json": ENV_SCENE, "env.pfm": GOOD_PFM})
+case("variance-is-environment", 2, O + r"env\.pfm" + IN + r"env\.pfm'", "render scene.json -o out.png --variance env.pfm --quiet",
+     {"scene.json": ENV_SCENE, "env.pfm": GOOD_PFM})
+case("out-is-normal-map", 2, O + r"n\.png" + IN + r"n\.png'", "render scene.json -o n.png --quiet",
+     {"scene.json": scene(materials__m={"type": "diffuse", "normal_map": {"image": {"file": "n.png"}}}), "n.png": GOOD})
+case("pbrt-out-is-include", 2, O + r"inc\.png" + IN + r"inc\.png'", "render scene.pbrt -o inc.png --quiet",
+     {"scene.pbrt": PBRT_OK + 'Include "inc.png"\n', "inc.png": 'Shape "sphere"\n'})
+case("pbrt-convert-out-is-spectrum", 2, O + r"eta\.json" + IN + r"eta\.json'", "convert scene.pbrt -o eta.json --quiet",
+     {"scene.pbrt": PBRT_OK + 'Material "conductor" "spectrum eta" "eta.json" "spectrum k" "k.spd"\nShape "sphere"\n',
+      "eta.json": "400 1.5\n800 1.5\n", "k.spd": "400 3\n800 3\n"})
+case("pbrt-film-filename-is-texture", 2, O + r"tex\.png" + IN + r"tex\.png'", "render scene.pbrt --quiet",
+     {"scene.pbrt": 'Film "rgb" "integer xresolution" 8 "integer yresolution" 8 "string filename" "tex.png"\nWorldBegin\n'
+                    'Texture "t" "spectrum" "imagemap" "string filename" "tex.png"\nMaterial "diffuse" "texture reflectance" "t"\n'
+                    'Shape "sphere"\n', "tex.png": GOOD})
+
+# Memory: one budget for the load (load_budget.hpp), run under a 4 GB address space as a user's
+# `ulimit -v` would; each used to end in bad_alloc (exit 3) or take 4-16 GB.
+AS = "address-space 4096"
+# 2,000,000 faces of 255 uchar corners in a 0.5 MB .ply.gz (written by the runner): 488 MiB
+# inflated, 2 GB of corners, 506 M triangles (6 GB): refused when the triangles are charged.
+render_case("mem-ply-gz-fans", E + r"scene\.json: objects\[0\]\.file: .*fans\.ply\.gz: 2000000 faces as 506000000 triangles needs 6\.07 GB, "
+            r"which would bring the scene's data to .*, over the load budget of .* \(the memory available; --max-memory sets it\)",
+            mesh_scene("fans.ply.gz"), setup="ply-gz-fans fans.ply.gz 2000000 ; " + AS)
+# Six 2 MiB RLE TGAs of 8192 x 8192 (0.8 GB each decoded, each within the per-image limit): the
+# sum is what the budget refuses, at the first image past it.
+six = json.loads(scene())
+six["materials"] = {f"m{i}": {"type": "diffuse", "albedo": {"image": {"file": f"t{i}.tga"}}} for i in range(6)}
+six["objects"] = [{"type": "sphere", "radius": 0.1, "center": [i, 0, 0], "material": f"m{i}"} for i in range(6)]
+render_case("mem-tga-sum", E + r"scene\.json: materials\.m\d\.albedo\.image\.file: .*t\d\.tga: TGA image 8192x8192 needs 805\.3 MB, "
+            r"which would bring the scene's data to .*, over the load budget of .* \(the memory available; --max-memory sets it\)",
+            json.dumps(six), setup=" ; ".join(f"rle-tga t{i}.tga 8192" for i in range(6)) + " ; " + AS)
+render_case("mem-tga-max-memory", E + r"scene\.json: materials\.m1\.albedo\.image\.file: .*t1\.tga: TGA image 8192x8192 needs 805\.3 MB, "
+            r"which would bring the scene's data to 1\.61 GB, over the load budget of 1\.07 GB \(--max-memory\)",
+            json.dumps(six), args="--max-memory 1G", setup="rle-tga t0.tga 8192 ; rle-tga t1.tga 8192 ; " + AS)
+# A 4 MB unused parameter on an AreaLightSource, then 4000 AttributeBegin levels (or 2000
+# ObjectInstances): 16 GB (8 GB) when each level copied it; shared now, so the file is read to its end.
+JUNK = '"float junk" [' + " 1" * 500000 + " ]"
+AREA = 'AreaLightSource "diffuse" "rgb L" [1 1 1] ' + JUNK + "\n"
+case("mem-pbrt-arealight-levels", 2, E + r"scene\.pbrt\.gz:4005: unknown directive \"Shpae\"", "render scene.pbrt.gz -o out.png --quiet",
+     {"scene.pbrt.gz": gz(PBRT_OK + "AttributeBegin\n" + AREA + "AttributeBegin\n" * 4000 + "Shpae\n")}, AS)
+case("mem-pbrt-object-instances", 2, E + r"scene\.pbrt\.gz:2007: unknown directive \"Shpae\"", "render scene.pbrt.gz -o out.png --quiet",
+     {"scene.pbrt.gz": gz(PBRT_OK + 'ObjectBegin "o"\n' + AREA + 'Shape "sphere"\nObjectEnd\n' + 'ObjectInstance "o"\n' * 2000 + "Shpae\n")},
+     AS)
+
+# pbrt: the same depth limit for TransformBegin as for AttributeBegin; control characters escaped.
+pbrt_case("pbrt-transform-depth", E + r"scene\.pbrt:4099: TransformBegin nested more than 4096 deep", PBRT_OK + "TransformBegin\n" * 4097)
+pbrt_case("pbrt-escape-strict", E + r"scene\.pbrt:3: Shape \"cu\\x1b\[31mrve\\nsweeptrace: error: forged\"",
+          PBRT_OK + 'Shape "cu\x1b[31mrve\\nsweeptrace: error: forged"\nShape "sphere"\n', args="--strict")
+
+# The wrong kind of file is named as such, not "not found".
+render_case("ply-is-directory", E + r"scene\.json: objects\[0\]\.file: mesh file \"d\.ply\" is a directory", mesh_scene("d.ply"),
+            extra={"d.ply/keep": ""})
+render_case("ply-is-fifo", E + r"scene\.json: objects\[0\]\.file: mesh file \"f\.ply\" is a FIFO", mesh_scene("f.ply"), setup="fifo f.ply")
+render_case("ply-is-device", E + r"scene\.json: objects\[0\]\.file: mesh file \"z\.ply\" is a device", mesh_scene("z.ply"),
+            setup="device z.ply /dev/zero")
+render_case("texture-is-directory", E + r"scene\.json: materials\.m\.albedo\.image\.file: texture image \"tex\.png\" is a directory",
+            TEX_SCENE, extra={"tex.png/keep": ""})
+render_case("texture-is-fifo", E + r"scene\.json: materials\.m\.albedo\.image\.file: texture image \"tex\.png\" is a FIFO", TEX_SCENE,
+            setup="fifo tex.png")
+pbrt_case("pbrt-plymesh-is-device", E + r"scene\.pbrt:3: Shape \"plymesh\": \"z\.ply\" is a device",
+          PBRT_OK + 'Shape "plymesh" "string filename" "z.ply"\n', setup="device z.ply /dev/zero")
+
+# pbrt values the importer passes on are checked where they are read (file:line and the pbrt
+# parameter); a check that can only fail after translation is said at the statement it came from.
+F32 = r"takes numbers a 32-bit float holds"
+pbrt_case("pbrt-light-scale-huge", E + r"scene\.pbrt:3: \"float scale\" " + F32, PBRT_OK + 'LightSource "point" "float scale" 1e300\n')
+pbrt_case("pbrt-light-L-huge", E + r"scene\.pbrt:3: \"rgb L\" " + F32, PBRT_OK + 'AreaLightSource "diffuse" "rgb L" [1e300 1 1]\nShape "sphere"\n')
+pbrt_case("pbrt-iso-huge", E + r"scene\.pbrt:1: \"float iso\" " + F32, 'Film "rgb" "float iso" 1e300\nWorldBegin\n')
+pbrt_case("pbrt-maxcomponentvalue-huge", E + r"scene\.pbrt:1: \"float maxcomponentvalue\" " + F32,
+          'Film "rgb" "float maxcomponentvalue" 1e300\nWorldBegin\n')
+pbrt_case("pbrt-lensradius-huge", E + r"scene\.pbrt:1: \"float lensradius\" " + F32, 'Camera "perspective" "float lensradius" 1e300\nWorldBegin\n')
+pbrt_case("pbrt-focaldistance-huge", E + r"scene\.pbrt:1: \"float focaldistance\" " + F32,
+          'Camera "perspective" "float lensradius" 0.1 "float focaldistance" 1e300\nWorldBegin\n')
+pbrt_case("pbrt-light-scale-overflow", E + r"scene\.pbrt:3: LightSource \"point\": intensity\[0\]: is too large for single precision, got 1\.0+1e\+6\d",
+          PBRT_OK + 'LightSource "point" "float scale" 1e30 "rgb I" [1e30 1e30 1e30]\n')
+pbrt_case("pbrt-light-scale-overflow-convert", E + r"scene\.pbrt:3: LightSource \"point\": intensity\[0\]: is too large for single precision, got 1\.0+1e\+6\d",
+          PBRT_OK + 'LightSource "point" "float scale" 1e30 "rgb I" [1e30 1e30 1e30]\n', command="convert")
+pbrt_case("pbrt-area-light-overflow", E + r"scene\.pbrt:3: AreaLightSource \"diffuse\": .*emission\[0\]: is too large for single precision, got 1\.0+1e\+60",
+          PBRT_OK + 'AreaLightSource "diffuse" "rgb L" [1e30 1 1] "float scale" 1e30\nShape "sphere"\n')
+pbrt_case("pbrt-iso-overflow", E + r"scene\.pbrt:3: LightSource \"point\": intensity\[0\]: is too large for single precision, got 1\.0+1e\+6\d",
+          'Film "rgb" "integer xresolution" 8 "integer yresolution" 8 "float iso" 1e38\nWorldBegin\n'
+          'LightSource "point" "rgb I" [1e30 1 1]\n')
+pbrt_case("pbrt-focaldistance-far", E + r"scene\.pbrt:1: Camera \"perspective\": look_at: coordinates must lie within \+-1e\+18",
+          'Camera "perspective" "float lensradius" 0.1 "float focaldistance" 1e30\nWorldBegin\nShape "sphere"\n')
+pbrt_case("pbrt-light-singular-transform", E + r"scene\.pbrt:6: LightSource \"spot\": ",
+          PBRT_OK + 'Shape "sphere"\nAttributeBegin\nScale 0 0 0\nLightSource "spot" "rgb I" [1 1 1]\nAttributeEnd\n')
+pbrt_case("pbrt-tga-rle-overrun", E + r"scene\.pbrt:4: material .*t\.tga.*RLE packet at byte 18 runs past the image",
+          PBRT_OK + 'Texture "t" "spectrum" "imagemap" "string filename" "t.tga"\nMaterial "diffuse" "texture reflectance" "t"\n'
+          'Shape "sphere"\n', extra={"t.tga": tga(2, 2, 10, b"\x84\x80\x80\x80")})
 
 
 def main():

@@ -9,6 +9,7 @@
 // diameter, 2 "lensradius", focused on the plane at "focaldistance" (pbrt's default 1e6).
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 
 #include <glm/geometric.hpp>
 #include <glm/matrix.hpp>
@@ -135,7 +136,9 @@ void write_camera_and_film(WorldContext& w, std::string& film_filename) {
             if (!known) d.warn(s.where, "sampler " + s.type, what + " is not a pbrt-v4 sampler: our Owen-scrambled Sobol sampler instead");
             p.find("randomization");
         }
-        if (const long long seed = p.get_int("seed", -1, d); seed >= 0) w.doc["seed"] = seed;
+        // pbrt-v4's seed is any int; ours is unsigned 64-bit (written as such: a signed JSON
+        // integer is refused as "must be >= 0"), a negative one taken modulo 2^64.
+        if (p.has("seed")) w.doc["seed"] = static_cast<std::uint64_t>(p.get_int("seed", 0, d));
         p.warn_unused(what, d);
         spp = clamped(d, s.where, "Sampler pixelsamples", spp, 1, 1 << 20);
     }

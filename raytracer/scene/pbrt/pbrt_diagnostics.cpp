@@ -19,7 +19,7 @@ void Diagnostics::warn(const Where& where, const std::string& kind, const std::s
         return;
     }
     index_.emplace(kind, kinds_.size());
-    kinds_.push_back({where, where.text() + ": " + what, 0});
+    kinds_.push_back({where, escape_control(where.text() + ": " + what), 0});  // a pbrt string may hold ESC or a newline
 }
 
 void Diagnostics::throw_if_strict() const {

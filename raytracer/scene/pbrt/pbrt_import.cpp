@@ -5,12 +5,15 @@
 #include <string_view>
 
 #include "raytracer/input_error.hpp"
+#include "raytracer/load_budget.hpp"
 #include "raytracer/scene/gzip_file.hpp"
+#include "raytracer/scene/json_reader.hpp"
 #include "raytracer/scene/load_scene_document.hpp"
 #include "raytracer/scene/pbrt/pbrt_diagnostics.hpp"
 #include "raytracer/scene/pbrt/pbrt_materials.hpp"
 #include "raytracer/scene/pbrt/pbrt_parser.hpp"
 #include "raytracer/scene/pbrt/pbrt_world.hpp"
+#include "raytracer/scene/read_files.hpp"
 
 namespace sweeptrace {
 
@@ -18,7 +21,7 @@ namespace {
 
 struct Translation {
     nlohmann::json doc;
-    std::vector<pbrt::ObjectOrigin> origins;  // objects[i] was written for origins[i]
+    pbrt::DocumentOrigins origins;  // which statement wrote which part
 };
 
 Translation translate(const std::filesystem::path& file, const std::filesystem::path& output_dir, bool strict,
@@ -34,27 +37,51 @@ Translation translate(const std::filesystem::path& file, const std::filesystem::
     return t;
 }
 
-// The JSON loader's message "<json>: objects[N]<path>: <what>" said at the pbrt statement that
-// wrote objects[N]: "<pbrt file>:<line>: Shape \"plymesh\": <what>". A complaint about the
-// object's "file" (the mesh loader's, which names the mesh file itself) loses the JSON path; one
-// about another key keeps the key. nullopt for any other message.
+// The JSON loader's message "<json>: <path>: <what>" said at the pbrt statement that wrote that
+// part of the document: "<pbrt file>:<line>: Shape \"plymesh\": <rest of path>: <what>". Objects
+// and lights by index, materials by name, and the camera, film and background. A complaint about
+// an object's "file" (the mesh loader's, which names the mesh file itself) loses the JSON path;
+// one about another key keeps the key. nullopt for any other message.
 std::optional<std::string> said_at_statement(std::string_view message, const std::string& json_name,
-                                             const std::vector<pbrt::ObjectOrigin>& origins) {
-    const std::string prefix = json_name + ": objects[";
+                                             const pbrt::DocumentOrigins& origins) {
+    const std::string prefix = json_name + ": ";
     if (!message.starts_with(prefix)) return std::nullopt;
-    const char* digits = message.data() + prefix.size();
-    const char* end = message.data() + message.size();
-    std::size_t index = 0;
-    const auto [after, ec] = std::from_chars(digits, end, index);
-    if (ec != std::errc() || after == end || *after != ']' || index >= origins.size()) return std::nullopt;
-    std::string_view rest = message.substr(static_cast<std::size_t>(after + 1 - message.data()));
+    std::string_view rest = message.substr(prefix.size());
+    const pbrt::ObjectOrigin* origin = nullptr;
+    const auto take = [&](std::string_view lead) {
+        if (!rest.starts_with(lead)) return false;
+        rest.remove_prefix(lead.size());
+        return true;
+    };
+    const auto indexed = [&](const std::vector<pbrt::ObjectOrigin>& list) -> const pbrt::ObjectOrigin* {
+        std::size_t index = 0;
+        const auto [after, ec] = std::from_chars(rest.data(), rest.data() + rest.size(), index);
+        if (ec != std::errc() || after == rest.data() + rest.size() || *after != ']' || index >= list.size()) return nullptr;
+        rest.remove_prefix(static_cast<std::size_t>(after + 1 - rest.data()));
+        return &list[index];
+    };
+    if (take("objects[")) origin = indexed(origins.objects);
+    else if (take("lights[")) origin = indexed(origins.lights);
+    else if (origins.camera && take("camera")) origin = &*origins.camera;
+    else if (origins.film && take("film")) origin = &*origins.film;
+    else if (origins.background && take("background")) origin = &*origins.background;
+    else if (rest.starts_with("materials"))
+        for (const auto& [name, o] : origins.materials) {
+            const std::string key = scene_json::key_component("materials", name);
+            if (rest.starts_with(key) && rest.size() > key.size() && (rest[key.size()] == '.' || rest[key.size()] == ':')) {
+                rest.remove_prefix(key.size());
+                origin = &o;
+                break;
+            }
+        }
+    if (!origin) return std::nullopt;
     for (const std::string_view lead : {".file: ", ": ", "."}) {
         if (rest.starts_with(lead)) {
             rest.remove_prefix(lead.size());
             break;
         }
     }
-    return origins[index].where.text() + ": " + origins[index].what + ": " + std::string(rest);
+    return origin->where.text() + ": " + origin->what + ": " + std::string(rest);
 }
 
 // load_scene_document for the translation, its complaints about objects said at the pbrt file
@@ -72,19 +99,26 @@ Scene load_translation(const Translation& t, const std::filesystem::path& json_f
 
 PbrtConversion convert_pbrt(const std::filesystem::path& file, const std::filesystem::path& output, bool strict,
                             bool validate) {
+    const LoadBudgetScope budget;
+    const ReadFilesScope read;
     PbrtConversion out;
     const Translation t = translate(file, output.parent_path(), strict, out.warnings, out.film_filename);
     out.json_text = t.doc.dump(2) + "\n";
     if (validate) (void)load_translation(t, output);
+    out.input_files = read.files();
     return out;
 }
 
 Scene load_pbrt_scene(const std::filesystem::path& file, bool strict, std::vector<std::string>& warnings,
                       std::string* film_filename) {
+    const LoadBudgetScope budget;
+    const ReadFilesScope read;
     std::string film;
     const Translation t = translate(file, file.parent_path(), strict, warnings, film);
     if (film_filename) *film_filename = film;
-    return load_translation(t, file);
+    Scene scene = load_translation(t, file);
+    scene.input_files = read.files();
+    return scene;
 }
 
 bool is_pbrt_file(const std::filesystem::path& file) { return content_extension(file) == ".pbrt"; }

@@ -16,6 +16,7 @@ struct PbrtConversion {
     std::string json_text;              // the scene JSON, file names relative to the output folder
     std::vector<std::string> warnings;  // "<file>:<line>: <what was done instead>"
     std::string film_filename;          // the Film's "filename" (pbrt's default "pbrt.exr")
+    std::vector<std::filesystem::path> input_files;  // every file read, with `validate` (read_files.hpp)
 };
 
 // `output`: the JSON file the text is meant for (its relative file names start from its folder).

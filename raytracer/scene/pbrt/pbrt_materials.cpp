@@ -315,9 +315,8 @@ MaterialResult MaterialTranslator::translate(const Statement& s, const std::map<
         }
     }
     if (const std::string normal_map = p.get_string("normalmap", "", diag_); !normal_map.empty()) {
-        std::error_code ec;
-        if (!std::filesystem::is_regular_file(files_.resolve(normal_map), ec))
-            diag_.fail(s.where, what + ": \"normalmap\" image \"" + excerpt(normal_map) + "\" not found (looked for " + files_.resolve(normal_map).string() + ")");
+        if (const std::string problem = file_kind_problem(files_.resolve(normal_map)); !problem.empty())
+            diag_.fail(s.where, what + ": \"normalmap\" image \"" + excerpt(normal_map) + "\" " + problem + " (looked for " + files_.resolve(normal_map).string() + ")");
         json image{{"file", files_.json_path(normal_map)}};
         m["normal_map"] = {{"image", image}};
     }

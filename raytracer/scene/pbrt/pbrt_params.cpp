@@ -1,10 +1,12 @@
 #include "raytracer/scene/pbrt/pbrt_params.hpp"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <limits>
 
 #include "raytracer/input_error.hpp"
+#include "raytracer/load_budget.hpp"
 
 namespace sweeptrace::pbrt {
 
@@ -79,6 +81,10 @@ ParamList parse_params(const std::vector<Token>& tokens, std::size_t& pos, const
             values.push_back(&tokens[pos++]);
         }
         if (values.empty()) d.fail(at, "parameter \"" + excerpt(s) + "\" has no value");
+        std::uint64_t text_bytes = 0;
+        for (const Token* v : values) text_bytes += v->text.size();
+        charge_load_memory(values.size() * std::max(sizeof(double), sizeof(std::string)) + text_bytes, at.text(),
+                           "parameter \"" + excerpt(s) + "\" (" + std::to_string(values.size()) + " values)");
         const bool wants_strings = p.type == "string" || p.type == "texture" || p.type == "bool";
         const bool maybe_strings = p.type == "spectrum";
         for (const Token* v : values) {
@@ -94,8 +100,12 @@ ParamList parse_params(const std::vector<Token>& tokens, std::size_t& pos, const
             } else {
                 if (v->kind != Token::Kind::Word || !parse_number(v->text, x))
                     d.fail(at, "\"" + excerpt(s) + "\" takes finite numbers, got \"" + excerpt(v->text) + "\"");
-                if (p.type == "integer" && (x != std::floor(x) || std::fabs(x) > 2147483647.0))
+                if (p.type == "integer" && (x != std::floor(x) || x < -2147483648.0 || x > 2147483647.0))  // an int
                     d.fail(at, "\"" + excerpt(s) + "\" takes integers, got " + excerpt(v->text));
+                // pbrt-v4 keeps parameters as 32-bit floats: 1e300 is infinity there, and would be
+                // here once written to the scene (a lens radius, a light's L, an ISO).
+                if (std::fabs(x) > double(std::numeric_limits<float>::max()))
+                    d.fail(at, "\"" + excerpt(s) + "\" takes numbers a 32-bit float holds (|x| <= 3.4e38), got " + excerpt(v->text));
                 p.numbers.push_back(x);
             }
         }
@@ -112,6 +122,15 @@ ParamList parse_params(const std::vector<Token>& tokens, std::size_t& pos, const
         list.params.push_back(std::move(p));
     }
     return list;
+}
+
+std::uint64_t ParamList::bytes() const {
+    std::uint64_t n = 0;
+    for (const Param& p : params) {
+        n += sizeof(Param) + p.numbers.size() * sizeof(double) + p.strings.size() * sizeof(std::string);
+        for (const std::string& s : p.strings) n += s.size();
+    }
+    return n;
 }
 
 const Param* ParamList::find(std::string_view name) const {

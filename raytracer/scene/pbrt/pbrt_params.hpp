@@ -7,6 +7,7 @@
 // the readers take defaults, mark what they read, and the importer warns about every parameter
 // nothing read (one warning per kind), so no parameter is dropped silently.
 #include <cstddef>
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -44,6 +45,7 @@ public:
 
     const Param* find(std::string_view name) const;  // marks it used
     bool has(std::string_view name) const;            // does not mark
+    std::uint64_t bytes() const;                      // the memory the values take, for the load budget
 
     // Typed readers: a parameter of this name but another type fails (file:line).
     double get_float(std::string_view name, double fallback, const Diagnostics& d) const;

@@ -6,6 +6,7 @@
 // NamedMaterial may come before its MakeNamedMaterial, as pbrt-v4 allows.
 #include <filesystem>
 #include <map>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -38,7 +39,9 @@ struct ShapeRecord {
     glm::dmat4 ctm{1.0};  // object to world
     bool reverse_orientation = false;
     std::string material;  // a key of PbrtScene::materials
-    std::optional<AreaLight> area_light;
+    // Shared, not copied: every Shape, AttributeBegin level and ObjectInstance under one
+    // AreaLightSource holds the same statement, so a large parameter costs once (issue 32).
+    std::shared_ptr<const AreaLight> area_light;
 };
 
 struct LightRecord {
@@ -53,6 +56,7 @@ struct PbrtScene {
     std::vector<ShapeRecord> shapes;
     std::vector<LightRecord> lights;
     std::map<std::string, nlohmann::json> materials;  // our JSON material by its name in the output
+    std::map<std::string, Where> material_where;      // the statement that defined it, for messages
     // Materials that make a shape invisible to light (pbrt's "interface"): shapes using one are left out.
     std::map<std::string, bool> invisible;
 };

@@ -264,9 +264,8 @@ void write_shape(WorldContext& w, const ShapeRecord& s) {
     } else if (type == "plymesh") {
         const std::string file = p.get_string("filename", "", d);
         if (file.empty()) d.fail(s.statement.where, what + ": needs \"string filename\"");
-        std::error_code ec;
-        if (!std::filesystem::is_regular_file(w.files.resolve(file), ec))
-            d.fail(s.statement.where, what + ": \"" + excerpt(file) + "\" not found (looked for " + w.files.resolve(file).string() + ")");
+        if (const std::string problem = file_kind_problem(w.files.resolve(file)); !problem.empty())
+            d.fail(s.statement.where, what + ": \"" + excerpt(file) + "\" " + problem + " (looked for " + w.files.resolve(file).string() + ")");
         if (p.has("displacement")) {
             p.find("displacement");
             d.warn(s.statement.where, "displacement", what + ": \"displacement\" is not supported (ignored)");

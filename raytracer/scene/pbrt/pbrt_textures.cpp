@@ -188,9 +188,8 @@ void MaterialTranslator::define_texture(const std::string& name, const std::stri
         if (file.empty()) diag_.fail(s.where, what + ": needs \"string filename\"");
         const std::string ext = lowercase_extension(file);
         const bool eight_bit = is_8bit_srgb(file);  // image.hpp's list: display values, sRGB-coded
-        std::error_code ec;
-        if (!std::filesystem::is_regular_file(files_.resolve(file), ec))
-            diag_.fail(s.where, what + ": image \"" + excerpt(file) + "\" not found (looked for " + files_.resolve(file).string() + ")");
+        if (const std::string problem = file_kind_problem(files_.resolve(file)); !problem.empty())
+            diag_.fail(s.where, what + ": image \"" + excerpt(file) + "\" " + problem + " (looked for " + files_.resolve(file).string() + ")");
         const std::string encoding = p.get_string("encoding", is_linear_format(ext) ? "linear" : "sRGB", diag_);
         const std::string wrap = p.get_string("wrap", "repeat", diag_);
         if (!eight_bit && !is_linear_format(ext)) {

@@ -77,6 +77,7 @@ std::optional<std::string> WorldContext::material_for(const ShapeRecord& s, doub
     m["emission"] = {l.r, l.g, l.b};
     if (two_sided) m["two_sided"] = true;
     doc["materials"][key] = m;
+    if (origins) origins->materials.try_emplace(key, ObjectOrigin{light.where, what});
     return key;
 }
 
@@ -100,19 +101,33 @@ void scale_emitters(json& doc, double k) {
 }
 
 json write_world(const PbrtScene& scene, MaterialTranslator& materials, const FileNames& files, Diagnostics& diag,
-                 std::string& film_filename, std::vector<ObjectOrigin>& origins) {
+                 std::string& film_filename, DocumentOrigins& origins) {
     WorldContext w{scene, materials, files, diag, nlohmann::json::object(), 0};
     w.doc = json::object();
+    w.origins = &origins;
     w.doc["description"] = "converted from the pbrt-v4 scene " + scene.main_file.filename().string() + " by sweeptrace";
     w.doc["materials"] = json::object();
     w.doc["objects"] = json::array();
     write_camera_and_film(w, film_filename);
+    const auto origin = [](const Statement& s, const char* directive) {
+        return ObjectOrigin{s.where, std::string(directive) + " \"" + excerpt(s.type) + "\""};
+    };
+    const Where top{std::make_shared<const std::string>(scene.main_file.string()), 1};
+    origins.camera = scene.camera ? origin(*scene.camera, "Camera") : ObjectOrigin{top, "Camera (the default)"};
+    origins.film = scene.film ? origin(*scene.film, "Film") : ObjectOrigin{top, "Film (the default)"};
+    for (const auto& [name, where] : scene.material_where) origins.materials[name] = {where, "material \"" + excerpt(name) + "\""};
     for (const ShapeRecord& s : scene.shapes) {
         write_shape(w, s);
-        if (const std::size_t n = w.doc["objects"].size(); n > origins.size())
-            origins.resize(n, {s.statement.where, "Shape \"" + excerpt(s.statement.type) + "\""});
+        if (const std::size_t n = w.doc["objects"].size(); n > origins.objects.size()) origins.objects.resize(n, origin(s.statement, "Shape"));
     }
-    for (const LightRecord& l : scene.lights) write_light(w, l);
+    const auto has = [&](const char* key) { return w.doc.contains(key) && !w.doc[key].is_null(); };
+    for (const LightRecord& l : scene.lights) {
+        const bool had_background = has("background");
+        write_light(w, l);
+        if (const std::size_t n = has("lights") ? w.doc["lights"].size() : 0; n > origins.lights.size())
+            origins.lights.resize(n, origin(l.statement, "LightSource"));
+        if (!had_background && has("background")) origins.background = origin(l.statement, "LightSource");
+    }
     if (w.imaging_ratio != 1.0) scale_emitters(w.doc, w.imaging_ratio);
     return w.doc;
 }

@@ -9,6 +9,8 @@
 // (camera.handedness "left": right = up x forward), which is pbrt's camera exactly; exporters that
 // start with `Scale -1 1 1` (det < 0; Bitterli's scenes, Blender's exporter) get our right-handed
 // camera. Shapes, lights and mesh files therefore stay where pbrt puts them.
+#include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -24,6 +26,20 @@ namespace sweeptrace::pbrt {
 // inline meshes: about 200 bytes each while the JSON document is built and read. The text limits
 // (pbrt_parser.hpp: 64 MiB) allow about as many; larger meshes belong in PLY files.
 inline constexpr std::size_t kMaxInlineTriangles = 4000000;
+
+// The pbrt statement a part of the JSON was written for, so that the JSON loader's complaint
+// about it (a corrupt PLY file, a light's intensity that overflowed once scaled, a texture's bad
+// image) can be said at the pbrt file and line (pbrt_import.cpp): the user never saw the JSON.
+struct ObjectOrigin {
+    Where where;
+    std::string what;  // `Shape "plymesh"`
+};
+
+struct DocumentOrigins {
+    std::vector<ObjectOrigin> objects, lights;  // objects[i], lights[i]
+    std::map<std::string, ObjectOrigin> materials;  // by the material's name in the JSON
+    std::optional<ObjectOrigin> background, camera, film;
+};
 
 struct WorldContext {
     const PbrtScene& scene;
@@ -42,19 +58,13 @@ struct WorldContext {
     // material per material and light); nullopt when the shape is invisible (pbrt's "interface").
     // `area` is the shape's world area, for "power".
     std::optional<std::string> material_for(const ShapeRecord& s, double area);
-};
-
-// The pbrt statement a JSON object was written for, so that the JSON loader's complaint about
-// objects[i] (a corrupt PLY file, say) can be said at the pbrt file and line (pbrt_import.cpp).
-struct ObjectOrigin {
-    Where where;
-    std::string what;  // `Shape "plymesh"`
+    DocumentOrigins* origins = nullptr;  // where material_for's emitting materials came from
 };
 
 // Our JSON for the scene; `film_filename` gets the Film's "filename" (pbrt's default "pbrt.exr"),
-// `origins` one entry per written object (objects[i] came from origins[i]).
+// `origins` where each part came from.
 nlohmann::json write_world(const PbrtScene& scene, MaterialTranslator& materials, const FileNames& files, Diagnostics& diag,
-                           std::string& film_filename, std::vector<ObjectOrigin>& origins);
+                           std::string& film_filename, DocumentOrigins& origins);
 
 // Parts, each in its own file: camera, film, sampler, filter, integrator (pbrt_camera.cpp);
 // one shape (pbrt_shapes.cpp); one light (pbrt_lights.cpp).
