@@ -163,13 +163,9 @@ public:
     // scene's bounding sphere perpendicular to it (pbrt-v4's convention).
     bool sample_emission(float u_select, float u_part, float u1, float u2, float u3, float u4,
                          LightEmission& out) const;
-    std::uint32_t light_count() const { return static_cast<std::uint32_t>(cdf_.size()); }
-    // The light sample() draws from u_select (its index in the selection order).
+    // The light sample() draws from u_select (its index in the selection order; light_count()
+    // and light_of_object() above count in the same order).
     std::uint32_t light_of_sample(float u_select) const;
-    // The light made of `object` (its index in the selection order); is_light(object) first.
-    std::uint32_t light_of_object(std::uint32_t object) const {
-        return static_cast<std::uint32_t>(light_of_object_[object]);
-    }
     float light_selection(std::uint32_t light) const;
     // Lights at infinity that an escaping ray can find (suns with a disc, the environment).
     bool light_is_found_at_infinity(std::uint32_t light) const;

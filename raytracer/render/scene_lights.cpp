@@ -42,6 +42,7 @@ float spot_falloff(const SceneLight& l, float cos_theta) {
 }  // namespace
 
 void LightSet::add_scene_lights(const Scene& scene, std::vector<float>& weights) {
+    float radius = -1.0f;  // the scene's bounding sphere, measured once when a light at infinity needs it
     for (const SceneLight& sl : scene.lights) {
         NonSurfaceLight l;
         l.light = &sl;

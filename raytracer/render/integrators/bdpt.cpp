@@ -76,7 +76,7 @@ BdptIntegrator::BdptIntegrator(const Scene& scene, const Accel& accel, const Lig
       filter_radius_(scene.film.filter.radius),
       filter_integral_(camera.filter().integral()) {
     for (const Object& o : scene.objects) moving_ = moving_ || (scene.camera.shutter && o.motion.moving());
-    for (std::uint32_t l = 0; l < lights.light_count(); ++l)
+    for (std::uint32_t l = 0; l < static_cast<std::uint32_t>(lights.light_count()); ++l)
         if (lights.light_is_found_at_infinity(l)) infinite_lights_.push_back(l);
 }
 
@@ -307,7 +307,7 @@ glm::vec3 BdptIntegrator::emitter_hit(Subpaths& sp, int j) const {
     MisPath& m = sp.mis;
     camera_only(m, sp.cam, j, 0);
     m.delta[0] = 0;
-    const std::uint32_t light = lights_.light_of_object(z.hit.object);
+    const auto light = static_cast<std::uint32_t>(lights_.light_of_object(z.hit.object));  // an emitter: is_light
     const LightSet::EmissionDensity d = lights_.emission_density(light, z.hit.normal, z.wo);
     m.fwd[0] = d.pos;
     m.nee0 = d.pos;
