@@ -48,6 +48,7 @@ struct RenderArgs {
     std::string accel = "bvh";
     std::string sampler;  // empty: the scene's film.sampler
     std::string guiding;  // "on", "off" or empty: the scene's film.guiding
+    std::string integrator;  // "path", "bdpt" or empty: the scene's film.integrator
     std::string time_clock = "wall";
     bool quiet = false;
     std::string samples;  // "A:B": render a farm part
@@ -168,6 +169,7 @@ int run_render(const RenderArgs& a) {
     for (const std::string& w : emitters_facing_nothing(scene)) std::fprintf(stderr, "sweeptrace: warning: %s\n", w.c_str());
     a.limits.apply(scene);
     if (!a.sampler.empty()) scene.film.sampler = a.sampler == "independent" ? SamplerKind::Independent : SamplerKind::Sobol;
+    if (!a.integrator.empty()) scene.film.integrator = a.integrator == "bdpt" ? IntegratorKind::Bdpt : IntegratorKind::Path;
     std::vector<NamedInput> inputs{{"scene", scene_path}};
     for (const Mesh& m : scene.meshes) inputs.push_back({"mesh", m.source});
     refuse_output_over_input(out, inputs);
@@ -196,7 +198,11 @@ int run_render(const RenderArgs& a) {
     opt.threads = thread_count;
     opt.seed = scene.seed;
     opt.sampler = scene.film.sampler;
-    opt.guiding = a.guiding.empty() ? scene.film.guiding : a.guiding == "on";
+    opt.integrator = scene.film.integrator;
+    // Guiding is the path tracer's: a scene that asks for it is rendered unguided by bdpt, and
+    // asking for both on the command line is an error.
+    require(!(a.guiding == "on" && opt.integrator != IntegratorKind::Path), "--guiding on needs the path integrator");
+    opt.guiding = opt.integrator == IntegratorKind::Path && (a.guiding.empty() ? scene.film.guiding : a.guiding == "on");
     if (!a.samples.empty()) {
         // A part must be exactly the samples [A, B) a whole render draws: a time budget would cut
         // it short, and a guided sample depends on the guide trained on every pass before it.
@@ -238,7 +244,7 @@ int run_render(const RenderArgs& a) {
         std::fprintf(stderr,
                      "%s: %dx%d, %d spp%s, %s (%s, built in %.2f s), %d thread%s: %.2f s, %s samples/s, %s rays/s -> %s\n",
                      scene_path.filename().string().c_str(), scene.film.width, scene.film.height, st.completed_spp,
-                     opt.guiding ? " guided" : "",
+                     opt.guiding ? " guided" : opt.integrator == IntegratorKind::Bdpt ? " bdpt" : "",
                      accel->name().c_str(), si_text(double(accel->memory_bytes())).append("B").c_str(), build_seconds,
                      threads, threads == 1 ? "" : "s", st.seconds, si_text(double(st.samples) / secs).c_str(),
                      si_text(double(st.rays) / secs).c_str(), out.string().c_str());
@@ -281,6 +287,9 @@ void add_render_command(CLI::App& app, int& exit_code) {
     cmd->add_option("--guiding", args->guiding,
                     "Path guiding (learned during the render, unbiased): on or off (default: the scene's film.guiding)")
         ->check(CLI::IsMember({"on", "off"}));
+    cmd->add_option("--integrator", args->integrator,
+                    "Light transport: path (unidirectional) or bdpt (bidirectional) (default: the scene's film.integrator)")
+        ->check(CLI::IsMember({"path", "bdpt"}));
     cmd->add_flag("--quiet", args->quiet, "No progress display and no summary");
     cmd->add_flag("--strict", args->strict,
                   "A .pbrt scene: refuse (exit 2) anything the translation would approximate or ignore, instead of a warning");

@@ -120,4 +120,18 @@ bool sample_bsdf(const Material& m, const ShadingContext& ctx, float u0, float u
     return false;
 }
 
+BsdfEvalBoth eval_bsdf_both(const Material& m, const SurfaceHit& hit, const glm::vec3& wo, const glm::vec3& wi) {
+    const BsdfEval e = eval_bsdf(m, make_shading_context(hit, wo), wi);
+    BsdfEvalBoth both{e.f_cos, e.pdf, 0.0f};
+    if (e.pdf > 0.0f) both.pdf_wo = eval_bsdf(m, make_shading_context(hit, wi), wo).pdf;
+    return both;
+}
+
+float importance_refraction_scale(const Material& m, const ShadingContext& ctx, const glm::vec3& wi) {
+    if (m.type != Material::Type::Dielectric && m.type != Material::Type::RoughDielectric) return 1.0f;
+    if (glm::dot(wi, ctx.ng) >= 0.0f) return 1.0f;  // reflected
+    const float eta = ctx.front ? m.ior : 1.0f / m.ior;
+    return eta * eta;
+}
+
 }  // namespace sweeptrace

@@ -92,6 +92,23 @@ BsdfEval eval_bsdf(const Material& m, const ShadingContext& ctx, const glm::vec3
 // Returns false when no direction was produced (absorbed, or the sample fell below the surface).
 bool sample_bsdf(const Material& m, const ShadingContext& ctx, float u0, float u1, float u2, BsdfSample& out);
 
+// Both directions' densities at a path vertex, for bidirectional methods whose MIS weights ask
+// how likely each neighbour was to be sampled from the other side: f |cos theta_i| (the shading
+// cosine of wi) for light arriving along wi and leaving along wo, the density of sample_bsdf
+// producing wi from wo (pdf_wi) and of producing wo from wi (pdf_wo). Zero for delta lobes.
+struct BsdfEvalBoth {
+    glm::vec3 f_cos{0.0f};
+    float pdf_wi = 0.0f;
+    float pdf_wo = 0.0f;
+};
+BsdfEvalBoth eval_bsdf_both(const Material& m, const SurfaceHit& hit, const glm::vec3& wo, const glm::vec3& wi);
+
+// Transporting importance (a light subpath: wo toward the light, wi toward the camera side), a
+// refraction carries power, not radiance: the 1/eta^2 that eval_bsdf / sample_bsdf give a
+// transmission from wo's side is undone by this factor (eta^2; 1 for reflection and for
+// materials that do not bend light; pbrt-v4's TransportMode::Importance).
+float importance_refraction_scale(const Material& m, const ShadingContext& ctx, const glm::vec3& wi);
+
 // Radiance the material emits from a point with outward geometric normal `n` toward `w`
 // (unit, pointing away from the surface). Front side only unless Material::two_sided_emission.
 inline glm::vec3 emitted_radiance(const Material& m, const glm::vec3& n, const glm::vec3& w) {

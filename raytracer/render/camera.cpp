@@ -49,4 +49,34 @@ collision::Ray CameraModel::generate(float x, float y, float u1, float u2) const
     return ray;
 }
 
+glm::vec3 CameraModel::lens_point(float u1, float u2) const {
+    if (lens_radius_ <= 0.0f) return origin_;
+    const glm::vec2 lens = lens_radius_ * concentric_disk(u1, u2);
+    return origin_ + lens.x * right_ + lens.y * up_;
+}
+
+float CameraModel::lens_area() const { return lens_radius_ > 0.0f ? kPi * lens_radius_ * lens_radius_ : 1.0f; }
+
+float CameraModel::direction_pdf(float cos_theta) const {
+    if (!(cos_theta > 0.0f)) return 0.0f;
+    const float area = 4.0f * half_width_ * half_height_;
+    return 1.0f / (area * cos_theta * cos_theta * cos_theta);
+}
+
+// The inverse of generate(): the lens point lies on the plane through the eye, so the ray meets
+// the focus plane at lens + d focus_distance / (d . forward), and the film point is where the
+// pinhole through the eye would have aimed at that point.
+bool CameraModel::film_position(const glm::vec3& lens, const glm::vec3& p, float margin, float& x, float& y) const {
+    const glm::vec3 d = p - lens;
+    const float along = glm::dot(d, forward_);
+    if (!(along > near_clip_) || !(along > 0.0f)) return false;
+    glm::vec3 on_plane = d / along;  // the direction scaled to the plane at distance 1
+    if (lens_radius_ > 0.0f) on_plane = (lens + d * (focus_distance_ / along) - origin_) / focus_distance_;
+    const float sx = glm::dot(on_plane, right_), sy = glm::dot(on_plane, up_);
+    x = (sx / half_width_ + 1.0f) / (2.0f * inv_width_);
+    y = (1.0f - sy / half_height_) / (2.0f * inv_height_);
+    const float w = 1.0f / inv_width_, h = 1.0f / inv_height_;
+    return x >= -margin && x < w + margin && y >= -margin && y < h + margin;
+}
+
 }  // namespace sweeptrace

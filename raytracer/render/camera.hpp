@@ -33,6 +33,22 @@ public:
     bool has_shutter() const { return shutter_; }
     float shutter_fraction(float u) const { return shutter_open_ < shutter_close_ ? u : 0.0f; }
 
+    // Camera importance, for light tracing (render/integrators/bdpt.cpp; pbrt-v4's We, PDF_We).
+    // The lens point generate() starts from for lens sample (u1, u2): the eye for a pinhole.
+    glm::vec3 lens_point(float u1, float u2) const;
+    float lens_area() const;  // pi r^2; 1 for the pinhole, whose point is a delta
+    const glm::vec3& forward() const { return forward_; }
+    // Where on the film (pixels, as generate() takes them) the ray from lens point `lens` through
+    // `p` lands; false when p is not seen from there: behind the near clip plane, or farther
+    // than `margin` pixels outside the film (a wide pixel filter reaches that far).
+    bool film_position(const glm::vec3& lens, const glm::vec3& p, float margin, float& x, float& y) const;
+    // The solid-angle density with which generate() draws a direction at cos_theta to the view
+    // axis from its lens point, film positions uniform over the film: 1 / (A cos^3 theta), A the
+    // film's area on the plane at distance 1. The importance We = that / (lens_area cos theta).
+    float direction_pdf(float cos_theta) const;
+    float near_clip() const { return near_clip_; }
+    const PixelFilter& filter() const { return filter_; }
+
 private:
     glm::vec3 origin_;
     glm::vec3 right_, up_, forward_;  // orthonormal camera frame

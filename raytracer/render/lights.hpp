@@ -77,6 +77,27 @@ struct LightSample {
 
 class DirectionalQuadtree;
 
+// A light's emission sampled for light tracing and bidirectional methods
+// (LightSet::sample_emission): a point and the direction light leaves it in.
+struct LightEmission {
+    glm::vec3 point{0.0f};        // on the surface; the point light's position; on the disc (at infinity)
+    glm::vec3 point_error{0.0f};
+    glm::vec3 normal{0.0f};       // unit outward normal of a surface light (zero for points; `dir` at infinity)
+    glm::vec3 dir{0.0f};          // unit, the way the light travels
+    // Radiance (surfaces, suns, environment), intensity with the spot's falloff (points, spots),
+    // irradiance (a directional light without a disc).
+    glm::vec3 le{0.0f};
+    float pdf_pos = 0.0f;  // area density of `point` (1 for a point light), selection not included
+    float pdf_dir = 0.0f;  // solid-angle density of `dir` (1 for a delta direction)
+    float selection = 0.0f;
+    std::uint32_t light = 0;  // the light's index in the selection order (LightSet::light_of_sample)
+    std::uint32_t object = 0xffffffffu, primitive = 0;  // a surface light's object and triangle
+    bool delta_position = false;   // point, spot
+    bool delta_direction = false;  // a directional light without a disc
+    bool at_infinity = false;      // directional, sun, environment: `point` is on a disc of the
+                                   // scene's bounding sphere, facing `dir`
+};
+
 class LightSet {
 public:
     // PlantedDefect::FlippedNormals turns the sampled points' normals inward too, so the planted
@@ -121,6 +142,46 @@ public:
     // BSDF-only sampling).
     glm::vec3 escaped_radiance(const glm::vec3& dir, float bsdf_pdf) const;
 
+    // --- Emission sampling, for light tracing and bidirectional path tracing
+    // (render/light_emission.cpp). The light is chosen with the probabilities sample() uses.
+    // Surfaces: a point uniform by area (as sample_area draws it, the sphere too), a direction
+    // cosine-distributed about the emitting side (two-sided: a side with probability 1/2).
+    // Point: uniform over the sphere; spot: uniform in its cone. Lights at infinity (directional,
+    // sun, environment): a direction as NEE draws it, then a point uniform on the disc of the
+    // scene's bounding sphere perpendicular to it (pbrt-v4's convention).
+    bool sample_emission(float u_select, float u_part, float u1, float u2, float u3, float u4,
+                         LightEmission& out) const;
+    std::uint32_t light_count() const { return static_cast<std::uint32_t>(cdf_.size()); }
+    // The light sample() draws from u_select (its index in the selection order).
+    std::uint32_t light_of_sample(float u_select) const;
+    // The light made of `object` (its index in the selection order); is_light(object) first.
+    std::uint32_t light_of_object(std::uint32_t object) const {
+        return static_cast<std::uint32_t>(light_of_object_[object]);
+    }
+    float light_selection(std::uint32_t light) const;
+    // Lights at infinity that an escaping ray can find (suns with a disc, the environment).
+    bool light_is_found_at_infinity(std::uint32_t light) const;
+    bool light_is_delta_position(std::uint32_t light) const;
+    bool light_is_at_infinity(std::uint32_t light) const;
+    // Radiance of a light at infinity along `dir` (toward the light); zero outside a sun's disc.
+    glm::vec3 radiance_at_infinity(std::uint32_t light, const glm::vec3& dir) const;
+    // The densities sample_emission draws with, for a light's point and direction: selection x
+    // area density of a surface point with outward normal `normal` (selection alone for a point
+    // light; selection x the solid-angle density of the direction for a light at infinity, pbrt's
+    // convention), and the solid-angle density of emitting along `dir` from there (the disc's
+    // area density for a light at infinity; 1 for a delta direction).
+    struct EmissionDensity {
+        float pos = 0.0f, dir = 0.0f;
+    };
+    EmissionDensity emission_density(std::uint32_t light, const glm::vec3& normal, const glm::vec3& dir) const;
+    // What a surface light (radiance) or a point / spot light (intensity, the spot's falloff
+    // included) emits along `dir` from its point (normal, primitive: of that point).
+    glm::vec3 emission_toward(std::uint32_t light, const glm::vec3& point, const glm::vec3& normal,
+                              std::uint32_t primitive, const glm::vec3& dir) const;
+    // Next event estimation's density for a light at infinity or a point / spot / directional light
+    // (selection x the direction's solid-angle density; selection alone for delta lights).
+    float nee_density_of_light(std::uint32_t light, const glm::vec3& to_light) const;
+
 private:
     struct Light {
         std::uint32_t object = 0;
@@ -162,6 +223,10 @@ private:
     std::vector<NonSurfaceLight> scene_lights_; // after lights_ in cdf_
     std::vector<Sun> suns_;
     std::shared_ptr<const EnvironmentLight> env_;  // the background, when it is a map that emits
+    // The sphere around the scene's bounds, set when a light sits at infinity (emission sampling).
+    glm::vec3 bounds_centre_{0.0f};
+    float bounds_radius_ = 1.0f;
+    bool emit_scene_light(const NonSurfaceLight& l, float u1, float u2, float u3, float u4, LightEmission& out) const;
     float env_probability_ = 0.0f;                 // it is the last entry of cdf_
 };
 

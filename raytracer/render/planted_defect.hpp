@@ -6,7 +6,9 @@
 
 namespace sweeptrace {
 
-enum class PlantedDefect { None, FlippedNormals, NoRayOffset };
+// BdptDropsNee: bidirectional path tracing leaves next event estimation out of its MIS sums
+// (integrators/bdpt_mis.hpp), so its weights sum to more than 1 and the image is too bright.
+enum class PlantedDefect { None, FlippedNormals, NoRayOffset, BdptDropsNee };
 
 // render() with `defect` planted in the light sampler and the integrator.
 RenderResult render_with_planted_defect(const Scene& scene, const Accel& accel, const RenderOptions& options,

@@ -24,7 +24,8 @@
 #include "collision/finite.hpp"
 #include "raytracer/render/camera.hpp"
 #include "raytracer/render/guiding_sd_tree.hpp"
-#include "raytracer/render/integrator.hpp"
+#include "raytracer/render/integrators/bdpt.hpp"
+#include "raytracer/render/integrators/path.hpp"
 #include "raytracer/render/lights.hpp"
 #include "raytracer/render/planted_defect.hpp"
 #include "raytracer/render/sampler.hpp"
@@ -51,9 +52,12 @@ public:
           lights_(scene, defect),
           camera_(scene.camera, width_, height_, scene.film.filter),
           integrator_(scene, accel, lights_, opt.max_depth, opt.sampling, defect, opt.roulette),
+          bdpt_(scene, accel, lights_, camera_, opt.max_depth, defect, opt.roulette,
+                opt.sampling == Sampling::LightTracing),
           sum_(static_cast<std::size_t>(width_) * height_),
           sum_sq_(sum_.size(), glm::dvec3(0.0)),
           pass_(sum_.size()) {
+        if (opt.integrator == IntegratorKind::Bdpt) tile_splats_.resize(static_cast<std::size_t>(tiles_x_) * tiles_y_);
         if (opt.guiding) {
             tile_records_.resize(static_cast<std::size_t>(tiles_x_) * tiles_y_);
             integrator_.set_guide(&guide_);
@@ -85,6 +89,7 @@ public:
                     }
                 });
                 if (abandoned.load()) break;
+                if (!tile_splats_.empty()) add_splats();
                 if (opt_.guiding && guide_.training()) learn(s + 1);
                 accumulate_pass();
                 completed_spp_.store(s + 1, std::memory_order_release);
@@ -149,6 +154,28 @@ private:
                           });
     }
 
+    // The light-tracing splats of the pass just finished, added to its pixels tile by tile in tile
+    // order and, within a tile, in the order its samples made them: the same float additions for
+    // any thread count, and a pass's values depend only on its sample index, so farm parts merge
+    // bit for bit. The pass value of a pixel is then its camera sample plus every splat of that
+    // pass, each pass an independent estimate of the pixel, so the variance of result() (the
+    // spread of those values over passes) is that of the whole estimator, splats included.
+    void add_splats() {
+        std::uint64_t nonfinite = 0;
+        for (std::vector<Splat>& tile : tile_splats_) {
+            for (const Splat& sp : tile) {
+                const glm::vec3 v = limited(sp.value);
+                if (!collision::finite(v)) {
+                    ++nonfinite;
+                    continue;
+                }
+                pass_[sp.pixel] += v;
+            }
+            tile.clear();
+        }
+        if (nonfinite != 0) nonfinite_.fetch_add(nonfinite, std::memory_order_relaxed);
+    }
+
     // Training on the pass just finished: tiles merged in tile order, so the guide the next pass
     // reads is the same for any thread count.
     void learn(int completed_passes) {
@@ -167,6 +194,8 @@ private:
         std::vector<GuideRecord>* records =
             opt_.guiding && guide_.training() ? &tile_records_[static_cast<std::size_t>(tile)] : nullptr;
         if (records != nullptr) records->clear();
+        const bool bdpt = !tile_splats_.empty();
+        std::vector<Splat>* splats = bdpt ? &tile_splats_[static_cast<std::size_t>(tile)] : nullptr;
         for (int y = y0; y < y1; ++y) {
             for (int x = x0; x < x1; ++x) {
                 const std::size_t pixel = static_cast<std::size_t>(y) * width_ + x;
@@ -178,8 +207,9 @@ private:
                 const float fy = static_cast<float>(y) + film.dy;
                 // Drawn only with a shutter, so still scenes take exactly the numbers they did.
                 const float time = camera_.has_shutter() ? camera_.shutter_fraction(sampler.get1d(sample_dim::kTime)) : 0.0f;
-                glm::vec3 l = film.weight * limited(integrator_.radiance(camera_.generate(fx, fy, lens.x, lens.y), sampler,
-                                                                         rays, records, time));
+                glm::vec3 l = film.weight * limited(bdpt ? bdpt_.sample(fx, fy, lens, time, sampler, rays, *splats)
+                                                         : integrator_.radiance(camera_.generate(fx, fy, lens.x, lens.y),
+                                                                                sampler, rays, records, time));
                 if (!collision::finite(l)) {
                     l = glm::vec3(0.0f);
                     ++nonfinite;
@@ -206,6 +236,8 @@ private:
     LightSet lights_;
     CameraModel camera_;
     PathIntegrator integrator_;
+    BdptIntegrator bdpt_;
+    std::vector<std::vector<Splat>> tile_splats_;  // bdpt: the pass in flight's light-tracing splats, per tile
     std::vector<PixelSum> sum_;     // per-pixel exact sum over completed passes
     std::vector<glm::dvec3> sum_sq_;  // per-pixel sum of squares, for the variance
     std::vector<glm::vec3> pass_;   // the pass in flight
@@ -232,6 +264,10 @@ RenderResult render_with_planted_defect(const Scene& scene, const Accel& accel, 
     if (options.threads < 0) throw std::invalid_argument("render: threads must be >= 0");
     if (options.first_sample < 0 || options.first_sample > std::numeric_limits<int>::max() - options.spp)
         throw std::invalid_argument("render: first_sample must be >= 0 and first_sample + spp fit in an int");
+    if (options.sampling == Sampling::LightTracing && options.integrator != IntegratorKind::Bdpt)
+        throw std::invalid_argument("render: light tracing alone is a bdpt strategy");
+    if (options.guiding && options.integrator != IntegratorKind::Path)
+        throw std::invalid_argument("render: path guiding is the path integrator's");
     if (!(options.time_budget >= 0.0)) throw std::invalid_argument("render: time_budget must be >= 0 seconds");
 
     const auto start = std::chrono::steady_clock::now();

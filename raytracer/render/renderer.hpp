@@ -17,6 +17,9 @@ namespace sweeptrace {
 enum class Sampling {
     NeeMis,    // next event estimation + BSDF sampling, combined by the power heuristic
     BsdfOnly,  // light found only by BSDF-sampled paths (the reference the MIS test compares to)
+    // Bidirectional only: light found only by light subpaths joined to the lens (t = 1, each at
+    // full weight), an estimator independent of the camera's; the light-tracing test's.
+    LightTracing,
 };
 
 // What the progress callback sees.
@@ -37,6 +40,7 @@ struct RenderOptions {
     std::uint64_t seed = 0;
     Sampling sampling = Sampling::NeeMis;
     SamplerKind sampler = SamplerKind::Sobol;  // callers copy scene.film.sampler here
+    IntegratorKind integrator = IntegratorKind::Path;  // callers copy scene.film.integrator here
     RoulettePolicy roulette = RoulettePolicy::adaptive();
     // Path guiding (render/guiding_*.hpp): learned from whole passes, so the image stays the same
     // for any thread count; unbiased, like the unguided render of the same scene.
@@ -85,6 +89,7 @@ struct RenderResult {
 // A time budget ends the render the same way (after at least one pass): the image is the one
 // spp = completed_spp gives.
 // Throws std::invalid_argument for a film smaller than 1x1, spp < 1, max_depth < 1, threads < 0,
+// Sampling::LightTracing with the path integrator, guiding with bdpt,
 // first_sample < 0 or first_sample + spp beyond INT_MAX, time_budget < 0.
 RenderResult render(const Scene& scene, const Accel& accel, const RenderOptions& options);
 

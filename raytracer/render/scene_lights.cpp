@@ -5,6 +5,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "collision/finite.hpp"
 #include "raytracer/geometry/object_world_bounds.hpp"
 #include "raytracer/render/lights.hpp"
 #include "raytracer/render/sampling.hpp"
@@ -13,15 +14,18 @@ namespace sweeptrace {
 
 namespace {
 
-// Radius of the sphere around the world bounds of every object (meshes by their vertices' box),
+// The sphere around the world bounds of every object (meshes by their vertices' box), of radius
 // at least 1 so that a scene of points still gives a directional light a weight.
-float scene_radius(const Scene& scene) {
+float scene_radius(const Scene& scene, glm::vec3& centre) {
     collision::Bounds3 world;
     for (const Object& obj : scene.objects) {
         const collision::Bounds3 box = object_world_bounds(obj, scene.meshes);
         if (!box.empty()) world.extend(box);
     }
+    centre = glm::vec3(0.0f);
     if (world.empty()) return 1.0f;
+    centre = 0.5f * (world.lo + world.hi);
+    if (!collision::finite(centre)) centre = glm::vec3(0.0f);
     const float r = 0.5f * glm::length(world.hi - world.lo);
     return std::isfinite(r) && r > 1.0f ? r : 1.0f;
 }
@@ -49,7 +53,7 @@ void LightSet::add_scene_lights(const Scene& scene, std::vector<float>& weights)
             weight = 2.0f * luminance(sl.intensity) * (1.0f - 0.5f * (sl.cos_falloff_start + sl.cos_cone));
             break;
         case SceneLight::Type::Directional: {
-            if (radius < 0.0f) radius = scene_radius(scene);
+            if (radius < 0.0f) radius = bounds_radius_ = scene_radius(scene, bounds_centre_);
             weight = luminance(sl.irradiance) * radius * radius;
             if (sl.half_angle > 0.0f) {
                 Sun sun;
@@ -73,7 +77,7 @@ void LightSet::add_scene_lights(const Scene& scene, std::vector<float>& weights)
     }
     if (scene.background.kind == Background::Kind::Environment && scene.background.environment) {
         auto env = std::make_shared<const EnvironmentLight>(scene.background);
-        if (radius < 0.0f) radius = scene_radius(scene);
+        if (radius < 0.0f) radius = bounds_radius_ = scene_radius(scene, bounds_centre_);
         const float weight = static_cast<float>(env->luminance_integral()) * radius * radius;
         if (env->emits() && weight > 0.0f && std::isfinite(weight)) {
             env_ = std::move(env);
@@ -141,6 +145,68 @@ glm::vec3 LightSet::escaped_radiance(const glm::vec3& dir, float bsdf_pdf) const
         sum += le * w;
     }
     return sum;
+}
+
+// Emission of a scene light (LightSet::sample_emission): a point or spot emits from its position
+// (uniform over the sphere, or uniform in the spot's cone, the falloff in `le`); a light at
+// infinity along a direction drawn as NEE draws it, from a point uniform on the disc of the
+// bounding sphere that faces it.
+bool LightSet::emit_scene_light(const NonSurfaceLight& l, float u1, float u2, float u3, float u4,
+                                LightEmission& out) const {
+    const SceneLight& sl = *l.light;
+    out.selection = l.probability;
+    if (sl.type != SceneLight::Type::Directional) {
+        out.delta_position = true;
+        out.point = sl.position;
+        out.pdf_pos = 1.0f;
+        if (sl.type == SceneLight::Type::Point) {
+            out.dir = uniform_sphere(u3, u4);
+            out.pdf_dir = 1.0f / (4.0f * kPi);
+            out.le = sl.intensity;
+        } else {
+            const float omc = 1.0f - sl.cos_cone;
+            out.dir = glm::normalize(Frame(sl.direction).to_world(uniform_cone(u3, u4, omc)));
+            out.pdf_dir = uniform_cone_pdf(omc);
+            out.le = sl.intensity * spot_falloff(sl, glm::dot(out.dir, sl.direction));
+        }
+        return out.pdf_dir > 0.0f && std::isfinite(out.pdf_dir) && luminance(out.le) > 0.0f;
+    }
+    glm::vec3 to_light = -sl.direction;
+    out.at_infinity = true;
+    if (l.sun < 0) {
+        out.delta_direction = true;
+        out.pdf_dir = 1.0f;
+        out.le = sl.irradiance;
+    } else {
+        const Sun& sun = suns_[static_cast<std::size_t>(l.sun)];
+        to_light = glm::normalize(Frame(sun.to_light).to_world(uniform_cone(u3, u4, sun.omc)));
+        out.pdf_dir = uniform_cone_pdf(sun.omc);
+        out.le = sun.radiance;
+    }
+    out.dir = -to_light;
+    out.normal = out.dir;
+    const glm::vec2 d = bounds_radius_ * concentric_disk(u1, u2);
+    const Frame f(to_light);
+    out.point = bounds_centre_ + bounds_radius_ * to_light + d.x * f.s + d.y * f.t;
+    out.pdf_pos = 1.0f / (kPi * bounds_radius_ * bounds_radius_);
+    return out.pdf_dir > 0.0f && std::isfinite(out.pdf_dir) && luminance(out.le) > 0.0f;
+}
+
+glm::vec3 LightSet::emission_toward(std::uint32_t light, const glm::vec3& point, const glm::vec3& normal,
+                                     std::uint32_t primitive, const glm::vec3& dir) const {
+    if (light < lights_.size()) {
+        LightSample at;
+        at.point = point;
+        at.normal = normal;
+        at.wi = -dir;
+        return emitted_radiance_at(lights_[light], at, primitive);
+    }
+    const std::size_t k = light - lights_.size();
+    if (k >= scene_lights_.size()) return glm::vec3(0.0f);
+    const SceneLight& sl = *scene_lights_[k].light;
+    if (sl.type == SceneLight::Type::Point) return sl.intensity;
+    if (sl.type == SceneLight::Type::Spot) return sl.intensity * spot_falloff(sl, glm::dot(dir, sl.direction));
+    return glm::vec3(0.0f);
 }
 
 }  // namespace sweeptrace

@@ -76,7 +76,7 @@ int read_film_setting(const Node& node, FilmSetting setting) {
 
 Film read_film(const Node& node) {
     node.require_object({"width", "height", "spp", "max_depth", "sampler", "guiding", "exposure", "tone_curve", "filter",
-                         "clamp_indirect", "clamp_sample"});
+                         "clamp_indirect", "clamp_sample", "integrator"});
     Film film;
     film.width = read_film_setting(node.at("width"), FilmSetting::Width);
     film.height = read_film_setting(node.at("height"), FilmSetting::Height);
@@ -89,6 +89,12 @@ Film read_film(const Node& node) {
         else sampler->fail("unknown sampler \"" + name + "\" (known: sobol, independent)");
     }
     if (auto guiding = node.find("guiding")) film.guiding = guiding->boolean();
+    if (auto integrator = node.find("integrator")) {
+        const std::string name = integrator->string();
+        if (name == "path") film.integrator = IntegratorKind::Path;
+        else if (name == "bdpt") film.integrator = IntegratorKind::Bdpt;
+        else integrator->fail("unknown integrator \"" + name + "\" (known: path, bdpt)");
+    }
     if (auto clamp = node.find("clamp_indirect")) film.clamp_indirect = clamp->number_at_least(0.0f, false);
     if (auto clamp = node.find("clamp_sample")) film.clamp_sample = clamp->number_at_least(0.0f, false);
     read_film_display(node, film);

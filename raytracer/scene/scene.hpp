@@ -42,6 +42,10 @@ struct Camera {
 // Where a camera sample's numbers come from (render/sampler.hpp).
 enum class SamplerKind { Independent, Sobol };
 
+// Which light transport method renders the film (render/integrators/): the unidirectional path
+// tracer (the default), or bidirectional path tracing (Veach 1997, ch. 10).
+enum class IntegratorKind { Path, Bdpt };
+
 // The curve that takes exposed linear radiance to [0, 1] for 8-bit output (render/tone_map.hpp).
 enum class ToneCurve { Clamp, Aces };
 
@@ -62,6 +66,7 @@ struct Film {
     int max_depth = 8;  // path vertices after the camera; Russian roulette may stop earlier
     SamplerKind sampler = SamplerKind::Sobol;
     bool guiding = false;  // path guiding by default (render --guiding overrides)
+    IntegratorKind integrator = IntegratorKind::Path;  // scene key "integrator" (render --integrator overrides)
     float exposure = 0.0f;  // stops: 8-bit output shows radiance x 2^exposure (linear outputs untouched)
     ToneCurve tone_curve = ToneCurve::Clamp;
     FilterSpec filter;  // box of radius 0.5: each sample uniform in its pixel

@@ -73,7 +73,7 @@ TEST_CASE("sphere light over a diffuse plane: pixels read rho/pi * pi L (R/d)^2 
 namespace {
 
 // Camera at the centre of a closed sphere that is diffuse (albedo rho) and emits Le from both
-// sides. Every path vertex sees Le, so with max_depth D vertices counted (render/integrator.hpp:
+// sides. Every path vertex sees Le, so with max_depth D vertices counted (render/integrators/path.hpp:
 // the emitting vertex included) every pixel reads Le (1 + rho + ... + rho^(D-1)); Russian
 // roulette from the third bounce changes the variance, not the mean.
 void check_emissive_sphere(int max_depth, int spp, Sampling sampling) {

@@ -10,7 +10,7 @@
 
 #include "raytracer/input_error.hpp"
 #include "raytracer/render/camera.hpp"
-#include "raytracer/render/integrator.hpp"
+#include "raytracer/render/integrators/path.hpp"
 #include "raytracer/render/lights.hpp"
 #include "raytracer/render/renderer.hpp"
 #include "raytracer/render/sampler.hpp"

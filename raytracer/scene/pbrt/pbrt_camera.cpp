@@ -34,18 +34,19 @@ long long clamped(Diagnostics& d, const Where& at, const std::string& what, long
     return c;
 }
 
-// What our unidirectional path tracer (camera paths, next event estimation at non-specular
-// vertices) gives in place of pbrt-v4's other integrators; empty for "path" and "volpath", which
-// it is. A light-tracing method (bdpt, mlt, sppm, lightpath) reaches paths ours cannot: light
-// that leaves a small source, passes a specular surface and lands on a diffuse one (a caustic)
-// is found only when a camera path happens to hit the source after the specular bounce, so it
-// stays black or extremely noisy; a delta light can never be hit at all, so light from pbrt's
-// distant, point, spot, goniometric or projection light arriving through or off a specular
-// surface is missing, whatever the spp. Saying "the same image with other noise" hid both.
+// What we render in place of pbrt-v4's integrators; empty for "path" and "volpath" (our path
+// tracer) and "bdpt" (our bidirectional one, film.integrator "bdpt"). The other light-tracing
+// methods (mlt, sppm, lightpath) reach paths our unidirectional path tracer cannot: light that
+// leaves a small source, passes a specular surface and lands on a diffuse one (a caustic) is found
+// only when a camera path happens to hit the source after the specular bounce, so it stays black
+// or extremely noisy; a delta light can never be hit at all, so light from pbrt's distant, point,
+// spot, goniometric or projection light arriving through or off a specular surface is missing,
+// whatever the spp. Saying "the same image with other noise" hid both.
 std::string integrator_warning(const std::string& type) {
-    if (type == "path" || type == "volpath") return {};
-    if (type == "bdpt" || type == "mlt" || type == "sppm" || type == "lightpath")
-        return " is not supported: our unidirectional path tracer renders instead, and converges to the same image only "
+    if (type == "path" || type == "volpath" || type == "bdpt") return {};
+    if (type == "mlt" || type == "sppm" || type == "lightpath")
+        return " is not supported: our unidirectional path tracer renders instead (Integrator \"bdpt\" would select our "
+               "bidirectional one, which reaches these paths), and converges to the same image only "
                "where light reaches a diffuse surface without passing a specular one (mirror, smooth glass or metal) "
                "first: caustics from small lights through or off specular surfaces stay black or extremely noisy "
                "at any spp, and light from a delta light (\"distant\", \"point\", \"spot\", \"goniometric\", "
@@ -172,6 +173,7 @@ void write_camera_and_film(WorldContext& w, std::string& film_filename) {
         const Statement& s = *sc.integrator;
         const ParamList& p = s.params;
         const std::string what = "Integrator \"" + excerpt(s.type) + "\"";
+        if (s.type == "bdpt") film["integrator"] = "bdpt";
         if (const std::string why = integrator_warning(s.type); !why.empty())
             d.warn(s.where, "integrator " + s.type, what + why);
         depth = p.get_int("maxdepth", 5, d);

@@ -1,4 +1,4 @@
-#include "raytracer/render/integrator.hpp"
+#include "raytracer/render/integrators/path.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,0 +1,474 @@
+#include "raytracer/render/integrators/bdpt.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include <glm/geometric.hpp>
+
+#include "raytracer/render/bsdf.hpp"
+#include "raytracer/render/integrators/path.hpp"
+#include "raytracer/render/sampling.hpp"
+#include "raytracer/render/texture.hpp"
+
+namespace sweeptrace {
+
+namespace {
+
+// Sampler dimensions. Camera vertex j >= 1 (cam[j]) takes bounce slot 2j - 1 (its NEE light
+// choice and point, lobe, direction, roulette at the path tracer's slot offsets); light vertex b
+// (light[b]) takes bounce slot 2b: for b = 0 the emission (light choice and part, point,
+// direction), for b >= 1 lobe, direction, roulette; every light vertex's lens point for t = 1
+// sits at slot offset kLens. Interleaved, so neither subpath's length moves the other's numbers.
+int camera_slot(int j, int slot) { return sample_dim::bounce(2 * j - 1, slot); }
+int light_slot(int b, int slot) { return sample_dim::bounce(2 * b, slot); }
+constexpr int kLensSlot = 9;  // 2D, past the path tracer's guiding slot (8)
+
+// pbrt's adjoint correction for shading normals, on a light subpath: light arrives along wo and
+// leaves along wi, the BSDF's f |wi.ns| then times |wo.ns| |wi.ng| / (|wo.ng| |wi.ns|).
+float shading_correction(const SurfaceHit& hit, const glm::vec3& wo, const glm::vec3& wi) {
+    const float den = std::abs(glm::dot(wo, hit.normal)) * std::abs(glm::dot(wi, hit.shading_normal));
+    if (!(den > 0.0f)) return 0.0f;
+    return std::abs(glm::dot(wo, hit.shading_normal)) * std::abs(glm::dot(wi, hit.normal)) / den;
+}
+
+// The textured material of a surface vertex, stored in it (the hit's shading normal may change).
+void set_material(const Scene& scene, PathVertex& v) {
+    v.material = scene.objects[v.hit.object].material;
+    const Material& base = scene.materials[v.material];
+    v.has_textured = reads_texture(base);
+    if (v.has_textured) v.textured = textured_material(scene, base, v.hit);
+}
+
+// The densities of a path made of the camera subpath alone, x_i = cam[k - i] for i >= first (s = 0).
+void camera_only(MisPath& m, const std::vector<PathVertex>& cam, int k, int first) {
+    m.k = k;
+    m.fwd.assign(static_cast<std::size_t>(k + 1), 0.0f);
+    m.rev.assign(static_cast<std::size_t>(k + 1), 0.0f);
+    m.delta.assign(static_cast<std::size_t>(k + 1), 0);
+    for (int i = first; i <= k; ++i) {
+        const PathVertex& v = cam[static_cast<std::size_t>(k - i)];
+        m.fwd[static_cast<std::size_t>(i)] = v.pdf_rev;
+        m.rev[static_cast<std::size_t>(i)] = v.pdf_fwd;
+        m.delta[static_cast<std::size_t>(i)] = v.delta;
+    }
+}
+
+}  // namespace
+
+struct BdptIntegrator::Subpaths {
+    std::vector<PathVertex> cam, light;
+    MisPath mis;
+};
+
+BdptIntegrator::BdptIntegrator(const Scene& scene, const Accel& accel, const LightSet& lights,
+                               const CameraModel& camera, int max_depth, PlantedDefect defect, RoulettePolicy roulette,
+                               bool light_tracing_only)
+    : scene_(scene),
+      accel_(accel),
+      lights_(lights),
+      camera_(camera),
+      max_depth_(max_depth),
+      defect_(defect),
+      roulette_(roulette),
+      light_tracing_only_(light_tracing_only),
+      width_(scene.film.width),
+      height_(scene.film.height),
+      filter_radius_(scene.film.filter.radius),
+      filter_integral_(camera.filter().integral()) {
+    for (const Object& o : scene.objects) moving_ = moving_ || (scene.camera.shutter && o.motion.moving());
+    for (std::uint32_t l = 0; l < lights.light_count(); ++l)
+        if (lights.light_is_found_at_infinity(l)) infinite_lights_.push_back(l);
+}
+
+bool BdptIntegrator::blocked(const collision::Ray& ray, float time) const {
+    return moving_ ? accel_.occluded(ray, time) : accel_.occluded(ray);
+}
+
+float BdptIntegrator::weight(const MisPath& path, int s) const {
+    if (light_tracing_only_) return 1.0f;
+    return bdpt_mis_weight(path, s, defect_ == PlantedDefect::BdptDropsNee);
+}
+
+glm::vec3 BdptIntegrator::sample(float x, float y, const glm::vec2& lens, float time, PixelSampler& sampler,
+                                 std::uint64_t& rays, std::vector<Splat>& splats) const {
+    thread_local Subpaths sp;
+    glm::vec3 l(0.0f);
+    if (light_tracing_only_) {
+        light_walk(time, sampler, rays, sp);
+        for (int s = 1; s <= static_cast<int>(sp.light.size()) && s <= max_depth_; ++s)
+            light_to_camera(sp, s, time, sampler, rays, splats);
+        return l;
+    }
+    camera_walk(x, y, lens, time, sampler, rays, sp, l);
+    light_walk(time, sampler, rays, sp);
+    const int nc = static_cast<int>(sp.cam.size()), nl = static_cast<int>(sp.light.size());
+    for (int t = 2; t <= nc; ++t) {
+        const int j = t - 1;
+        l += emitter_hit(sp, j);
+        if (!scatters(sp.cam[j].mat(scene_)) || is_delta(sp.cam[j].mat(scene_))) continue;
+        if (j + 1 <= max_depth_) l += next_event(sp, j, time, sampler, rays);
+        for (int s = 2; s <= nl && s + t - 1 <= max_depth_; ++s) l += connect(sp, s, t, time, rays);
+    }
+    for (int s = 1; s <= nl && s <= max_depth_; ++s) light_to_camera(sp, s, time, sampler, rays, splats);
+    return l;
+}
+
+void BdptIntegrator::camera_walk(float x, float y, const glm::vec2& lens, float time, PixelSampler& sampler,
+                                 std::uint64_t& rays, Subpaths& sp, glm::vec3& escaped) const {
+    sp.cam.clear();
+    PathVertex c;
+    c.kind = PathVertex::Kind::Camera;
+    c.hit.point = camera_.lens_point(lens.x, lens.y);
+    sp.cam.push_back(c);
+    collision::Ray ray = camera_.generate(x, y, lens.x, lens.y);
+    float pdf = camera_.direction_pdf(glm::dot(ray.dir, camera_.forward()));
+    glm::vec3 beta(1.0f);
+    float eta_scale = 1.0f;
+    for (int depth = 1;; ++depth) {
+        SurfaceHit hit;
+        ++rays;
+        if (!(moving_ ? accel_.intersect(ray, time, hit) : accel_.intersect(ray, hit))) {
+            escaped += escaped_radiance(sp, ray.dir, beta, pdf);
+            return;
+        }
+        PathVertex v;
+        v.hit = hit;
+        v.wo = -ray.dir;
+        v.beta = beta;
+        set_material(scene_, v);
+        v.pdf_fwd = area_density(pdf, sp.cam.back().point(), v);
+        sp.cam.push_back(std::move(v));
+        const PathVertex& at = sp.cam.back();
+        const Material& mat = at.mat(scene_);
+        if (depth >= max_depth_ || !scatters(mat)) return;
+        const ShadingContext ctx = make_shading_context(at.hit, at.wo);
+        const float b0 = sampler.get1d(camera_slot(depth, sample_dim::kBsdfLobe));
+        const glm::vec2 b = sampler.get2d(camera_slot(depth, sample_dim::kBsdfDirection));
+        BsdfSample bs;
+        if (!sample_bsdf(mat, ctx, b0, b.x, b.y, bs)) return;
+        const float rev = bs.delta ? 0.0f : eval_bsdf(mat, make_shading_context(at.hit, bs.wi), at.wo).pdf;
+        PathVertex& prev = sp.cam[static_cast<std::size_t>(depth - 1)];
+        if (depth >= 2) prev.pdf_rev = area_density(rev, at.point(), prev);
+        sp.cam.back().delta = bs.delta;
+        pdf = bs.delta ? 0.0f : bs.pdf;
+        beta *= bs.weight;
+        const bool refracting = mat.type == Material::Type::Dielectric || mat.type == Material::Type::RoughDielectric;
+        if (refracting && glm::dot(bs.wi, ctx.ng) < 0.0f) {
+            const float eta = ctx.front ? mat.ior : 1.0f / mat.ior;
+            eta_scale *= eta * eta;
+        }
+        if (depth >= roulette_.start_depth &&
+            !survives_roulette(roulette_, depth, sampler.get1d(camera_slot(depth, sample_dim::kRoulette)), eta_scale, beta))
+            return;
+        ray = spawn_ray(sp.cam.back().hit, bs.wi);
+    }
+}
+
+void BdptIntegrator::light_walk(float time, PixelSampler& sampler, std::uint64_t& rays, Subpaths& sp) const {
+    sp.light.clear();
+    if (lights_.empty()) return;
+    const glm::vec2 uc = sampler.get2d(light_slot(0, sample_dim::kLightChoice));
+    const glm::vec2 up = sampler.get2d(light_slot(0, sample_dim::kLightPoint));
+    const glm::vec2 ud = sampler.get2d(light_slot(0, sample_dim::kBsdfDirection));
+    LightEmission em;
+    if (!lights_.sample_emission(uc.x, uc.y, up.x, up.y, ud.x, ud.y, em)) return;
+    PathVertex v0;
+    v0.kind = PathVertex::Kind::Light;
+    v0.hit.point = em.point;
+    v0.hit.point_error = em.point_error;
+    v0.hit.normal = v0.hit.shading_normal = em.normal;
+    v0.hit.object = em.object;
+    v0.hit.primitive = em.primitive;
+    v0.light = em.light;
+    v0.at_infinity = em.at_infinity;
+    v0.delta_position = em.delta_position;
+    v0.delta_direction = em.delta_direction;
+    v0.beta = glm::vec3(1.0f / (em.selection * em.pdf_pos));
+    v0.pdf_fwd = em.selection * (em.at_infinity ? em.pdf_dir : em.pdf_pos);
+    sp.light.push_back(v0);
+    const float cos0 = v0.on_surface() ? std::abs(glm::dot(em.normal, em.dir)) : 1.0f;
+    glm::vec3 beta = em.le * (cos0 / (em.selection * em.pdf_pos * em.pdf_dir));
+    const float beta_start = max_component(beta);
+    collision::Ray ray;
+    if (v0.on_surface()) {
+        ray = spawn_ray(v0.hit, em.dir);
+    } else {
+        ray.origin = em.point;
+        ray.dir = em.dir;
+        ray.tmin = 0.0f;
+    }
+    float pdf = em.pdf_dir;
+    for (int b = 1; b < max_depth_; ++b) {
+        SurfaceHit hit;
+        ++rays;
+        if (!(moving_ ? accel_.intersect(ray, time, hit) : accel_.intersect(ray, hit))) return;
+        PathVertex v;
+        v.hit = hit;
+        v.wo = -ray.dir;
+        v.beta = beta;
+        set_material(scene_, v);
+        PathVertex& prev = sp.light.back();
+        v.pdf_fwd = prev.at_infinity ? em.pdf_pos * std::abs(glm::dot(v.hit.normal, ray.dir)) : area_density(pdf, prev.point(), v);
+        if (b == 1) {
+            // Next event estimation's density of the light point from here, for strategy s = 1.
+            PathVertex& l0 = sp.light.front();
+            if (l0.at_infinity || l0.delta_position) {
+                l0.pdf_nee = l0.at_infinity ? l0.pdf_fwd : em.selection;
+            } else {
+                l0.pdf_nee = area_density(lights_.pdf(v.point(), v.hit.object, l0.hit), v.point(), l0);
+            }
+        }
+        const Material& mat = v.mat(scene_);
+        if (!scatters(mat)) return;  // an absorber: every connection through it is zero
+        sp.light.push_back(std::move(v));
+        PathVertex& at = sp.light.back();
+        if (b + 1 >= max_depth_) return;
+        const ShadingContext ctx = make_shading_context(at.hit, at.wo);
+        const float b0 = sampler.get1d(light_slot(b, sample_dim::kBsdfLobe));
+        const glm::vec2 bd = sampler.get2d(light_slot(b, sample_dim::kBsdfDirection));
+        BsdfSample bs;
+        if (!sample_bsdf(at.mat(scene_), ctx, b0, bd.x, bd.y, bs)) return;
+        beta *= bs.weight * (importance_refraction_scale(at.mat(scene_), ctx, bs.wi) * shading_correction(at.hit, at.wo, bs.wi));
+        const float rev = bs.delta ? 0.0f : eval_bsdf(at.mat(scene_), make_shading_context(at.hit, bs.wi), at.wo).pdf;
+        PathVertex& before = sp.light[static_cast<std::size_t>(b - 1)];
+        before.pdf_rev = area_density(rev, at.point(), before);
+        at.delta = bs.delta;
+        pdf = bs.delta ? 0.0f : bs.pdf;
+        // Roulette on the throughput relative to the first segment's (light subpaths carry power).
+        if (b >= roulette_.start_depth) {
+            const float q = std::min(1.0f, max_component(beta) / beta_start);
+            if (!(sampler.get1d(light_slot(b, sample_dim::kRoulette)) < q)) return;
+            beta /= q;
+        }
+        ray = spawn_ray(at.hit, bs.wi);
+    }
+}
+
+// The densities of the path light[0..s) + cam[t-1..0], in light order, as the subpaths sampled
+// them; the connection's own entries are the caller's to set.
+void BdptIntegrator::gather(Subpaths& sp, int s, int t) const {
+    MisPath& m = sp.mis;
+    m.k = s + t - 1;
+    const auto n = static_cast<std::size_t>(m.k + 1);
+    m.fwd.assign(n, 0.0f);
+    m.rev.assign(n, 0.0f);
+    m.delta.assign(n, 0);
+    for (int i = 0; i < s; ++i) {
+        const PathVertex& v = sp.light[static_cast<std::size_t>(i)];
+        m.fwd[static_cast<std::size_t>(i)] = v.pdf_fwd;
+        m.rev[static_cast<std::size_t>(i)] = v.pdf_rev;
+        m.delta[static_cast<std::size_t>(i)] = v.delta;
+    }
+    for (int i = s; i <= m.k; ++i) {
+        const PathVertex& v = sp.cam[static_cast<std::size_t>(m.k - i)];
+        m.fwd[static_cast<std::size_t>(i)] = v.pdf_rev;
+        m.rev[static_cast<std::size_t>(i)] = v.pdf_fwd;
+        m.delta[static_cast<std::size_t>(i)] = v.delta;
+    }
+    if (s >= 1) {
+        const PathVertex& l0 = sp.light.front();
+        m.nee0 = l0.pdf_nee;
+        m.light_hittable = !l0.delta_position && !l0.delta_direction &&
+                           (!l0.at_infinity || lights_.light_is_found_at_infinity(l0.light));
+        m.light_to_camera = !l0.at_infinity;
+    }
+}
+
+// s = 0 at infinity: the camera subpath escaped along `dir` from its last vertex, sampled with
+// solid-angle density `pdf` there. A background that is no light has no other strategy.
+glm::vec3 BdptIntegrator::escaped_radiance(const Subpaths& sp, const glm::vec3& dir, const glm::vec3& beta,
+                                           float pdf) const {
+    glm::vec3 sum(0.0f);
+    if (!lights_.background_is_light()) sum += beta * background_radiance(scene_.background, dir);
+    if (infinite_lights_.empty()) return sum;
+    const int k = static_cast<int>(sp.cam.size());  // the light is x_0, cam.back() is x_1
+    MisPath m;
+    camera_only(m, sp.cam, k, 1);
+    m.rev[0] = pdf;
+    m.light_to_camera = false;
+    const PathVertex& x1 = sp.cam.back();
+    for (const std::uint32_t light : infinite_lights_) {
+        const glm::vec3 le = lights_.radiance_at_infinity(light, dir);
+        if (!(luminance(le) > 0.0f)) continue;
+        const LightSet::EmissionDensity d = lights_.emission_density(light, -dir, -dir);
+        m.fwd[0] = m.nee0 = d.pos;
+        if (k >= 2) m.fwd[1] = d.dir * std::abs(glm::dot(x1.hit.normal, dir));
+        sum += beta * le * weight(m, 0);
+    }
+    return sum;
+}
+
+// s = 0 on a surface: cam[j] is on an emitter.
+glm::vec3 BdptIntegrator::emitter_hit(Subpaths& sp, int j) const {
+    const PathVertex& z = sp.cam[static_cast<std::size_t>(j)];
+    const glm::vec3 le = emitted_radiance(z.mat(scene_), z.hit.normal, z.wo);
+    if (le == glm::vec3(0.0f)) return le;
+    if (!lights_.is_light(z.hit.object)) return z.beta * le;  // no light sampling finds it
+    MisPath& m = sp.mis;
+    camera_only(m, sp.cam, j, 0);
+    m.delta[0] = 0;
+    const std::uint32_t light = lights_.light_of_object(z.hit.object);
+    const LightSet::EmissionDensity d = lights_.emission_density(light, z.hit.normal, z.wo);
+    m.fwd[0] = d.pos;
+    m.nee0 = d.pos;
+    if (j >= 2) {
+        const PathVertex& x1 = sp.cam[static_cast<std::size_t>(j - 1)];
+        m.fwd[1] = area_density(d.dir, z.point(), x1);
+        PathVertex as_light = z;
+        as_light.kind = PathVertex::Kind::Light;
+        m.nee0 = area_density(lights_.pdf(x1.point(), x1.hit.object, z.hit), x1.point(), as_light);
+    }
+    m.light_hittable = true;
+    m.light_to_camera = true;
+    return z.beta * le * weight(m, 0);
+}
+
+// s = 1: next event estimation from cam[j], as the path tracer draws it.
+glm::vec3 BdptIntegrator::next_event(Subpaths& sp, int j, float time, PixelSampler& sampler,
+                                     std::uint64_t& rays) const {
+    const PathVertex& z = sp.cam[static_cast<std::size_t>(j)];
+    const glm::vec2 uc = sampler.get2d(camera_slot(j, sample_dim::kLightChoice));
+    const glm::vec2 u = sampler.get2d(camera_slot(j, sample_dim::kLightPoint));
+    LightSample ls;
+    if (!lights_.sample(z.point(), z.hit.object, uc.x, uc.y, u.x, u.y, ls)) return glm::vec3(0.0f);
+    const BsdfEvalBoth e = eval_bsdf_both(z.mat(scene_), z.hit, z.wo, ls.wi);
+    if (!(e.pdf_wi > 0.0f)) return glm::vec3(0.0f);
+    const glm::vec3 c = z.beta * e.f_cos * ls.radiance / ls.pdf;
+    if (!(max_component(c) > 0.0f)) return glm::vec3(0.0f);
+    ++rays;
+    const collision::Ray shadow = ls.at_infinity ? spawn_ray(z.hit, ls.wi) : spawn_ray_to(z.hit, ls.point, ls.point_error, ls.normal);
+    if (blocked(shadow, time)) return glm::vec3(0.0f);
+    // The light point as a path vertex x_0, and the path's densities.
+    const std::uint32_t light = lights_.light_of_sample(uc.x);
+    PathVertex x0;
+    x0.kind = PathVertex::Kind::Light;
+    x0.hit.point = ls.point;
+    x0.hit.normal = ls.normal;
+    x0.light = light;
+    x0.at_infinity = ls.at_infinity;
+    x0.delta_position = lights_.light_is_delta_position(light);
+    x0.delta_direction = ls.delta && ls.at_infinity;
+    const LightSet::EmissionDensity d = lights_.emission_density(light, ls.normal, -ls.wi);
+    x0.pdf_fwd = d.pos;
+    x0.pdf_nee = ls.at_infinity || x0.delta_position ? ls.pdf : area_density(ls.pdf, z.point(), x0);
+    x0.pdf_rev = area_density(e.pdf_wi, z.point(), x0);
+    sp.light.resize(std::max<std::size_t>(sp.light.size(), 1));
+    const PathVertex saved = sp.light.front();
+    sp.light.front() = x0;
+    gather(sp, 1, j + 1);
+    sp.light.front() = saved;
+    MisPath& m = sp.mis;
+    m.delta[1] = 0;
+    m.fwd[1] = ls.at_infinity ? d.dir * std::abs(glm::dot(z.hit.normal, ls.wi)) : area_density(d.dir, ls.point, z);
+    if (j >= 2) m.fwd[2] = area_density(e.pdf_wo, z.point(), sp.cam[static_cast<std::size_t>(j - 1)]);
+    return c * weight(m, 1);
+}
+
+// s >= 2, t >= 2: light[s-1] joined to cam[t-1] by a shadow ray.
+glm::vec3 BdptIntegrator::connect(Subpaths& sp, int s, int t, float time, std::uint64_t& rays) const {
+    const PathVertex& y = sp.light[static_cast<std::size_t>(s - 1)];
+    const PathVertex& z = sp.cam[static_cast<std::size_t>(t - 1)];
+    const Material& my = y.mat(scene_);
+    if (is_delta(my)) return glm::vec3(0.0f);
+    glm::vec3 w = z.point() - y.point();
+    const float d2 = glm::dot(w, w);
+    if (!(d2 > 0.0f)) return glm::vec3(0.0f);
+    w /= std::sqrt(d2);
+    const BsdfEvalBoth ey = eval_bsdf_both(my, y.hit, y.wo, w);
+    if (!(ey.pdf_wi > 0.0f)) return glm::vec3(0.0f);
+    const BsdfEvalBoth ez = eval_bsdf_both(z.mat(scene_), z.hit, z.wo, -w);
+    if (!(ez.pdf_wi > 0.0f)) return glm::vec3(0.0f);
+    const float fy_scale =
+        importance_refraction_scale(my, make_shading_context(y.hit, y.wo), w) * shading_correction(y.hit, y.wo, w);
+    const glm::vec3 c = y.beta * ey.f_cos * fy_scale * ez.f_cos * z.beta / d2;
+    if (!(max_component(c) > 0.0f)) return glm::vec3(0.0f);
+    ++rays;
+    if (blocked(spawn_ray_to(y.hit, z.point(), z.hit.point_error, z.hit.normal), time)) return glm::vec3(0.0f);
+    gather(sp, s, t);
+    MisPath& m = sp.mis;
+    const auto at = [](int i) { return static_cast<std::size_t>(i); };
+    m.delta[at(s - 1)] = m.delta[at(s)] = 0;
+    m.rev[at(s - 1)] = area_density(ez.pdf_wi, z.point(), y);
+    m.rev[at(s - 2)] = area_density(ey.pdf_wo, y.point(), sp.light[at(s - 2)]);
+    m.fwd[at(s)] = area_density(ey.pdf_wi, y.point(), z);
+    if (t >= 3) m.fwd[at(s + 1)] = area_density(ez.pdf_wo, z.point(), sp.cam[at(t - 2)]);
+    return c * weight(m, s);
+}
+
+// t = 1: light[s-1] joined to a point on the lens, splatted to the pixels it lands on.
+void BdptIntegrator::light_to_camera(Subpaths& sp, int s, float time, PixelSampler& sampler, std::uint64_t& rays,
+                                     std::vector<Splat>& splats) const {
+    const PathVertex& y = sp.light[static_cast<std::size_t>(s - 1)];
+    if (y.kind == PathVertex::Kind::Light && (y.at_infinity || y.delta_direction)) return;
+    if (y.kind == PathVertex::Kind::Surface && is_delta(y.mat(scene_))) return;
+    const glm::vec2 ul = sampler.get2d(light_slot(s - 1, kLensSlot));
+    const glm::vec3 lens = camera_.lens_point(ul.x, ul.y);
+    float fx = 0.0f, fy = 0.0f;
+    const float margin = std::max(0.0f, filter_radius_ - 0.5f);
+    if (!camera_.film_position(lens, y.point(), margin, fx, fy)) return;
+    glm::vec3 w = lens - y.point();
+    const float d = glm::length(w);
+    w /= d;
+    const float cos_theta = -glm::dot(w, camera_.forward());
+    const float importance = camera_.direction_pdf(cos_theta) / (d * d);
+    glm::vec3 f(0.0f);
+    BsdfEvalBoth ey;
+    if (y.kind == PathVertex::Kind::Light) {
+        f = lights_.emission_toward(y.light, y.point(), y.hit.normal, y.hit.primitive, w);
+        if (y.on_surface()) f *= std::abs(glm::dot(y.hit.normal, w));
+    } else {
+        ey = eval_bsdf_both(y.mat(scene_), y.hit, y.wo, w);
+        f = ey.f_cos * (importance_refraction_scale(y.mat(scene_), make_shading_context(y.hit, y.wo), w) *
+                        shading_correction(y.hit, y.wo, w));
+    }
+    const glm::vec3 c = y.beta * f * importance;
+    if (!(max_component(c) > 0.0f)) return;
+    // The shadow ray stops at the near clip plane: nothing between it and the lens is seen.
+    const float to_clip = camera_.near_clip() / cos_theta;
+    const glm::vec3 target = lens - w * to_clip;
+    ++rays;
+    collision::Ray shadow;
+    if (y.on_surface() || y.kind == PathVertex::Kind::Surface) {
+        shadow = spawn_ray_to(y.hit, target, glm::vec3(0.0f), w);
+    } else {
+        shadow.origin = y.point();
+        shadow.dir = target - y.point();
+        shadow.tmin = 0.0f;
+        shadow.tmax = 1.0f;  // the far end is the lens or the clip plane: no surface to stop short of
+    }
+    if (blocked(shadow, time)) return;
+    PathVertex cam0;
+    cam0.kind = PathVertex::Kind::Camera;
+    cam0.hit.point = lens;
+    sp.cam.resize(std::max<std::size_t>(sp.cam.size(), 1));
+    const PathVertex saved = sp.cam.front();
+    sp.cam.front() = cam0;
+    gather(sp, s, 1);
+    sp.cam.front() = saved;
+    MisPath& m = sp.mis;
+    const auto at = [](int i) { return static_cast<std::size_t>(i); };
+    m.delta[at(s - 1)] = 0;
+    m.rev[at(s - 1)] = area_density(camera_.direction_pdf(cos_theta), lens, y);
+    if (s >= 2) m.rev[at(s - 2)] = area_density(ey.pdf_wo, y.point(), sp.light[at(s - 2)]);
+    const glm::vec3 value = c * weight(m, s);
+    // The pixels whose filter reaches the film point, each by its normalised filter weight.
+    const PixelFilter& filter = camera_.filter();
+    const int x0 = std::max(0, static_cast<int>(std::ceil(fx - filter_radius_ - 0.5f)));
+    const int x1 = std::min(width_ - 1, static_cast<int>(std::floor(fx + filter_radius_ - 0.5f)));
+    const int y0 = std::max(0, static_cast<int>(std::ceil(fy - filter_radius_ - 0.5f)));
+    const int y1 = std::min(height_ - 1, static_cast<int>(std::floor(fy + filter_radius_ - 0.5f)));
+    const double norm = 1.0 / (filter_integral_ * filter_integral_);
+    for (int py = y0; py <= y1; ++py) {
+        const double dy = double(fy) - (py + 0.5);
+        const double wy = std::abs(dy) < filter_radius_ ? filter.eval(dy) : 0.0;  // the support, half-open
+        if (wy == 0.0) continue;
+        for (int px = x0; px <= x1; ++px) {
+            const double dx = double(fx) - (px + 0.5);
+            const double wx = std::abs(dx) < filter_radius_ ? filter.eval(dx) : 0.0;
+            if (wx == 0.0) continue;
+            splats.push_back({static_cast<std::uint32_t>(py * width_ + px), value * static_cast<float>(wx * wy * norm)});
+        }
+    }
+}
+
+}  // namespace sweeptrace

@@ -1,0 +1,87 @@
+#pragma once
+// Bidirectional path tracing (Veach 1997, ch. 10; pbrt-v4's bdpt as the model): per camera
+// sample, a camera subpath and a light subpath, and every way of joining them into a path of at
+// most max_depth vertices after the camera:
+//   s = 0: the camera subpath finds an emitter (or escapes to a light at infinity);
+//   s = 1: next event estimation from a camera vertex (LightSet::sample, the path tracer's NEE);
+//   s >= 2, t >= 2: a shadow ray between a light vertex and a camera vertex;
+//   t = 1: a light vertex joined to a point on the lens (light tracing), landing on whatever
+//          pixel it projects to: a splat, returned to the renderer, which adds the splats of a
+//          pass in a fixed order (render/renderer.cpp) so the image is the same at any thread
+//          count and any farm split.
+// Weighted by the power heuristic over all strategies (bdpt_mis.hpp); delta lobes and delta
+// lights as pbrt does. Both subpaths see the scene at the camera sample's time. Light subpath
+// throughputs carry power: refraction's 1/eta^2 is undone there (importance_refraction_scale)
+// and shading normals get pbrt's adjoint correction |wo.ns||wi.ng| / (|wo.ng||wi.ns|).
+// The surface emitters' and camera's densities are render/light_emission.cpp's and
+// CameraModel::direction_pdf; the pixel filter's weights for splats are f(dx) f(dy) / (int f)^2,
+// what a camera sample of that pixel estimates.
+// Not done here: path guiding, film.clamp_indirect (the path tracer's firefly guard).
+#include <cstdint>
+#include <vector>
+
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+
+#include "raytracer/accel/accel.hpp"
+#include "raytracer/render/camera.hpp"
+#include "raytracer/render/integrators/bdpt_mis.hpp"
+#include "raytracer/render/integrators/path_vertex.hpp"
+#include "raytracer/render/lights.hpp"
+#include "raytracer/render/planted_defect.hpp"
+#include "raytracer/render/roulette.hpp"
+#include "raytracer/render/sampler.hpp"
+#include "raytracer/scene/scene.hpp"
+
+namespace sweeptrace {
+
+// A light-tracing contribution to a pixel, filter weight included.
+struct Splat {
+    std::uint32_t pixel = 0;
+    glm::vec3 value{0.0f};
+};
+
+class BdptIntegrator {
+public:
+    BdptIntegrator(const Scene& scene, const Accel& accel, const LightSet& lights, const CameraModel& camera,
+                   int max_depth, PlantedDefect defect, RoulettePolicy roulette = RoulettePolicy::adaptive(),
+                   bool light_tracing_only = false);
+
+    // One camera sample at film position (x, y) with lens sample `lens` and shutter fraction
+    // `time`: returns what the strategies with t >= 2 bring to its pixel (the caller applies the
+    // filter sample's weight, as for the path tracer) and appends the t = 1 splats to `splats`.
+    glm::vec3 sample(float x, float y, const glm::vec2& lens, float time, PixelSampler& sampler, std::uint64_t& rays,
+                     std::vector<Splat>& splats) const;
+
+private:
+    struct Subpaths;
+    void camera_walk(float x, float y, const glm::vec2& lens, float time, PixelSampler& sampler, std::uint64_t& rays,
+                     Subpaths& sp, glm::vec3& escaped) const;
+    void light_walk(float time, PixelSampler& sampler, std::uint64_t& rays, Subpaths& sp) const;
+    glm::vec3 escaped_radiance(const Subpaths& sp, const glm::vec3& dir, const glm::vec3& beta, float pdf) const;
+    glm::vec3 emitter_hit(Subpaths& sp, int j) const;
+    glm::vec3 next_event(Subpaths& sp, int j, float time, PixelSampler& sampler, std::uint64_t& rays) const;
+    glm::vec3 connect(Subpaths& sp, int s, int t, float time, std::uint64_t& rays) const;
+    void light_to_camera(Subpaths& sp, int s, float time, PixelSampler& sampler, std::uint64_t& rays,
+                         std::vector<Splat>& splats) const;
+    // Fills sp.mis with the densities of the path made of light[0..s) and cam[0..t) (t >= 1).
+    void gather(Subpaths& sp, int s, int t) const;
+    bool blocked(const collision::Ray& ray, float time) const;
+    float weight(const MisPath& path, int s) const;
+
+    const Scene& scene_;
+    const Accel& accel_;
+    const LightSet& lights_;
+    const CameraModel& camera_;
+    int max_depth_;
+    PlantedDefect defect_;
+    RoulettePolicy roulette_;
+    bool light_tracing_only_;  // Sampling::LightTracing: t = 1 alone, at full weight
+    bool moving_ = false;
+    int width_, height_;
+    float filter_radius_;
+    double filter_integral_;
+    std::vector<std::uint32_t> infinite_lights_;  // found by escaping rays (suns, the environment)
+};
+
+}  // namespace sweeptrace
