@@ -12,7 +12,7 @@
 
 using namespace sweeptrace;
 
-TEST_CASE("reference downsampling: the mean of whole source pixels; a non-finite one masks its pixel", "[reference]") {
+TEST_CASE("reference downsampling: the mean of whole source pixels, and a non-finite one masks its pixel", "[reference]") {
     Image src(4, 2);
     for (int y = 0; y < 2; ++y)
         for (int x = 0; x < 4; ++x) src.at(x, y) = glm::vec3(float(x + 4 * y));
@@ -80,7 +80,7 @@ TEST_CASE("block comparison: z from both variances, shares, median error and mea
     CHECK(pic.height == h);
 }
 
-TEST_CASE("stand-in mask scene: only surfaces reading a flat 8x8 texture emit; diffuse goes black, mirrors stay", "[reference]") {
+TEST_CASE("stand-in mask scene: only surfaces reading a flat 8x8 texture emit, diffuse goes black, mirrors stay", "[reference]") {
     Scene s;
     Texture flat;
     flat.kind = Texture::Kind::Image;

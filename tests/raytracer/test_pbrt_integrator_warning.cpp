@@ -35,7 +35,7 @@ TEST_CASE("pbrt Integrator mlt, sppm, lightpath: the warning names file:line and
     }
 }
 
-TEST_CASE("pbrt Integrator path, volpath and bdpt (ours): no warning; ambientocclusion: a different quantity", "[pbrt]") {
+TEST_CASE("pbrt Integrator path, volpath and bdpt (ours): no warning, ambientocclusion: a different quantity", "[pbrt]") {
     const TempDir dir;
     CHECK(warnings_for(dir, "Integrator \"path\" \"integer maxdepth\" 5").empty());
     CHECK(warnings_for(dir, "Integrator \"volpath\" \"integer maxdepth\" 5").empty());
