@@ -1,4 +1,4 @@
-// sweeptrace: render | diff | accuracy | bench | merge | convert. Bad input exits 2 with one message on stderr.
+// sweeptrace: render | diff | accuracy | bench | noise-bench | merge | convert | reference-check. Bad input exits 2 with one message on stderr.
 #include <cstdio>
 #include <exception>
 
@@ -18,6 +18,7 @@ int main(int argc, char** argv) {
     sweeptrace::add_noise_bench_command(app, exit_code);
     sweeptrace::add_merge_command(app, exit_code);
     sweeptrace::add_convert_command(app, exit_code);
+    sweeptrace::add_reference_check_command(app, exit_code);
     try {
         app.parse(argc, argv);
     } catch (const CLI::Success& e) {  // --help

@@ -35,6 +35,32 @@ long long clamped(Diagnostics& d, const Where& at, const std::string& what, long
     return c;
 }
 
+// What we render in place of pbrt-v4's integrators; empty for "path" and "volpath" (our path
+// tracer) and "bdpt" (our bidirectional one, film.integrator "bdpt"). The other light-tracing
+// methods (mlt, sppm, lightpath) reach paths our unidirectional path tracer cannot: light that
+// leaves a small source, passes a specular surface and lands on a diffuse one (a caustic) is found
+// only when a camera path happens to hit the source after the specular bounce, so it stays black
+// or extremely noisy; a delta light can never be hit at all, so light from pbrt's distant, point,
+// spot, goniometric or projection light arriving through or off a specular surface is missing,
+// whatever the spp. Saying "the same image with other noise" hid both.
+std::string integrator_warning(const std::string& type) {
+    if (type == "path" || type == "volpath" || type == "bdpt") return {};
+    if (type == "mlt" || type == "sppm" || type == "lightpath")
+        return " is not supported: our unidirectional path tracer renders instead (Integrator \"bdpt\" would select our "
+               "bidirectional one, which reaches these paths), and converges to the same image only "
+               "where light reaches a diffuse surface without passing a specular one (mirror, smooth glass or metal) "
+               "first: caustics from small lights through or off specular surfaces stay black or extremely noisy "
+               "at any spp, and light from a delta light (\"distant\", \"point\", \"spot\", \"goniometric\", "
+               "\"projection\") seen through or reflected in a specular surface is never reached at all (black)";
+    if (type == "ambientocclusion" || type == "aov")
+        return " is not supported: it renders a different quantity (ambient occlusion or geometry buffers), "
+               "a path-traced image is rendered instead";
+    if (type == "simplepath" || type == "simplevolpath" || type == "randomwalk")
+        return " is not supported: our path tracer renders instead, the same converged image with other noise "
+               "(pbrt's own image lacks delta lights where its light sampling is off; ours has them)";
+    return " is not a pbrt-v4 integrator: our unidirectional path tracer renders instead";
+}
+
 json filter_json(WorldContext& w) {
     Diagnostics& d = w.diag;
     if (!w.scene.filter) return {{"type", "gaussian"}, {"radius", 1.5}, {"sigma", 0.5}};  // pbrt-v4's default
@@ -151,8 +177,8 @@ void write_camera_and_film(WorldContext& w, std::string& film_filename) {
         const ParamList& p = s.params;
         const std::string what = "Integrator \"" + excerpt(s.type) + "\"";
         if (s.type == "bdpt") film["integrator"] = "bdpt";
-        if (s.type != "path" && s.type != "volpath" && s.type != "bdpt")
-            d.warn(s.where, "integrator " + s.type, what + " is not supported: our unidirectional path tracer renders the same image with other noise");
+        if (const std::string why = integrator_warning(s.type); !why.empty())
+            d.warn(s.where, "integrator " + s.type, what + why);
         depth = p.get_int("maxdepth", 5, d);
         if (p.get_bool("regularize", false, d)) d.warn(s.where, "regularize", what + ": \"regularize\" is not supported (ignored)");
         p.find("lightsampler");  // which light is sampled: changes noise, not the image
