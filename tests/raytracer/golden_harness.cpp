@@ -101,6 +101,7 @@ void make_golden(const GoldenSpec& spec) {
     options.spp = spec.golden_spp;
     options.max_depth = spec.max_depth;
     options.seed = spec.golden_seed;
+    options.integrator = scene.film.integrator;  // a scene's golden is its own method's image
     RenderResult r = render(scene, *accel, options);
     if (r.stats.nonfinite_samples != 0)
         throw std::runtime_error(spec.scene + ": " + std::to_string(r.stats.nonfinite_samples) + " non-finite samples");
@@ -124,6 +125,7 @@ RenderResult render_for_test(const Scene& scene, AccelKind accel, const GoldenSp
     options.spp = spec.test_spp;
     options.max_depth = spec.max_depth;
     options.seed = seed;
+    options.integrator = scene.film.integrator;
     return render_with_planted_defect(scene, *structure, options, defect);
 }
 

@@ -80,6 +80,7 @@ GOLDEN_TEST("default", default)
 GOLDEN_TEST("showcase", showcase)
 GOLDEN_TEST("spheres-field", spheres_field)
 GOLDEN_TEST("motion", motion)
+GOLDEN_TEST("caustic", caustic)  // rendered by bdpt, its film.integrator
 
 // A scene added to scenes/ without a golden would go untested: every top-level scenes/*.json
 // needs its goldens.txt line, its golden and variance files, and both image tests registered.
@@ -162,4 +163,13 @@ TEST_CASE("golden mutation: motion ignored is rejected", "[image][golden][mutati
     Scene scene = load_golden_scene(spec);
     scene.objects[object_named(scene, "rolling sphere")].motion = Motion{};
     expect_rejected(spec, scene, "mutation-motion-ignored");
+}
+
+// The caustic golden is bdpt's picture: the path tracer's render of the same scene, black under
+// the water but for a few fireflies, must not pass as it (the test is not blind to the caustic).
+TEST_CASE("golden mutation: the caustic scene by the path tracer is rejected", "[image][golden][mutation]") {
+    const GoldenSpec& spec = golden_spec("caustic");
+    Scene scene = load_golden_scene(spec);
+    scene.film.integrator = IntegratorKind::Path;
+    expect_rejected(spec, scene, "mutation-caustic-path");
 }
