@@ -14,6 +14,7 @@
 #include "raytracer/image/diff.hpp"
 #include "raytracer/render/renderer.hpp"
 #include "raytracer/scene/scene.hpp"
+#include "render_test_scenes.hpp"
 
 namespace sweeptrace::testing {
 
@@ -24,10 +25,9 @@ inline Scene empty_scene(int width, int height) {
     return scene;
 }
 
-inline std::uint32_t add_material(Scene& scene, Material m) {
-    scene.materials.push_back(std::move(m));
-    return static_cast<std::uint32_t>(scene.materials.size() - 1);
-}
+// One home (render_test_scenes.hpp): a test file that uses both helper namespaces, or a unity
+// batch that joins two such files, must find one add_material, not two.
+using sweeptrace::test::add_material;
 
 inline Material diffuse(float rho) {
     Material m;
