@@ -18,6 +18,9 @@
 // nearest turn about +y is used and the warning says so.
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <limits>
+#include <string>
 
 #include <glm/geometric.hpp>
 #include <glm/matrix.hpp>
@@ -137,6 +140,19 @@ void infinite(WorldContext& w, const LightRecord& l, const std::string& what, do
     w.doc["background"] = {{"environment", env}};
 }
 
+// A light's value is a product of pbrt parameters; each may be a float while the product is not.
+// Said here, at the LightSource's line and by the parameters' names, before the translated scene
+// could only name its own JSON key.
+void require_float_product(const Diagnostics& d, const Where& at, const std::string& what, const std::string& product,
+                           const glm::dvec3& v) {
+    for (int c = 0; c < 3; ++c) {
+        if (std::fabs(v[c]) <= static_cast<double>(std::numeric_limits<float>::max())) continue;
+        char value[32];
+        std::snprintf(value, sizeof value, "%g", v[c]);
+        d.fail(at, what + ": " + product + " is " + value + ", too large for single precision");
+    }
+}
+
 }  // namespace
 
 void write_light(WorldContext& w, const LightRecord& l) {
@@ -176,6 +192,7 @@ void write_light(WorldContext& w, const LightRecord& l) {
             light["cone_angle"] = cone;
             light["falloff_start"] = start;
         }
+        require_float_product(d, s.where, what, power > 0.0 ? "\"I\" x \"scale\" x \"power\"" : "\"I\" x \"scale\"", intensity);
         light["intensity"] = vec(intensity);
         if (intensity == glm::dvec3(0.0)) {
             d.warn(s.where, "black light", what + ": emits nothing (left out)");
@@ -186,6 +203,7 @@ void write_light(WorldContext& w, const LightRecord& l) {
         glm::dvec3 irradiance = w.materials.emitted(p, "L", what) * scale;
         if (const double e = p.get_float("illuminance", -1.0, d); e > 0.0) irradiance *= e;
         if (to == from) d.fail(s.where, what + ": \"from\" and \"to\" must differ");
+        require_float_product(d, s.where, what, "\"L\" x \"scale\" x \"illuminance\"", irradiance);
         light = {{"type", "directional"}, {"direction", vec(to - from)}, {"irradiance", vec(irradiance)}};
         if (irradiance == glm::dvec3(0.0)) {
             d.warn(s.where, "black light", what + ": emits nothing (left out)");
