@@ -50,6 +50,7 @@
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
+#include "collision/bounds3.hpp"
 #include "raytracer/geometry/shapes/shape_light.hpp"
 #include "raytracer/geometry/surface_hit.hpp"
 #include "raytracer/render/environment_light.hpp"
@@ -237,5 +238,9 @@ private:
     bool emit_scene_light(const NonSurfaceLight& l, float u1, float u2, float u3, float u4, LightEmission& out) const;
     float env_probability_ = 0.0f;                 // it is the last entry of cdf_
 };
+
+// Every object's world box together (object_world_bounds; empty for a scene without objects): the
+// extent lights at infinity emit over, and what vcm's default merging radius is a fraction of.
+collision::Bounds3 scene_world_bounds(const Scene& scene);
 
 }  // namespace sweeptrace

@@ -17,11 +17,7 @@ namespace {
 // The sphere around the world bounds of every object (meshes by their vertices' box), of radius
 // at least 1 so that a scene of points still gives a directional light a weight.
 float scene_radius(const Scene& scene, glm::vec3& centre) {
-    collision::Bounds3 world;
-    for (const Object& obj : scene.objects) {
-        const collision::Bounds3 box = object_world_bounds(obj, scene.meshes);
-        if (!box.empty()) world.extend(box);
-    }
+    const collision::Bounds3 world = scene_world_bounds(scene);
     centre = glm::vec3(0.0f);
     if (world.empty()) return 1.0f;
     centre = 0.5f * (world.lo + world.hi);
@@ -208,6 +204,15 @@ glm::vec3 LightSet::emission_toward(std::uint32_t light, const glm::vec3& point,
     if (sl.type == SceneLight::Type::Point) return sl.intensity;
     if (sl.type == SceneLight::Type::Spot) return sl.intensity * spot_falloff(sl, glm::dot(dir, sl.direction));
     return glm::vec3(0.0f);
+}
+
+collision::Bounds3 scene_world_bounds(const Scene& scene) {
+    collision::Bounds3 world;
+    for (const Object& obj : scene.objects) {
+        const collision::Bounds3 box = object_world_bounds(obj, scene.meshes);
+        if (!box.empty()) world.extend(box);
+    }
+    return world;
 }
 
 }  // namespace sweeptrace
