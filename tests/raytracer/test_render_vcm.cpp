@@ -159,3 +159,25 @@ TEST_CASE("vcm: the same image bit for bit on 1 and 3 threads, and split into fa
     const RenderResult bdpt = vcm_render(scene, *accel, IntegratorKind::Bdpt, 3, 9, 1);
     CHECK_FALSE(same_bits(bdpt.image, one.image));
 }
+
+// scenes/caustic.json's floor under the water is lit through two refractions: light tracing and
+// merging are its only techniques there. Seen from close by, looking down at it (no specular
+// surface in view: what bdpt renders without light it cannot find), with a radius above the
+// pixel footprint, merging carries most of the weight, so vcm must agree with bdpt, and leaving the
+// merges out of the connections' weights (the planted defect) counts the caustic up to twice.
+TEST_CASE("vcm: the caustic agrees with bdpt's, and a planted wrong weight does not", "[vcm][convergence]") {
+    Scene scene = vcm_shipped("caustic.json", 32, 20);
+    scene.camera.position = {0.0f, 0.4f, -0.3f};
+    scene.camera.look_at = {0.0f, 0.0f, 0.3f};
+    scene.film.vcm_radius = 0.02f;
+    const auto accel = make_accel(AccelKind::Bvh, scene);
+    const RenderResult bdpt = vcm_render(scene, *accel, IntegratorKind::Bdpt, 1024, 1);
+    const RenderResult vcm = vcm_render(scene, *accel, IntegratorKind::Vcm, 512, 2);
+    const BlockTestResult t = vcm_against(bdpt, vcm, 8);
+    INFO(t.summary());
+    CHECK(t.pass());
+    const RenderResult wrong = vcm_render(scene, *accel, IntegratorKind::Vcm, 512, 2, 0, 0, PlantedDefect::VcmDropsMerges);
+    const BlockTestResult w = vcm_against(bdpt, wrong, 8);
+    INFO(w.summary());
+    CHECK_FALSE(w.pass());
+}
