@@ -142,12 +142,15 @@ TEST_CASE("vcm: the radius follows r_i = r_1 i^((alpha - 1) / 2), r_1 a fraction
     CHECK(VcmIntegrator::first_radius(scene) == 0.5f);
 }
 
-TEST_CASE("vcm: the same image bit for bit on 1 and 3 threads, and split into farm parts", "[vcm][determinism]") {
+TEST_CASE("vcm: the same image bit for bit on 1, 2 and 3 threads, and split into farm parts", "[vcm][determinism]") {
     Scene scene = vcm_shipped("default.json", 24, 14);
     scene.film.max_depth = 5;
     const auto accel = make_accel(AccelKind::Bvh, scene);
     const RenderResult one = vcm_render(scene, *accel, IntegratorKind::Vcm, 3, 9, 1);
+    const RenderResult two = vcm_render(scene, *accel, IntegratorKind::Vcm, 3, 9, 2);
     const RenderResult three = vcm_render(scene, *accel, IntegratorKind::Vcm, 3, 9, 3);
+    CHECK(same_bits(one.image, two.image));
+    CHECK(one.sums == two.sums);
     CHECK(same_bits(one.image, three.image));
     CHECK(one.sums == three.sums);
     const RenderResult a = vcm_render(scene, *accel, IntegratorKind::Vcm, 1, 9, 2, 0);
