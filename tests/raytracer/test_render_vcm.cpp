@@ -124,3 +124,17 @@ TEST_CASE("vcm: the caustic agrees with bdpt's, and a planted wrong weight does 
     vcm_expect(bdpt, render_as(scene, *accel, IntegratorKind::Vcm, 512, 2), 8, true);
     vcm_expect(bdpt, render_as(scene, *accel, IntegratorKind::Vcm, 512, 2, PlantedDefect::VcmDropsMerges), 8, false);
 }
+
+// Under motion blur a photon carries its own pixel's shutter time, so merging is off (vcm.hpp):
+// what is left are bdpt's connections with bdpt's weights, drawing bdpt's numbers, so the image
+// is bdpt's bit for bit. This also shows vcm's connections are bdpt's, merging aside.
+TEST_CASE("vcm: with a moving object under an open shutter, merging is off and the image is bdpt's", "[vcm]") {
+    Scene scene = shipped("motion.json", 24, 16);
+    REQUIRE(scene.camera.shutter);
+    scene.film.max_depth = 5;
+    const auto accel = make_accel(AccelKind::Bvh, scene);
+    const RenderResult vcm = render_as(scene, *accel, IntegratorKind::Vcm, 2, 3);
+    const RenderResult bdpt = render_as(scene, *accel, IntegratorKind::Bdpt, 2, 3);
+    CHECK(same_bits(vcm.image, bdpt.image));
+    CHECK(vcm.sums == bdpt.sums);
+}
