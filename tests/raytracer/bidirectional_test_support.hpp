@@ -2,11 +2,13 @@
 // What the bidirectional methods' tests share (test_render_bdpt.cpp, test_render_vcm.cpp): a
 // shipped scene at a test size, a render by a chosen integrator, the block z-test of one noisy
 // render against another, and the determinism check.
+#include <cmath>
 #include <cstdint>
 #include <filesystem>
 #include <vector>
 
 #include <catch2/catch.hpp>
+#include <glm/geometric.hpp>
 
 #include "convergence_harness.hpp"
 #include "raytracer/render/planted_defect.hpp"
@@ -48,6 +50,29 @@ inline BlockTestResult against_path(const RenderResult& path, const RenderResult
     options.reference_noise_ratio = 1.0;
     options.null_variance = &path.variance;
     return block_test(path.image, r.image, r.variance, options);
+}
+
+// default.json at 24x14, depth 5, with every kind of light at once: its sphere, a point, a spot,
+// a sun (the determinism tests').
+inline Scene every_light_scene() {
+    Scene scene = shipped("default.json", 24, 14);
+    SceneLight point;
+    point.type = SceneLight::Type::Point;
+    point.position = {1.0f, 2.0f, 2.0f};
+    point.intensity = glm::vec3(3.0f);
+    SceneLight spot = point;
+    spot.type = SceneLight::Type::Spot;
+    spot.direction = glm::normalize(glm::vec3(0.0f, -1.0f, -0.5f));
+    spot.cos_cone = std::cos(0.5f);
+    spot.cos_falloff_start = std::cos(0.3f);
+    SceneLight sun;
+    sun.type = SceneLight::Type::Directional;
+    sun.direction = glm::normalize(glm::vec3(0.3f, -1.0f, -0.2f));
+    sun.irradiance = glm::vec3(1.0f);
+    sun.half_angle = 0.05f;
+    scene.lights = {point, spot, sun};
+    scene.film.max_depth = 5;
+    return scene;
 }
 
 // 3 samples (seed 9) of `integrator`: the same sums on 1, 2 and 3 threads, and a farm split

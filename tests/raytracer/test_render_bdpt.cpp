@@ -148,24 +148,7 @@ TEST_CASE("bdpt: MIS weights sum to 1 over the strategies of random paths, and a
 }
 
 TEST_CASE("bdpt: the same image bit for bit on 1, 2 and 3 threads, and split into farm parts", "[bdpt][determinism]") {
-    Scene scene = shipped("default.json", 24, 14);
-    // Every kind of light at once: the scene's sphere, a point, a spot, a sun.
-    SceneLight point;
-    point.type = SceneLight::Type::Point;
-    point.position = {1.0f, 2.0f, 2.0f};
-    point.intensity = glm::vec3(3.0f);
-    SceneLight spot = point;
-    spot.type = SceneLight::Type::Spot;
-    spot.direction = glm::normalize(glm::vec3(0.0f, -1.0f, -0.5f));
-    spot.cos_cone = std::cos(0.5f);
-    spot.cos_falloff_start = std::cos(0.3f);
-    SceneLight sun;
-    sun.type = SceneLight::Type::Directional;
-    sun.direction = glm::normalize(glm::vec3(0.3f, -1.0f, -0.2f));
-    sun.irradiance = glm::vec3(1.0f);
-    sun.half_angle = 0.05f;
-    scene.lights = {point, spot, sun};
-    scene.film.max_depth = 5;
+    const Scene scene = every_light_scene();
     const auto accel = make_accel(AccelKind::Bvh, scene);
     const RenderResult one = check_bit_identical(scene, *accel, IntegratorKind::Bdpt);
     // Not trivially equal: the light subpaths' splats reach the image.

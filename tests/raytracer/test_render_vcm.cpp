@@ -99,9 +99,8 @@ TEST_CASE("vcm: the radius follows r_i = r_1 i^((alpha - 1) / 2), r_1 a fraction
     CHECK(VcmIntegrator::first_radius(scene) == 0.5f);
 }
 
-TEST_CASE("vcm: the same image bit for bit on 1, 2 and 3 threads, and split into farm parts", "[vcm][determinism]") {
-    Scene scene = shipped("default.json", 24, 14);
-    scene.film.max_depth = 5;
+TEST_CASE("vcm: the same image bit for bit on 1, 2 and 3 threads, and split into farm parts, with every kind of light", "[vcm][determinism]") {
+    const Scene scene = every_light_scene();
     const auto accel = make_accel(AccelKind::Bvh, scene);
     const RenderResult one = check_bit_identical(scene, *accel, IntegratorKind::Vcm);
     // Not trivially equal: the merges reach the image (bdpt draws the same numbers for the rest).
