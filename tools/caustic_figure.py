@@ -12,10 +12,12 @@
    mean" check.
 5. The same scene seen from above the water (the camera moved up, the caustic seen through the
    rippled surface: light, specular, specular, diffuse, specular, specular, camera), where no
-   connection strategy reaches the floor: path, bdpt and vcm at --time each.
+   connection strategy reaches the floor: path, bdpt and vcm at --time each, and vcm at
+   --ref-time; the region is the pixels whose centre ray meets the water's mean top level
+   (y = 0.8) inside the same inset footprint, seen through the water.
 
 Writes docs/integrators-caustic.md (the tables, and the command) and docs/integrators-caustic.png
-(top: path | bdpt | vcm | vcm's long render; bottom: the view from above by path | bdpt | vcm;
+(top: path | bdpt | vcm | vcm's long render; bottom: the same from above;
 clamped to [0, 1] and raised to 1/2.2).
 Usage: /usr/bin/python3 tools/caustic_figure.py [--build build] [--time 10] [--ref-time 120]
        [--budgets 2,5,10,20] [--threads 1]
@@ -31,10 +33,12 @@ import numpy as np
 from equal_time import read_pfm, render  # tools/equal_time.py's PFM reader and render call
 
 SLAB_HALF = 1.0 - 0.1  # tools/make_caustic_water.py's HALF, inset
-ABOVE_POSITION, ABOVE_LOOK_AT = [0, 1.6, -2.4], [0, 0, 0.3]  # above the water's top (0.8)
+ABOVE_POSITION, ABOVE_LOOK_AT = [0, 1.6, -2.4], [0, 0, 0.3]  # above the water's top
+WATER_TOP = 0.8  # tools/make_caustic_water.py's TOP: the ripples' mean level
 
 
-def caustic_mask(scene_path, width, height):
+def caustic_mask(scene_path, width, height, level=0.0):
+    """Pixels whose centre ray meets the plane y = level inside the slab's inset footprint."""
     with open(scene_path) as f:
         cam = json.load(f)["camera"]
     eye, target, up = (np.array(cam[k], float) for k in ("position", "look_at", "up"))
@@ -50,7 +54,7 @@ def caustic_mask(scene_path, width, height):
     sy = (1 - (ys + 0.5) / height * 2) * half_h
     d = forward[None, None, :] + sx[..., None] * right + sy[..., None] * true_up
     with np.errstate(divide="ignore", invalid="ignore"):
-        t = -eye[1] / d[..., 1]
+        t = (level - eye[1]) / d[..., 1]
     p = eye + t[..., None] * d
     return (d[..., 1] < 0) & (np.abs(p[..., 0]) < SLAB_HALF) & (np.abs(p[..., 2]) < SLAB_HALF)
 
@@ -109,6 +113,14 @@ def main():
         vm = region(run("vcm-%g" % b, "vcm", b, 11 + i))
         conv.append((b, bm, spp["bdpt-%g" % b], vm, spp["vcm-%g" % b]))
     above_imgs = {name: run("above-" + name, name, a.time, 7, above) for name in ("path", "bdpt", "vcm")}
+    above_ref = run("above-reference-vcm", "vcm", a.ref_time, 1, above)
+    above_mask = caustic_mask(above, a.width, a.height, WATER_TOP)
+    above_rows = [(n, a.time, spp["above-" + n], above_imgs[n]) for n in ("path", "bdpt", "vcm")]
+    above_rows.append(("vcm long", a.ref_time, spp["above-reference-vcm"], above_ref))
+    above_region = lambda img: float(img[above_mask].mean())
+    above_median = lambda img: float(np.median(img[above_mask].mean(axis=-1)))
+    above_shown = lambda img: float(np.clip(img[above_mask], 0, 1).mean())
+    above_ref_mean = above_region(above_ref)
 
     cmd = "/usr/bin/python3 tools/caustic_figure.py --time %g --ref-time %g --budgets %s --threads %d" % (
         a.time, a.ref_time, a.budgets, a.threads)
@@ -134,14 +146,25 @@ def main():
         for b, bm, bn, vm, vn in conv:
             f.write("| %g | %s | %.4f | %+.1f%% | %s | %.4f | %+.1f%% |\n" %
                     (b, bn, bm, 100 * (bm / ref_mean - 1), vn, vm, 100 * (vm / vref_mean - 1)))
-        f.write("\nSeen from above the water (camera at %s looking at %s), at %g CPU s each: spp path %s, "
-                "bdpt %s, vcm %s; the picture's bottom row.\n" %
-                (ABOVE_POSITION, ABOVE_LOOK_AT, a.time, spp["above-path"], spp["above-bdpt"], spp["above-vcm"]))
-        f.write("\n![top: path | bdpt | vcm | vcm long; bottom, from above: path | bdpt | vcm](integrators-caustic.png)\n")
+        f.write("\nSeen from above the water (camera at %s looking at %s; the picture's bottom row): the "
+                "region is the %d pixels whose centre ray meets the water's mean top level inside the same "
+                "footprint, the floor seen through the water. Reference: vcm, %g CPU s.\n\n" %
+                (ABOVE_POSITION, ABOVE_LOOK_AT, int(above_mask.sum()), a.ref_time))
+        f.write("| integrator | CPU s | spp | region mean | / vcm long | median pixel | displayed mean |\n"
+                "|---|---|---|---|---|---|---|\n")
+        for name, t, n, img in above_rows:
+            m = above_region(img)
+            f.write("| %s | %g | %s | %.4f | %.3f | %.4f | %.4f |\n" %
+                    (name, t, n, m, m / above_ref_mean, above_median(img), above_shown(img)))
+        f.write("\n![top: path | bdpt | vcm | vcm long; bottom, the same from above](integrators-caustic.png)\n")
     for name, t, n, img in rows:
         m = region(img)
         print("%s: %g CPU s, %s spp, caustic-region mean %.4f (%.3f of bdpt's reference %.4f), median %.4f, "
               "displayed mean %.4f" % (name, t, n, m, m / ref_mean, ref_mean, median(img), shown(img)))
+    for name, t, n, img in above_rows:
+        m = above_region(img)
+        print("from above, %s: %g CPU s, %s spp, region mean %.4f (%.3f of vcm long), median %.4f, displayed mean %.4f"
+              % (name, t, n, m, m / above_ref_mean, above_median(img), above_shown(img)))
     for b, bm, bn, vm, vn in conv:
         print("%g CPU s: bdpt %s spp mean %.4f (%+.1f%%), vcm %s spp mean %.4f (%+.1f%% of vcm long)" %
               (b, bn, bm, 100 * (bm / ref_mean - 1), vn, vm, 100 * (vm / vref_mean - 1)))
@@ -153,6 +176,7 @@ def main():
     top = [(imgs["path"], "path, %g CPU s" % a.time), (imgs["bdpt"], "bdpt, %g CPU s" % a.time),
            (imgs["vcm"], "vcm, %g CPU s" % a.time), (vref, "vcm, %g CPU s" % a.ref_time)]
     bottom = [(above_imgs[n], "from above: %s, %g CPU s" % (n, a.time)) for n in ("path", "bdpt", "vcm")]
+    bottom.append((above_ref, "from above: vcm, %g CPU s" % a.ref_time))
     for ax, (img, title) in zip(list(axes[0]) + list(axes[1]), top + bottom):
         ax.imshow(np.clip(img, 0, 1) ** (1 / 2.2))
         ax.set_title(title, fontsize=9)
