@@ -8,6 +8,7 @@
 // They say SKIPPED and pass without ../shared/bitterli.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -266,4 +267,76 @@ TEST_CASE("reference deviations: classroom rebuilt z-up, its sky under Rotate an
     print("image mean", r);
     std::filesystem::remove_all(dir);
     CHECK(within(r, 0.01));
+}
+
+TEST_CASE("reference deviations: kitchen's blinds are Tungsten's transparency, alpha 0.612 over a lambert", "[.][reference-deviations]") {
+    if (!have("kitchen")) return;
+    // The scene's Tungsten form (111116/toyray-scenes, kitchen/scene.json, commit 0e1de82c) gives
+    // the blinds "transparency" with alpha 0.612066 over a lambert of albedo (0.612, 0.4995,
+    // 0.3787): a hit is the lambert with probability alpha and otherwise passes straight through,
+    // unchanged (neutral). The pbrt-v4 file has diffusetransmission 0.3/0.25/0.2 instead, and
+    // pbrt-v4 has no such material. We have no stochastic transparency either, so the experiment
+    // mixes two renders, alpha x (blinds an opaque lambert) + (1 - alpha) x (blinds removed):
+    // exact for light that meets the blinds once (the camera's view of the blinds lit from
+    // behind), only approximate for light that crosses them more than once.
+    Scene s = load("kitchen", 160);
+    const Image ref = reference("kitchen", s.film.width, s.film.height);
+    // The blinds as the camera sees them, over the window (image fractions at 160 x 90).
+    auto blinds = [&](const Image& im) { return ratio(im, ref, 0.625, 0.111, 0.875, 0.222); };
+    const Image as_file = render_small(s, 64, s.film.max_depth);
+    Material& m = material(s, "Blinds");
+    m.transmittance = glm::vec3(0.0f);
+    m.albedo = glm::vec3(0.6120656f, 0.4995053f, 0.3786763f);
+    const Image opaque = render_small(s, 64, s.film.max_depth);
+    Scene open = s;
+    std::uint32_t index = 0;
+    while (open.materials[index].name != "Blinds") ++index;
+    std::erase_if(open.objects, [&](const Object& o) { return o.material == index; });
+    const Image gone = render_small(open, 64, s.film.max_depth);
+    const float alpha = 0.612066f;
+    Image mix(ref.width, ref.height);
+    for (int y = 0; y < ref.height; ++y)
+        for (int x = 0; x < ref.width; ++x) mix.at(x, y) = alpha * opaque.at(x, y) + (1.0f - alpha) * gone.at(x, y);
+    std::printf("kitchen, 160 px, 64 spp: ours / reference, r g b\n");
+    print("the blinds, as the pbrt-v4 file says (diffusetransmission)", blinds(as_file));
+    print("the blinds, an opaque lambert (Tungsten's base alone)", blinds(opaque));
+    print("the blinds, removed", blinds(gone));
+    print("the blinds, alpha x lambert + (1 - alpha) x removed", blinds(mix));
+    print("image mean, as the file says", ratio(as_file, ref));
+    print("image mean, the mix (light crossing the blinds twice: approximate)", ratio(mix, ref));
+    CHECK(blinds(as_file).y < 0.7);
+    CHECK(within(blinds(mix), 0.15));
+}
+
+TEST_CASE("reference deviations: coffee's silver handle is Tungsten's mirror of albedo 1, the pot's band is not explained", "[.][reference-deviations]") {
+    if (!have("coffee")) return;
+    // The scene's Tungsten form (111116/toyray-scenes, coffee/scene.json, commit 9e68a8d8) gives
+    // "Metal" as "mirror", albedo 1: no Fresnel term at all, where the pbrt-v4 file has pbrt's
+    // silver conductor (normal reflectance about 0.95, bluer loss). Its plastics are smooth
+    // ("plastic", the file's coateddiffuse roughness 0.001 here), which changes nothing measurable.
+    Scene s = load("coffee", 200);
+    const Image ref = reference("coffee", s.film.width, s.film.height);
+    // The handle (the silver bar left of the pot) and the bright band in the glass just above
+    // the pot's silver ring (image fractions at 200 x 250).
+    auto handle = [&](const Image& im) { return ratio(im, ref, 0.20, 0.36, 0.25, 0.80); };
+    auto band = [&](const Image& im) { return ratio(im, ref, 0.30, 0.72, 0.70, 0.76); };
+    const Image as_file = render_small(s, 128, s.film.max_depth);
+    Material& metal = material(s, "Metal");
+    metal = Material{};
+    metal.name = "Metal";
+    metal.type = Material::Type::Metal;
+    metal.roughness = 0.0f;
+    metal.albedo = glm::vec3(1.0f);
+    const Image mirror = render_small(s, 128, s.film.max_depth);
+    std::printf("coffee, 200 px, 128 spp: ours / reference, r g b\n");
+    print("the handle, silver conductor (the pbrt-v4 file)", handle(as_file));
+    print("the handle, mirror of albedo 1 (Tungsten's form)", handle(mirror));
+    print("the band above the pot's ring, silver conductor", band(as_file));
+    print("the band above the pot's ring, mirror of albedo 1", band(mirror));
+    print("image mean, silver conductor", ratio(as_file, ref));
+    print("image mean, mirror of albedo 1", ratio(mirror, ref));
+    CHECK(handle(as_file).z < 0.96);
+    CHECK(within(handle(mirror), 0.02));
+    // Not explained: the band stays far too bright with Tungsten's metal.
+    CHECK(band(mirror).y > 1.3);
 }
