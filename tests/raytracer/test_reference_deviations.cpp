@@ -308,35 +308,59 @@ TEST_CASE("reference deviations: kitchen's blinds are Tungsten's transparency, a
     CHECK(within(blinds(mix), 0.15));
 }
 
-TEST_CASE("reference deviations: coffee's silver handle is Tungsten's mirror of albedo 1, the pot's band is not explained", "[.][reference-deviations]") {
+TEST_CASE("reference deviations: coffee's silver handle is Tungsten's mirror of albedo 1, the pot's band is light trapped by its silver ring", "[.][reference-deviations]") {
     if (!have("coffee")) return;
     // The scene's Tungsten form (111116/toyray-scenes, coffee/scene.json, commit 9e68a8d8) gives
     // "Metal" as "mirror", albedo 1: no Fresnel term at all, where the pbrt-v4 file has pbrt's
     // silver conductor (normal reflectance about 0.95, bluer loss). Its plastics are smooth
-    // ("plastic", the file's coateddiffuse roughness 0.001 here), which changes nothing measurable.
+    // ("plastic"; the file's coateddiffuse roughness 0.001), which changes nothing measurable.
+    // Depth: Tungsten's max_bounces 16 is our 16 (see reference-deviations.md: its path tracer
+    // counts every surface hit, the light's included, as ours does).
     Scene s = load("coffee", 200);
     const Image ref = reference("coffee", s.film.width, s.film.height);
     // The handle (the silver bar left of the pot) and the bright band in the glass just above
     // the pot's silver ring (image fractions at 200 x 250).
     auto handle = [&](const Image& im) { return ratio(im, ref, 0.20, 0.36, 0.25, 0.80); };
     auto band = [&](const Image& im) { return ratio(im, ref, 0.30, 0.72, 0.70, 0.76); };
-    const Image as_file = render_small(s, 128, s.film.max_depth);
+    const Image as_file = render_small(s, 128, 16);
     Material& metal = material(s, "Metal");
     metal = Material{};
     metal.name = "Metal";
     metal.type = Material::Type::Metal;
     metal.roughness = 0.0f;
     metal.albedo = glm::vec3(1.0f);
-    const Image mirror = render_small(s, 128, s.film.max_depth);
-    std::printf("coffee, 200 px, 128 spp: ours / reference, r g b\n");
+    const Image mirror = render_small(s, 128, 16);
+    std::printf("coffee, 200 px, 128 spp, depth 16: ours / reference, r g b\n");
     print("the handle, silver conductor (the pbrt-v4 file)", handle(as_file));
     print("the handle, mirror of albedo 1 (Tungsten's form)", handle(mirror));
-    print("the band above the pot's ring, silver conductor", band(as_file));
-    print("the band above the pot's ring, mirror of albedo 1", band(mirror));
     print("image mean, silver conductor", ratio(as_file, ref));
     print("image mean, mirror of albedo 1", ratio(mirror, ref));
     CHECK(handle(as_file).z < 0.96);
     CHECK(within(handle(mirror), 0.02));
-    // Not explained: the band stays far too bright with Tungsten's metal.
+    // The band: the ring (models/Mesh015.ply) is an open silver channel, its outer wall and two
+    // annuli closed only by the glass, so light that enters it is trapped between mirror and glass
+    // and leaves late: the band keeps brightening with the path depth long after the rest of the
+    // image has converged, and without the ring it converges. The reference holds what our paths
+    // of about 11 vertices do; why Tungsten loses the trapped light sooner is not known.
+    std::printf("the band above the pot's ring (mirror of albedo 1) by our path depth:\n");
+    const Image d9 = render_small(s, 128, 9), d13 = render_small(s, 128, 13), d25 = render_small(s, 128, 25);
+    print("depth 9", band(d9));
+    print("depth 13", band(d13));
+    print("depth 16 (Tungsten's max_bounces 16)", band(mirror));
+    print("depth 25", band(d25));
+    print("image mean, depth 25 / depth 16", ratio(d25, mirror));
+    Scene ringless = s;
+    std::uint32_t index = 0;
+    while (ringless.materials[index].name != "Metal") ++index;
+    // The file's two silver shapes, in its order: the ring (Mesh015.ply), then the handle.
+    const auto ring = std::find_if(ringless.objects.begin(), ringless.objects.end(), [&](const Object& o) { return o.material == index; });
+    REQUIRE(ring != ringless.objects.end());
+    ringless.objects.erase(ring);
+    const Image r13 = render_small(ringless, 128, 13), r25 = render_small(ringless, 128, 25);
+    print("without the ring, depth 13", band(r13));
+    print("without the ring, depth 25", band(r25));
     CHECK(band(mirror).y > 1.3);
+    CHECK(band(d9).y < 1.0);
+    CHECK(band(d25).y > band(mirror).y + 0.15);
+    CHECK(std::fabs(band(r25).y - band(r13).y) < 0.06);
 }
