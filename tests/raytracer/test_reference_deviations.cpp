@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -49,6 +50,13 @@ Scene load(const std::string& scene, int width) {
 Material& material(Scene& s, const std::string& name) {
     for (Material& m : s.materials)
         if (m.name == name) return m;
+    FAIL("no material " << name);
+    throw;
+}
+
+std::uint32_t material_index(const Scene& s, const std::string& name) {
+    for (std::uint32_t i = 0; i < s.materials.size(); ++i)
+        if (s.materials[i].name == name) return i;
     FAIL("no material " << name);
     throw;
 }
@@ -289,8 +297,7 @@ TEST_CASE("reference deviations: kitchen's blinds are Tungsten's transparency, a
     m.albedo = glm::vec3(0.6120656f, 0.4995053f, 0.3786763f);
     const Image opaque = render_small(s, 64, s.film.max_depth);
     Scene open = s;
-    std::uint32_t index = 0;
-    while (open.materials[index].name != "Blinds") ++index;
+    const std::uint32_t index = material_index(open, "Blinds");
     std::erase_if(open.objects, [&](const Object& o) { return o.material == index; });
     const Image gone = render_small(open, 64, s.film.max_depth);
     const float alpha = 0.612066f;
@@ -350,8 +357,7 @@ TEST_CASE("reference deviations: coffee's silver handle is Tungsten's mirror of 
     print("depth 25", band(d25));
     print("image mean, depth 25 / depth 16", ratio(d25, mirror));
     Scene ringless = s;
-    std::uint32_t index = 0;
-    while (ringless.materials[index].name != "Metal") ++index;
+    const std::uint32_t index = material_index(ringless, "Metal");
     // The file's two silver shapes, in its order: the ring (Mesh015.ply), then the handle.
     const auto ring = std::find_if(ringless.objects.begin(), ringless.objects.end(), [&](const Object& o) { return o.material == index; });
     REQUIRE(ring != ringless.objects.end());
