@@ -156,6 +156,8 @@ EnvironmentLight::EnvironmentLight(const Background& bg) : bg_(&bg) {
     for (int j = 0; j < height_; ++j) {
         // The row's Jacobian factor J_j: sin(theta_j) at the row's centre (equirect), 1 (equal-area).
         const double jacobian = equal_area ? 1.0 : std::sin((j + 0.5) * kPiD / height_);
+        const float v = (j + 0.5f) / static_cast<float>(height_);
+        const float sin_theta = std::sin(v * kPi), cos_theta = std::cos(v * kPi);  // equirect: the row's centre
         std::vector<float> w(static_cast<std::size_t>(width_));
         for (int i = 0; i < width_; ++i) {
             const float lum = luminance(bg.scale * img.at(i, j));
@@ -165,11 +167,9 @@ EnvironmentLight::EnvironmentLight(const Background& bg) : bg_(&bg) {
             if (lum > 0.0f) {
                 // The texel's centre in the map's frame (the maximum over orientations does not
                 // depend on the frame).
-                const float v = (j + 0.5f) / static_cast<float>(height_), theta = v * kPi;
                 const auto c = static_cast<std::size_t>(i);
                 const glm::vec3 d = equal_area ? equal_area_direction((i + 0.5f) / static_cast<float>(width_), v)
-                                               : glm::vec3(std::sin(theta) * sin_phi[c], std::cos(theta),
-                                                           -std::sin(theta) * cos_phi[c]);
+                                               : glm::vec3(sin_theta * sin_phi[c], cos_theta, -sin_theta * cos_phi[c]);
                 const std::array<double, 9> y = sh_order2(d, false);
                 for (std::size_t k = 0; k < 9; ++k) coefficients[k] += lum * jacobian * cell * y[k];
             }
