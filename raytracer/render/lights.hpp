@@ -23,7 +23,8 @@
 // Which light: the lights at infinity (directional lights, suns, the environment) together get
 // the share pbrt-v4's BVHLightSampler gives them, n_infinite / (n_infinite + 1) when the scene
 // also has lights at finite places (else all of it), and split it by the irradiance E each gives
-// a disc facing it (int lum(L) d omega for the environment); the finite ones (emissive objects,
+// a disc facing it (for the environment, the largest over the disc's orientations:
+// EnvironmentLight::max_irradiance); the finite ones (emissive objects,
 // points, spots) share the rest in proportion to their (estimated) power / pi: an emitter's
 // luminance of the emission times area (times 2 when two-sided, the area as the shape's home
 // states it, a stand-in for curved shapes under non-uniform scales), a point light 4 I, a spot

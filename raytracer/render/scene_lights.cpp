@@ -75,7 +75,7 @@ void LightSet::add_scene_lights(const Scene& scene, std::vector<float>& weights)
     if (scene.background.kind == Background::Kind::Environment && scene.background.environment) {
         auto env = std::make_shared<const EnvironmentLight>(scene.background);
         if (radius < 0.0f) radius = bounds_radius_ = scene_radius(scene, bounds_centre_);
-        const float weight = static_cast<float>(env->luminance_integral());  // its E, as above
+        const float weight = static_cast<float>(env->max_irradiance());  // its E, as above
         if (env->emits() && weight > 0.0f && std::isfinite(weight)) {
             env_ = std::move(env);
             weights.push_back(weight);
