@@ -108,7 +108,8 @@ def fireflies(args, builds, extras):
              f"from the reference's, in any channel, is more than 5 standard errors (both renders' `--variance`).\n\n",
              "| column | render arguments | 8x8 blocks beyond 5 sigma | blocks | largest z |\n|---|---|---|---|---|\n"]
     for build, binary in builds:
-        img = fr(binary, 7, spp, os.path.join(args.work, f"classroom-fireflies-{build}-{w}x{h}-{spp}"), extras[build])
+        tag = re.sub(r"[^A-Za-z0-9]+", "_", extras[build]).strip("_")  # renders of other arguments are not reused
+        img = fr(binary, 7, spp, os.path.join(args.work, f"classroom-fireflies-{build}-{tag}-{w}x{h}-{spp}"), extras[build])
         n, total, zmax = block_outliers(img[0], img[1], ref[0], ref[1])
         lines.append(f"| {build} | `{extras[build]}` | {n} | {total} | {zmax:.2f} |\n")
     return lines

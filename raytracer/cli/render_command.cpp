@@ -54,7 +54,7 @@ struct RenderArgs {
     std::string sampler;  // empty: the scene's film.sampler
     std::string guiding;  // "on", "off" or empty: the scene's film.guiding
     std::string integrator;  // "path", "bdpt" or empty: the scene's film.integrator
-    std::string adaptive = "off";  // adaptive sampling (render/adaptive_sampling.hpp): "on" or "off"
+    std::string adaptive = "off";  // adaptive sampling (render/adaptive_sampling.hpp): "on" (Mse), "relative" or "off"
     std::string time_clock = "wall";
     bool quiet = false;
     std::string samples;  // "A:B": render a farm part
@@ -233,7 +233,8 @@ int run_render(const RenderArgs& a) {
     require(a.forensics.empty() || opt.integrator == IntegratorKind::Path,
             "--forensics needs the path integrator: it follows a camera path's vertices, and bdpt's light paths have none of them");
     opt.guiding = opt.integrator == IntegratorKind::Path && (a.guiding.empty() ? scene.film.guiding : a.guiding == "on");
-    opt.adaptive = a.adaptive == "on";
+    opt.adaptive = a.adaptive != "off";
+    opt.adaptive_error = a.adaptive == "relative" ? AdaptiveError::Relative : AdaptiveError::Mse;
     if (opt.adaptive) {
         // Each round's allocation is computed from the whole image of the rounds before it, so a
         // farm part cannot know its samples without rendering everything before them.
@@ -352,11 +353,13 @@ void add_render_command(CLI::App& app, int& exit_code) {
                     "Light transport: path (unidirectional) or bdpt (bidirectional) (default: the scene's film.integrator)")
         ->check(CLI::IsMember({"path", "bdpt"}));
     cmd->add_option("--adaptive", args->adaptive,
-                    "Adaptive sampling: a 16-spp pilot, then rounds of 8 spp on average that give each 8x8 tile samples in "
-                    "proportion to its relative variance (capped at the 95th percentile; 1/8 of each round spread evenly), "
-                    "until --spp on average (or --time) is spent. Same image at any thread count; path integrator only, "
-                    "no --samples, guiding or --forensics (docs/equal-time-interiors.md)")
-        ->check(CLI::IsMember({"on", "off"}))
+                    "Adaptive sampling: a 16-spp pilot, then rounds of 8 spp on average over 8x8 tiles (1/8 of each round "
+                    "spread evenly), until --spp on average (or --time) is spent. on: each tile's count towards its share "
+                    "in proportion to its samples' standard deviation (least squared error of the linear image); relative: "
+                    "each round in proportion to the tile's relative variance (Tungsten's; favours dark tiles). Errors "
+                    "capped at the 95th percentile. Same image at any thread count; path integrator only, no --samples, "
+                    "guiding or --forensics (docs/equal-time-interiors.md)")
+        ->check(CLI::IsMember({"on", "relative", "off"}))
         ->capture_default_str();
     cmd->add_flag("--quiet", args->quiet, "No progress display and no summary");
     cmd->add_flag("--strict", args->strict,

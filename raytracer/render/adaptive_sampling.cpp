@@ -49,34 +49,113 @@ std::vector<double> adaptive_tile_errors(const AdaptiveTiles& tiles, const std::
     return err;
 }
 
+namespace {
+
+// The errors capped at the kAdaptiveCapPercentile-th percentile, by nth_element on a copy (a
+// deterministic order statistic; ties do not matter, the value is the same). All ones when the
+// cap is zero (no tile has an error yet).
+std::vector<double> capped(const std::vector<double>& errors) {
+    std::vector<double> sorted(errors);
+    const auto k = static_cast<std::size_t>(kAdaptiveCapPercentile * double(errors.size() - 1));
+    std::nth_element(sorted.begin(), sorted.begin() + static_cast<std::ptrdiff_t>(k), sorted.end());
+    const double cap = sorted[k];
+    std::vector<double> w(errors.size(), 1.0);
+    if (cap > 0.0 && std::isfinite(cap))
+        for (std::size_t t = 0; t < errors.size(); ++t) w[t] = std::min(errors[t], cap);
+    return w;
+}
+
+// Pixel-weighted mean over tiles.
+double tile_mean(const AdaptiveTiles& tiles, const std::vector<double>& v) {
+    double sum = 0.0;
+    for (int t = 0; t < tiles.count(); ++t) sum += v[static_cast<std::size_t>(t)] * tiles.pixels_in(t);
+    return sum / (double(tiles.width) * double(tiles.height));
+}
+
+std::vector<int> distribute(const AdaptiveTiles& tiles, const std::vector<double>& x, std::int64_t budget);
+
+}  // namespace
+
+std::vector<double> adaptive_tile_deviations(const AdaptiveTiles& tiles, const std::vector<PixelSum>& sums,
+                                             const std::vector<glm::dvec3>& sum_sq, const std::vector<int>& counts) {
+    std::vector<double> var(static_cast<std::size_t>(tiles.count()), 0.0);
+    for (int y = 0; y < tiles.height; ++y)
+        for (int x = 0; x < tiles.width; ++x) {
+            const std::size_t p = static_cast<std::size_t>(y) * tiles.width + x;
+            const int c = counts[p];
+            if (c < 2) continue;
+            const glm::dvec3 m = sum_value(sums[p]) / double(c);
+            const glm::dvec3 s2 = glm::max(sum_sq[p] - double(c) * m * m, glm::dvec3(0.0)) / double(c - 1);
+            var[static_cast<std::size_t>(tiles.of_pixel(x, y))] += (s2.x + s2.y + s2.z) / 3.0;
+        }
+    for (int t = 0; t < tiles.count(); ++t)
+        var[static_cast<std::size_t>(t)] = std::sqrt(var[static_cast<std::size_t>(t)] / tiles.pixels_in(t));
+    return var;
+}
+
 std::vector<int> adaptive_round(const AdaptiveTiles& tiles, const std::vector<double>& errors, std::int64_t budget) {
     const int n = tiles.count();
     const double pixels = double(tiles.width) * double(tiles.height);
-    std::vector<int> per_pixel(static_cast<std::size_t>(tiles.width) * tiles.height, 0);
-    if (budget <= 0) return per_pixel;
-    // The cap: the error at the percentile, by nth_element on a copy (a deterministic order
-    // statistic; ties do not matter, the value is the same).
-    std::vector<double> sorted(errors);
-    const auto k = static_cast<std::size_t>(kAdaptiveCapPercentile * double(n - 1));
-    std::nth_element(sorted.begin(), sorted.begin() + static_cast<std::ptrdiff_t>(k), sorted.end());
-    const double cap = sorted[k];
-    std::vector<double> w(static_cast<std::size_t>(n), 1.0);
-    double weighted = 0.0;
-    if (cap > 0.0 && std::isfinite(cap)) {
-        for (int t = 0; t < n; ++t) w[static_cast<std::size_t>(t)] = std::min(errors[static_cast<std::size_t>(t)], cap);
-    }
-    for (int t = 0; t < n; ++t) weighted += w[static_cast<std::size_t>(t)] * tiles.pixels_in(t);
-    const double mean_w = weighted / pixels;
+    if (budget <= 0) return std::vector<int>(static_cast<std::size_t>(tiles.width) * tiles.height, 0);
+    const std::vector<double> w = capped(errors);
+    const double mean_w = tile_mean(tiles, w);
     // Each tile's samples per pixel, as a real number: the uniform share plus the rest by weight.
     const double per_pixel_avg = double(budget) / pixels;
+    std::vector<double> x(static_cast<std::size_t>(n));
+    for (int t = 0; t < n; ++t)
+        x[static_cast<std::size_t>(t)] =
+            per_pixel_avg * (kAdaptiveUniformShare + (1.0 - kAdaptiveUniformShare) * w[static_cast<std::size_t>(t)] / mean_w);
+    return distribute(tiles, x, budget);
+}
+
+std::vector<int> adaptive_round_mse(const AdaptiveTiles& tiles, const std::vector<double>& deviations,
+                                    const std::vector<int>& counts, std::int64_t budget) {
+    const int n = tiles.count();
+    const double pixels = double(tiles.width) * double(tiles.height);
+    if (budget <= 0) return std::vector<int>(static_cast<std::size_t>(tiles.width) * tiles.height, 0);
+    const std::vector<double> sigma = capped(deviations);
+    const double mean_sigma = tile_mean(tiles, sigma);
+    std::vector<double> have(static_cast<std::size_t>(n), 0.0);
+    std::int64_t spent = 0;
+    for (int y = 0; y < tiles.height; ++y)
+        for (int xx = 0; xx < tiles.width; ++xx) {
+            const int c = counts[static_cast<std::size_t>(y) * tiles.width + xx];
+            have[static_cast<std::size_t>(tiles.of_pixel(xx, y))] += c;
+            spent += c;
+        }
+    const double after = double(spent + budget) / pixels;  // mean samples per pixel after the round
+    std::vector<double> shortfall(static_cast<std::size_t>(n));
+    for (int t = 0; t < n; ++t) {
+        const double want = after * sigma[static_cast<std::size_t>(t)] / mean_sigma;
+        shortfall[static_cast<std::size_t>(t)] = std::max(0.0, want - have[static_cast<std::size_t>(t)] / tiles.pixels_in(t));
+    }
+    double mean_short = tile_mean(tiles, shortfall);
+    if (!(mean_short > 0.0)) {  // every tile at or above its share: by sigma, as a fresh start would
+        shortfall = sigma;
+        mean_short = tile_mean(tiles, shortfall);
+    }
+    const double per_pixel_avg = double(budget) / pixels;
+    std::vector<double> x(static_cast<std::size_t>(n));
+    for (int t = 0; t < n; ++t)
+        x[static_cast<std::size_t>(t)] =
+            per_pixel_avg * (kAdaptiveUniformShare + (1.0 - kAdaptiveUniformShare) * shortfall[static_cast<std::size_t>(t)] / mean_short);
+    return distribute(tiles, x, budget);
+}
+
+namespace {
+
+// Whole samples per pixel from each tile's real number x_t, exactly `budget` in all: the floors,
+// then the leftover by largest fractional part (see adaptive_round).
+std::vector<int> distribute(const AdaptiveTiles& tiles, const std::vector<double>& x, std::int64_t budget) {
+    const int n = tiles.count();
+    std::vector<int> per_pixel(static_cast<std::size_t>(tiles.width) * tiles.height, 0);
     std::vector<int> base(static_cast<std::size_t>(n));
     std::vector<double> frac(static_cast<std::size_t>(n));
     std::int64_t given = 0;
     for (int t = 0; t < n; ++t) {
-        const double x = per_pixel_avg * (kAdaptiveUniformShare + (1.0 - kAdaptiveUniformShare) * w[static_cast<std::size_t>(t)] / mean_w);
-        const double f = std::floor(x);
+        const double f = std::floor(x[static_cast<std::size_t>(t)]);
         base[static_cast<std::size_t>(t)] = static_cast<int>(f);
-        frac[static_cast<std::size_t>(t)] = x - f;
+        frac[static_cast<std::size_t>(t)] = x[static_cast<std::size_t>(t)] - f;
         given += static_cast<std::int64_t>(f) * tiles.pixels_in(t);
     }
     // Leftover from the floors goes by largest fractional part; should rounding in x ever make the
@@ -118,5 +197,7 @@ std::vector<int> adaptive_round(const AdaptiveTiles& tiles, const std::vector<do
     }
     return per_pixel;
 }
+
+}  // namespace
 
 }  // namespace sweeptrace

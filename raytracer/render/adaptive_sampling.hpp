@@ -26,6 +26,16 @@
 
 namespace sweeptrace {
 
+// What a tile's error is, and so where samples go:
+// - Relative (Tungsten's): the relative variance of the tile's mean; each round in proportion to
+//   it. Equalises the error relative to brightness, what a tone-mapped picture shows, and so
+//   favours dark tiles.
+// - Mse: minimum mean squared error of the linear image. For a fixed total, sum_p sigma_p^2 / n_p
+//   is least with n_p in proportion to sigma_p (each pixel's per-sample standard deviation), so
+//   each round fills the tiles whose counts are furthest below that share of all the samples
+//   spent so far and in this round.
+enum class AdaptiveError { Relative, Mse };
+
 inline constexpr int kAdaptiveTile = 8;
 inline constexpr int kAdaptivePilotSpp = 16;
 inline constexpr int kAdaptiveRoundSpp = 8;
@@ -49,11 +59,24 @@ struct AdaptiveTiles {
 std::vector<double> adaptive_tile_errors(const AdaptiveTiles& tiles, const std::vector<PixelSum>& sums,
                                          const std::vector<glm::dvec3>& sum_sq, const std::vector<int>& counts);
 
+// Per tile, the per-sample standard deviation: the square root of the mean over its pixels of the
+// unbiased sample variance (averaged over channels). Pixels with fewer than 2 samples count as 0.
+std::vector<double> adaptive_tile_deviations(const AdaptiveTiles& tiles, const std::vector<PixelSum>& sums,
+                                             const std::vector<glm::dvec3>& sum_sq, const std::vector<int>& counts);
+
 // Samples per pixel for the next round, `budget` in all (exactly, when budget >= 0): a share
 // kAdaptiveUniformShare spread evenly, the rest in proportion to each tile's error capped at the
 // kAdaptiveCapPercentile-th percentile. Pixels of one tile get the same count, except that the
 // rounding's leftover samples go one per pixel to the tiles with the largest fractional parts
 // (in tile then pixel order), so the total is exact. All-zero errors give a uniform round.
 std::vector<int> adaptive_round(const AdaptiveTiles& tiles, const std::vector<double>& errors, std::int64_t budget);
+
+// AdaptiveError::Mse's round: the uniform share as above; the rest in proportion to each tile's
+// shortfall below its share of all samples after the round, sigma_t (capped at the percentile) /
+// the image's mean sigma x (samples so far + budget) / pixels, per pixel, against the tile's
+// mean count so far. `counts` is samples per pixel so far. Same exact total and rounding as
+// adaptive_round.
+std::vector<int> adaptive_round_mse(const AdaptiveTiles& tiles, const std::vector<double>& deviations,
+                                    const std::vector<int>& counts, std::int64_t budget);
 
 }  // namespace sweeptrace

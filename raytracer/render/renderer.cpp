@@ -128,8 +128,11 @@ public:
         round_sum_.resize(sum_.size());
         round_sq_.resize(sum_.size());
         while (done < target && !stopped(1)) {
-            const std::vector<double> errors = adaptive_tile_errors(tiles, sum_, sum_sq_, counts_);
-            const std::vector<int> more = adaptive_round(tiles, errors, std::min(target - done, kAdaptiveRoundSpp * pixels));
+            const std::int64_t budget = std::min(target - done, kAdaptiveRoundSpp * pixels);
+            const std::vector<int> more =
+                opt_.adaptive_error == AdaptiveError::Relative
+                    ? adaptive_round(tiles, adaptive_tile_errors(tiles, sum_, sum_sq_, counts_), budget)
+                    : adaptive_round_mse(tiles, adaptive_tile_deviations(tiles, sum_, sum_sq_, counts_), counts_, budget);
             std::atomic<bool> abandoned{false};
             tbb::parallel_for(tbb::blocked_range<int>(0, tiles_x_ * tiles_y_, 1), [&](const tbb::blocked_range<int>& r) {
                 for (int t = r.begin(); t < r.end(); ++t) {

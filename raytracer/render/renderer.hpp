@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "raytracer/accel/accel.hpp"
+#include "raytracer/render/adaptive_sampling.hpp"
 #include "raytracer/image/image.hpp"
 #include "raytracer/render/roulette.hpp"
 #include "raytracer/image/partial_sum.hpp"
@@ -56,6 +57,7 @@ struct RenderOptions {
     // without guiding, forensics or first_sample (a farm part cannot know the rounds' allocation
     // without the whole image of the rounds before). spp <= the pilot: the uniform render exactly.
     bool adaptive = false;
+    AdaptiveError adaptive_error = AdaptiveError::Mse;  // where a round's samples go (adaptive_sampling.hpp)
     const std::atomic<bool>* cancel = nullptr;  // set (e.g. by SIGINT) to stop early
     // Seconds (0 = none) after which the pass in flight is dropped and the render ends; the first
     // pass always completes. Counted on budget_clock from the start of render().

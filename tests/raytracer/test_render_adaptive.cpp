@@ -88,6 +88,26 @@ TEST_CASE("adaptive: a round's samples add up exactly, follow the capped error, 
     }
 }
 
+TEST_CASE("adaptive: the mse round fills the tiles furthest below their share by standard deviation", "[render][adaptive]") {
+    const AdaptiveTiles tiles(40, 20);
+    std::vector<double> sigma(15, 1.0);
+    sigma[2] = sigma[9] = 4.0;  // two, so the 95th percentile does not cap them
+    std::vector<int> counts(40 * 20, 16);
+    const std::int64_t budget = 8 * 40 * 20;
+    const std::vector<int> n = adaptive_round_mse(tiles, sigma, counts, budget);
+    CHECK(std::accumulate(n.begin(), n.end(), std::int64_t{0}) == budget);
+    const int wide = n[static_cast<std::size_t>(2 * 8)];  // tile 2, row 0
+    const int narrow = n[0];
+    CHECK(wide > 3 * narrow);
+    CHECK(narrow >= 1);  // the uniform share
+    // A tile already far above its share gets the uniform share only.
+    for (int y = 0; y < 8; ++y)
+        for (int x = 0; x < 8; ++x) counts[static_cast<std::size_t>(y) * 40 + x] = 500;
+    const std::vector<int> m = adaptive_round_mse(tiles, sigma, counts, budget);
+    CHECK(m[0] == 1);
+    CHECK(std::accumulate(m.begin(), m.end(), std::int64_t{0}) == budget);
+}
+
 TEST_CASE("adaptive: same image at any thread count, and pixel p holds samples 0..n_p-1 of its sequence", "[render][adaptive]") {
     const Scene s = adaptive_cornell(40, 32);
     const std::unique_ptr<Accel> accel = make_accel(AccelKind::Bvh, s);
@@ -141,7 +161,9 @@ TEST_CASE("adaptive: unbiased against a long uniform render of cornell-box (8x8 
     // estimated by; the adaptive render's per-pixel variances come from each pixel's own n_p.
     const Scene s = adaptive_cornell(48, 48);
     const std::unique_ptr<Accel> accel = make_accel(AccelKind::Bvh, s);
+    const AdaptiveError metric = GENERATE(AdaptiveError::Mse, AdaptiveError::Relative);
     RenderOptions ao = adaptive_options(64, 11, true);
+    ao.adaptive_error = metric;
     ao.sampler = SamplerKind::Independent;
     RenderOptions uo = adaptive_options(512, 12, false);
     uo.sampler = SamplerKind::Independent;
@@ -175,7 +197,7 @@ TEST_CASE("adaptive: unbiased against a long uniform render of cornell-box (8x8 
     };
     double max_z = 0.0, mean_z2 = 0.0;
     block_z(1.0f, max_z, mean_z2);
-    INFO("max |z| " << max_z << ", mean z^2 " << mean_z2);
+    INFO((metric == AdaptiveError::Mse ? "mse" : "relative") << ": max |z| " << max_z << ", mean z^2 " << mean_z2);
     CHECK(max_z < test::z_bound(108));
     CHECK(mean_z2 < 2.0);  // E[z^2] = 1 without bias (a few blocks' variance estimates are noisy)
     double max_bright = 0.0, mean_bright = 0.0;
@@ -195,6 +217,13 @@ TEST_CASE("render cli: --adaptive on renders and says so, and what it cannot do 
     REQUIRE(ok.exit_code == 0);
     CHECK(ok.err.find("24 spp adaptive (mean)") != std::string::npos);
     CHECK(read_image(dir / "v.pfm").width == 24);
+    // diff's noise test takes the adaptive render's per-pixel variances as any other: a uniform
+    // render of another seed is within noise of it.
+    const auto u = test::run_sweeptrace(dir, "render " + scene + " --width 24 --height 24 --spp 64 --seed 9 --quiet -o u.pfm --variance uv.pfm");
+    REQUIRE(u.exit_code == 0);
+    const auto d = test::run_sweeptrace(dir, "diff a.pfm u.pfm --variance-a v.pfm --variance-b uv.pfm");
+    INFO(d.err);
+    CHECK(d.exit_code == 0);
     for (const std::string extra : {"--samples 0:8 -o p.exr", "--integrator bdpt -o b.png", "--guiding on -o g.png",
                                     "--forensics f.json -o f.png"}) {
         const auto r = test::run_sweeptrace(dir, base + extra);
