@@ -133,14 +133,16 @@ public:
                 opt_.adaptive_error == AdaptiveError::Relative
                     ? adaptive_round(tiles, adaptive_tile_errors(tiles, sum_, sum_sq_, counts_), budget)
                     : adaptive_round_mse(tiles, adaptive_tile_deviations(tiles, sum_, sum_sq_, counts_), counts_, budget);
+            // Tasks of one image row each, not 16x16 tiles: a round's counts are uneven, and a
+            // thread left waiting on one heavy tile at the round's end burns the CPU budget.
             std::atomic<bool> abandoned{false};
-            tbb::parallel_for(tbb::blocked_range<int>(0, tiles_x_ * tiles_y_, 1), [&](const tbb::blocked_range<int>& r) {
-                for (int t = r.begin(); t < r.end(); ++t) {
+            tbb::parallel_for(tbb::blocked_range<int>(0, height_, 1), [&](const tbb::blocked_range<int>& r) {
+                for (int y = r.begin(); y < r.end(); ++y) {
                     if (stopped(1)) {
                         abandoned.store(true, std::memory_order_relaxed);
                         return;
                     }
-                    render_round_tile(t, more);
+                    render_round_row(y, more);
                 }
             });
             if (abandoned.load()) break;
@@ -305,31 +307,27 @@ private:
         return l;
     }
 
-    // An adaptive round's samples for one render tile: pixel p's samples counts_[p] .. +more[p]-1,
+    // An adaptive round's samples for one image row: pixel p's samples counts_[p] .. +more[p]-1,
     // added to copies of its sums in that order (committed by run_rounds if the round completes).
-    void render_round_tile(int tile, const std::vector<int>& more) {
-        const int x0 = (tile % tiles_x_) * kTileSize, y0 = (tile / tiles_x_) * kTileSize;
-        const int x1 = std::min(x0 + kTileSize, width_), y1 = std::min(y0 + kTileSize, height_);
+    void render_round_row(int y, const std::vector<int>& more) {
         std::uint64_t rays = 0, nonfinite = 0, clamped = 0;
         std::int64_t samples = 0;
-        for (int y = y0; y < y1; ++y) {
-            for (int x = x0; x < x1; ++x) {
-                const std::size_t pixel = static_cast<std::size_t>(y) * width_ + x;
-                if (more[pixel] == 0) continue;
-                PixelSum sum = sum_[pixel];
-                glm::dvec3 sq = sum_sq_[pixel];
-                for (int k = 0; k < more[pixel]; ++k) {
-                    const glm::vec3 l = sample_pixel(x, y, counts_[pixel] + k, rays, nonfinite, nullptr, nullptr, nullptr);
-                    bool c = false;
-                    add_sample(sum, l, c);
-                    clamped += c ? 1 : 0;
-                    const glm::dvec3 v(l);
-                    sq += v * v;
-                }
-                round_sum_[pixel] = sum;
-                round_sq_[pixel] = sq;
-                samples += more[pixel];
+        for (int x = 0; x < width_; ++x) {
+            const std::size_t pixel = static_cast<std::size_t>(y) * width_ + x;
+            if (more[pixel] == 0) continue;
+            PixelSum sum = sum_[pixel];
+            glm::dvec3 sq = sum_sq_[pixel];
+            for (int k = 0; k < more[pixel]; ++k) {
+                const glm::vec3 l = sample_pixel(x, y, counts_[pixel] + k, rays, nonfinite, nullptr, nullptr, nullptr);
+                bool c = false;
+                add_sample(sum, l, c);
+                clamped += c ? 1 : 0;
+                const glm::dvec3 v(l);
+                sq += v * v;
             }
+            round_sum_[pixel] = sum;
+            round_sq_[pixel] = sq;
+            samples += more[pixel];
         }
         rays_.fetch_add(rays, std::memory_order_relaxed);
         samples_done_.fetch_add(samples, std::memory_order_relaxed);
