@@ -16,6 +16,27 @@ int AdaptiveTiles::pixels_in(int tile) const {
     return (std::min(x0 + kAdaptiveTile, width) - x0) * (std::min(y0 + kAdaptiveTile, height) - y0);
 }
 
+namespace {
+
+// A pixel's mean radiance and the unbiased variance of its samples (0 below 2), each averaged
+// over the channels: the one place both tile measures read a pixel.
+struct PixelMoments {
+    double mean = 0.0, sample_variance = 0.0;
+};
+PixelMoments pixel_moments(const PixelSum& sum, const glm::dvec3& sum_sq, int count) {
+    PixelMoments pm;
+    if (count < 1) return pm;
+    const glm::dvec3 m = sum_value(sum) / double(count);
+    pm.mean = (m.x + m.y + m.z) / 3.0;
+    if (count > 1) {
+        const glm::dvec3 s2 = glm::max(sum_sq - double(count) * m * m, glm::dvec3(0.0)) / double(count - 1);
+        pm.sample_variance = (s2.x + s2.y + s2.z) / 3.0;
+    }
+    return pm;
+}
+
+}  // namespace
+
 std::vector<double> adaptive_tile_errors(const AdaptiveTiles& tiles, const std::vector<PixelSum>& sums,
                                          const std::vector<glm::dvec3>& sum_sq, const std::vector<int>& counts) {
     const int n = tiles.count();
@@ -26,17 +47,11 @@ std::vector<double> adaptive_tile_errors(const AdaptiveTiles& tiles, const std::
             const std::size_t p = static_cast<std::size_t>(y) * tiles.width + x;
             const int c = counts[p];
             if (c < 1) continue;
-            const glm::dvec3 m = sum_value(sums[p]) / double(c);
-            const double lum = (m.x + m.y + m.z) / 3.0;
-            double v = 0.0;
-            if (c > 1) {
-                const glm::dvec3 s2 = glm::max(sum_sq[p] - double(c) * m * m, glm::dvec3(0.0)) / double(c - 1);
-                v = (s2.x + s2.y + s2.z) / 3.0 / double(c);
-            }
+            const PixelMoments pm = pixel_moments(sums[p], sum_sq[p], c);
             const auto t = static_cast<std::size_t>(tiles.of_pixel(x, y));
-            var[t] += v;
-            mean[t] += lum;
-            image_mean += lum;
+            var[t] += pm.sample_variance / double(c);  // the variance of the pixel's mean
+            mean[t] += pm.mean;
+            image_mean += pm.mean;
         }
     image_mean /= double(tiles.width) * double(tiles.height);
     const double floor = 1e-4 * image_mean * image_mean + 1e-30;
@@ -74,6 +89,18 @@ double tile_mean(const AdaptiveTiles& tiles, const std::vector<double>& v) {
 
 std::vector<int> distribute(const AdaptiveTiles& tiles, const std::vector<double>& x, std::int64_t budget);
 
+// A round of `budget` samples: the uniform share evenly, the rest in proportion to each tile's
+// weight; returned as whole samples per pixel.
+std::vector<int> split_round(const AdaptiveTiles& tiles, const std::vector<double>& weight, std::int64_t budget) {
+    const double mean_w = tile_mean(tiles, weight);
+    // Each tile's samples per pixel, as a real number.
+    const double per_pixel_avg = double(budget) / (double(tiles.width) * double(tiles.height));
+    std::vector<double> x(weight.size());
+    for (std::size_t t = 0; t < weight.size(); ++t)
+        x[t] = per_pixel_avg * (kAdaptiveUniformShare + (1.0 - kAdaptiveUniformShare) * weight[t] / mean_w);
+    return distribute(tiles, x, budget);
+}
+
 }  // namespace
 
 std::vector<double> adaptive_tile_deviations(const AdaptiveTiles& tiles, const std::vector<PixelSum>& sums,
@@ -82,11 +109,7 @@ std::vector<double> adaptive_tile_deviations(const AdaptiveTiles& tiles, const s
     for (int y = 0; y < tiles.height; ++y)
         for (int x = 0; x < tiles.width; ++x) {
             const std::size_t p = static_cast<std::size_t>(y) * tiles.width + x;
-            const int c = counts[p];
-            if (c < 2) continue;
-            const glm::dvec3 m = sum_value(sums[p]) / double(c);
-            const glm::dvec3 s2 = glm::max(sum_sq[p] - double(c) * m * m, glm::dvec3(0.0)) / double(c - 1);
-            var[static_cast<std::size_t>(tiles.of_pixel(x, y))] += (s2.x + s2.y + s2.z) / 3.0;
+            var[static_cast<std::size_t>(tiles.of_pixel(x, y))] += pixel_moments(sums[p], sum_sq[p], counts[p]).sample_variance;
         }
     for (int t = 0; t < tiles.count(); ++t)
         var[static_cast<std::size_t>(t)] = std::sqrt(var[static_cast<std::size_t>(t)] / tiles.pixels_in(t));
@@ -94,18 +117,8 @@ std::vector<double> adaptive_tile_deviations(const AdaptiveTiles& tiles, const s
 }
 
 std::vector<int> adaptive_round(const AdaptiveTiles& tiles, const std::vector<double>& errors, std::int64_t budget) {
-    const int n = tiles.count();
-    const double pixels = double(tiles.width) * double(tiles.height);
     if (budget <= 0) return std::vector<int>(static_cast<std::size_t>(tiles.width) * tiles.height, 0);
-    const std::vector<double> w = capped(errors);
-    const double mean_w = tile_mean(tiles, w);
-    // Each tile's samples per pixel, as a real number: the uniform share plus the rest by weight.
-    const double per_pixel_avg = double(budget) / pixels;
-    std::vector<double> x(static_cast<std::size_t>(n));
-    for (int t = 0; t < n; ++t)
-        x[static_cast<std::size_t>(t)] =
-            per_pixel_avg * (kAdaptiveUniformShare + (1.0 - kAdaptiveUniformShare) * w[static_cast<std::size_t>(t)] / mean_w);
-    return distribute(tiles, x, budget);
+    return split_round(tiles, capped(errors), budget);
 }
 
 std::vector<int> adaptive_round_mse(const AdaptiveTiles& tiles, const std::vector<double>& deviations,
@@ -129,17 +142,8 @@ std::vector<int> adaptive_round_mse(const AdaptiveTiles& tiles, const std::vecto
         const double want = after * sigma[static_cast<std::size_t>(t)] / mean_sigma;
         shortfall[static_cast<std::size_t>(t)] = std::max(0.0, want - have[static_cast<std::size_t>(t)] / tiles.pixels_in(t));
     }
-    double mean_short = tile_mean(tiles, shortfall);
-    if (!(mean_short > 0.0)) {  // every tile at or above its share: by sigma, as a fresh start would
-        shortfall = sigma;
-        mean_short = tile_mean(tiles, shortfall);
-    }
-    const double per_pixel_avg = double(budget) / pixels;
-    std::vector<double> x(static_cast<std::size_t>(n));
-    for (int t = 0; t < n; ++t)
-        x[static_cast<std::size_t>(t)] =
-            per_pixel_avg * (kAdaptiveUniformShare + (1.0 - kAdaptiveUniformShare) * shortfall[static_cast<std::size_t>(t)] / mean_short);
-    return distribute(tiles, x, budget);
+    // Every tile at or above its share: by sigma, as a fresh start would.
+    return split_round(tiles, tile_mean(tiles, shortfall) > 0.0 ? shortfall : sigma, budget);
 }
 
 namespace {
