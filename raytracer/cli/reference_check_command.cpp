@@ -172,7 +172,7 @@ RenderResult refcheck_render(const Scene& scene, int spp, int max_depth, const R
     // the variance, and the z-test would be too lenient).
     o.sampler = SamplerKind::Independent;
     o.guiding = false;
-    o.integrator = scene.film.integrator;  // pbrt's Integrator "bdpt" renders with ours
+    o.integrator = scene.film.integrator;  // pbrt's Integrator "bdpt" and "sppm" render with ours (bdpt, vcm)
     return render(scene, *accel, o);
 }
 

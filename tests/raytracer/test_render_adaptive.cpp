@@ -224,7 +224,7 @@ TEST_CASE("render cli: --adaptive on renders and says so, and what it cannot do 
     const auto d = test::run_sweeptrace(dir, "diff a.pfm u.pfm --variance-a v.pfm --variance-b uv.pfm");
     INFO(d.err);
     CHECK(d.exit_code == 0);
-    for (const std::string extra : {"--samples 0:8 -o p.exr", "--integrator bdpt -o b.png", "--guiding on -o g.png",
+    for (const std::string extra : {"--samples 0:8 -o p.exr", "--integrator bdpt -o b.png", "--integrator vcm -o b.png", "--guiding on -o g.png",
                                     "--forensics f.json -o f.png"}) {
         const auto r = test::run_sweeptrace(dir, base + extra);
         INFO(extra << ": " << r.err);
