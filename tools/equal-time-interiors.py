@@ -12,16 +12,27 @@ The reference's own noise adds to every RMSE about 1/ref-factor of a render's va
 The issue's settings are the defaults: 320x180, 60 CPU-s, 2 threads. Writes a markdown table
 (--out, default docs/equal-time-interiors.md) with the command that made it.
 
+Two settings of one build (e.g. uniform against adaptive sampling): the same binary as --old
+and --new, with --old-args / --new-args added to each one's equal-time renders and --ref-args
+to every reference (so the references stay uniform whatever the default). --fireflies adds the
+issue's firefly check: classroom at --firefly-spp (1024) for each column, against a reference
+of --firefly-ref-factor x that spp, and the count of 8x8 blocks whose mean is more than 5 sigma
+(the two renders' stated variances, `render --variance`) from the reference's.
+
 Build the old binary (main at 644dcf9) beside the new one, e.g.:
   git worktree add --detach ../wt-base 644dcf9
   cmake -S ../wt-base -B ../wt-base/build -DSWEEPTRACE_TESTS=OFF && cmake --build ../wt-base/build -j2 --target sweeptrace
 Usage:
   /usr/bin/python3 tools/equal-time-interiors.py --old ../wt-base/build/sweeptrace --new build/sweeptrace
       [--time 60] [--ref-factor 16] [--threads 2] [--width 320 --height 180] [--scenes classroom,smallpt]
+  /usr/bin/python3 tools/equal-time-interiors.py --old build/sweeptrace --new build/sweeptrace \
+      --old-args="--adaptive off" --new-args="--adaptive on" --ref-args="--adaptive off" --shared-reference \
+      --title "uniform against adaptive sampling" [--fireflies --firefly-size 80x45]
 """
 import argparse
 import os
 import re
+import shlex
 import subprocess
 import sys
 import time
@@ -44,16 +55,64 @@ SCENES = [
 ]
 
 
-def render(binary, scene, args, seconds, seed, out):
-    """A --time render on the CPU clock; returns its spp."""
+def render(binary, scene, args, seconds, seed, out, extra=""):
+    """A --time render on the CPU clock (extra: more render arguments); returns its spp."""
     cmd = [binary, "render", scene, "--width", str(args.width), "--height", str(args.height), "--time", str(seconds),
-           "--time-clock", "cpu", "--threads", str(args.threads), "--seed", str(seed), "-o", out]
+           "--time-clock", "cpu", "--threads", str(args.threads), "--seed", str(seed), "-o", out] + shlex.split(extra)
+    return run_render(cmd)
+
+
+def run_render(cmd):
+    """Runs one render command; returns the spp of its summary line (adaptive: the mean)."""
     print("equal-time-interiors: " + " ".join(cmd), file=sys.stderr, flush=True)
     res = subprocess.run(cmd, stderr=subprocess.PIPE, text=True)
     if res.returncode != 0:
         raise SystemExit(f"equal-time-interiors: {' '.join(cmd)} failed:\n{res.stderr}")
     m = re.search(r"\d+x\d+, (\d+) spp", res.stderr)  # the summary line
     return int(m.group(1)) if m else -1
+
+
+def block_outliers(image, var, ref, ref_var, block=8, sigmas=5.0):
+    """8x8 blocks (any channel) whose mean is more than `sigmas` standard errors from the reference's."""
+    h, w = (image.shape[0] // block) * block, (image.shape[1] // block) * block
+
+    def sums(a):
+        return a[:h, :w].reshape(h // block, block, w // block, block, -1).sum(axis=(1, 3))
+    d = sums(image) - sums(ref)
+    v = sums(var) + sums(ref_var)
+    z = np.where(v > 0, np.abs(d) / np.sqrt(np.maximum(v, 1e-300)), 0.0)
+    bad = np.any(z > sigmas, axis=-1)
+    return int(bad.sum()), int(bad.size), float(z.max())
+
+
+def fireflies(args, builds, extras):
+    """The issue's firefly check on classroom; returns markdown lines."""
+    scene = SCENES[0][1]
+    if not os.path.exists(scene):
+        return [f"Firefly check skipped: {scene} missing.\n"]
+    w, h = (int(v) for v in args.firefly_size.split("x"))
+    spp = args.firefly_spp
+    ref_spp = int(args.firefly_ref_factor * spp)
+
+    def fr(binary, seed, n, out, extra):
+        cmd = [binary, "render", scene, "--width", str(w), "--height", str(h), "--spp", str(n), "--threads",
+               str(args.threads), "--seed", str(seed), "--sampler", "independent", "-o", out + ".pfm",
+               "--variance", out + "-var.pfm"] + shlex.split(extra)
+        if not (os.path.exists(out + ".pfm") and os.path.exists(out + "-var.pfm")):
+            run_render(cmd)
+        return read_pfm(out + ".pfm"), read_pfm(out + "-var.pfm")
+
+    ref = fr(args.new, 1001, ref_spp, os.path.join(args.work, f"classroom-fireflies-ref-{w}x{h}-{ref_spp}"), args.ref_args)
+    lines = [f"\n## Firefly check: classroom at {w}x{h}, {spp} spp, independent sampler\n\n",
+             f"Reference: {ref_spp} spp (seed 1001, `{args.ref_args}`). A block fails when the difference of its mean "
+             f"from the reference's, in any channel, is more than 5 standard errors (both renders' `--variance`).\n\n",
+             "| column | render arguments | 8x8 blocks beyond 5 sigma | blocks | largest z |\n|---|---|---|---|---|\n"]
+    for build, binary in builds:
+        tag = re.sub(r"[^A-Za-z0-9]+", "_", extras[build]).strip("_")  # renders of other arguments are not reused
+        img = fr(binary, 7, spp, os.path.join(args.work, f"classroom-fireflies-{build}-{tag}-{w}x{h}-{spp}"), extras[build])
+        n, total, zmax = block_outliers(img[0], img[1], ref[0], ref[1])
+        lines.append(f"| {build} | `{extras[build]}` | {n} | {total} | {zmax:.2f} |\n")
+    return lines
 
 
 def rmse(image, reference):
@@ -72,6 +131,14 @@ def main():
     ap.add_argument("--width", type=int, default=320)
     ap.add_argument("--height", type=int, default=180)
     ap.add_argument("--scenes", default=",".join(s[0] for s in SCENES))
+    ap.add_argument("--old-args", default="", help="more render arguments for the old column's equal-time renders")
+    ap.add_argument("--new-args", default="", help="more render arguments for the new column's equal-time renders")
+    ap.add_argument("--ref-args", default="", help="more render arguments for every reference render")
+    ap.add_argument("--title", default="main at 644dcf9 against this branch", help="what old and new are, for the heading")
+    ap.add_argument("--fireflies", action="store_true", help="add the firefly check on classroom (see above)")
+    ap.add_argument("--firefly-spp", type=int, default=1024)
+    ap.add_argument("--firefly-ref-factor", type=float, default=8.0)
+    ap.add_argument("--firefly-size", default="320x180", help="WxH of the firefly check's renders")
     ap.add_argument("--work", default="equal-time-interiors", help="folder for the renders (kept; references reused)")
     ap.add_argument("--out", default=os.path.join(REPO, "docs", "equal-time-interiors.md"))
     args = ap.parse_args()
@@ -84,6 +151,7 @@ def main():
             raise SystemExit(f"equal-time-interiors: {b}: not an executable")
     os.makedirs(args.work, exist_ok=True)
     builds = [("old", args.old), ("new", args.new)]
+    extras = {"old": args.old_args, "new": args.new_args}
     rows = []
     started = time.time()
     for name, scene, target in SCENES:
@@ -98,29 +166,40 @@ def main():
             if args.shared_reference and build == "old":
                 continue
             path = os.path.join(args.work, f"{name}-{build}-ref-{ref_seconds:g}s.pfm")
-            spp = render(binary, scene, args, ref_seconds, 1001, path)
+            # A reference already in --work (same name: scene, build, budget) is reused with its spp.
+            if os.path.exists(path) and os.path.exists(path + ".spp"):
+                spp = int(open(path + ".spp").read())
+            else:
+                spp = render(binary, scene, args, ref_seconds, 1001, path, args.ref_args)
+                with open(path + ".spp", "w") as f:
+                    f.write(str(spp))
             refs[build] = (read_pfm(path), spp)
         if args.shared_reference:
             refs["old"] = refs["new"]
         result = {}
         for build, binary in builds:
             path = os.path.join(args.work, f"{name}-{build}-{args.time:g}s.pfm")
-            spp = render(binary, scene, args, args.time, 7, path)
+            spp = render(binary, scene, args, args.time, 7, path, extras[build])
             result[build] = (rmse(read_pfm(path), refs[build][0]), spp, refs[build][1])
         ratio = result["new"][0] / result["old"][0] if result["old"][0] > 0 else float("nan")
         rows.append((name, target, result, ratio))
     with open(args.out, "w") as f:
-        f.write("# Equal-time RMSE on the interiors: main at 644dcf9 against this branch\n\n")
-        f.write("Generated by `/usr/bin/python3 tools/equal-time-interiors.py " + " ".join(sys.argv[1:]) + "`")
+        f.write(f"# Equal-time RMSE on the interiors: {args.title}\n\n")
+        f.write("Generated by `/usr/bin/python3 tools/equal-time-interiors.py " + shlex.join(sys.argv[1:]) + "`")
         f.write(f" ({time.time() - started:.0f} s wall).\n\n")
         f.write(f"Each render: {args.width}x{args.height}, `--time {args.time:g} --time-clock cpu --threads {args.threads}`"
                 f" (CPU seconds of all threads), seed 7. Reference: {args.ref_factor:g} x that budget, seed 1001, rendered by ")
-        f.write("the new build for both columns.\n\n" if args.shared_reference else "the same build as the column it judges.\n\n")
+        f.write("the new build for both columns" if args.shared_reference else "the same build as the column it judges")
+        f.write(f" (`{args.ref_args}`).\n\n" if args.ref_args else ".\n\n")
+        if args.old_args or args.new_args:
+            f.write(f"Old column: `{args.old_args}`; new column: `{args.new_args}`.\n\n")
         f.write("| scene | spp old | spp new | ref spp (old / new) | RMSE old | RMSE new | new / old | issue's target |\n")
         f.write("|---|---|---|---|---|---|---|---|\n")
         for name, target, r, ratio in rows:
             f.write(f"| {name} | {r['old'][1]} | {r['new'][1]} | {r['old'][2]} / {r['new'][2]} | {r['old'][0]:.5g} | "
                     f"{r['new'][0]:.5g} | {ratio:.3f} | <= {target} {'met' if ratio <= target else 'missed'} |\n")
+        if args.fireflies:
+            f.writelines(fireflies(args, builds, extras))
     print(open(args.out).read())
 
 

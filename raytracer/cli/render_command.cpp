@@ -54,6 +54,7 @@ struct RenderArgs {
     std::string sampler;  // empty: the scene's film.sampler
     std::string guiding;  // "on", "off" or empty: the scene's film.guiding
     std::string integrator;  // "path", "bdpt", "vcm" or empty: the scene's film.integrator
+    std::string adaptive = "off";  // adaptive sampling (render/adaptive_sampling.hpp): "on" (Mse), "relative" or "off"
     std::string time_clock = "wall";
     bool quiet = false;
     std::string samples;  // "A:B": render a farm part
@@ -235,6 +236,21 @@ int run_render(const RenderArgs& a) {
     require(a.forensics.empty() || opt.integrator == IntegratorKind::Path,
             "--forensics needs the path integrator: it follows a camera path's vertices, and the light paths of bdpt and vcm have none of them");
     opt.guiding = opt.integrator == IntegratorKind::Path && (a.guiding.empty() ? scene.film.guiding : a.guiding == "on");
+    opt.adaptive = a.adaptive != "off";
+    opt.adaptive_error = a.adaptive == "relative" ? AdaptiveError::Relative : AdaptiveError::Mse;
+    if (opt.adaptive) {
+        // Each round's allocation is computed from the whole image of the rounds before it, so a
+        // farm part cannot know its samples without rendering everything before them.
+        require(a.samples.empty(),
+                "--adaptive on cannot be combined with --samples: each round's samples per pixel depend on the whole image "
+                "of the rounds before, which a farm part does not have; render farm parts with --adaptive off");
+        require(opt.integrator == IntegratorKind::Path,
+                "--adaptive on needs the path integrator: the light paths of bdpt and vcm add to other pixels than the "
+                "sample's, so a pixel's count of samples would not be its count of estimates");
+        require(!opt.guiding, "--adaptive on needs guiding off (the scene's film.guiding or --guiding on): the guide "
+                              "learns from whole passes over the image");
+        require(a.forensics.empty(), "--adaptive on cannot be combined with --forensics: the report is per pass over the image");
+    }
     if (!a.samples.empty()) {
         // A part must be exactly the samples [A, B) a whole render draws: a time budget would cut
         // it short, and a guided sample depends on the guide trained on every pass before it.
@@ -291,6 +307,7 @@ int run_render(const RenderArgs& a) {
                      scene_path.filename().string().c_str(), scene.film.width, scene.film.height, st.completed_spp,
                      opt.guiding                              ? " guided"
                      : opt.integrator != IntegratorKind::Path ? (std::string(" ") + integrator_name(opt.integrator)).c_str()
+                     : opt.adaptive                           ? " adaptive (mean)"
                                                               : "",
                      accel->name().c_str(), si_text(double(accel->memory_bytes())).append("B").c_str(), build_seconds,
                      threads, threads == 1 ? "" : "s", st.seconds, si_text(double(st.samples) / secs).c_str(),
@@ -312,7 +329,7 @@ void add_render_command(CLI::App& app, int& exit_code) {
                     "Default: the scene's name with .png, in the current directory (a .pbrt scene: its Film's filename, pbrt.exr if none)");
     cmd->add_option("--variance", args->variance,
                     "Also write the per-pixel variance of each pixel's mean (.exr/.pfm): the samples' unbiased "
-                    "variance / spp, from the same samples (needs spp >= 2); for `diff --variance-a/-b`. Exact for "
+                    "variance / the pixel's sample count (spp; under --adaptive its own), from the same samples (needs spp >= 2); for `diff --variance-a/-b`. Exact for "
                     "--sampler independent; under sobol (stratified) the true variance is smaller, so the file "
                     "overstates it and diff's noise test is conservative");
     cmd->add_option("--forensics", args->forensics,
@@ -342,6 +359,15 @@ void add_render_command(CLI::App& app, int& exit_code) {
                     "Light transport: path (unidirectional), bdpt (bidirectional) or vcm (vertex connection and merging) "
                     "(default: the scene's film.integrator)")
         ->check(CLI::IsMember({"path", "bdpt", "vcm"}));
+    cmd->add_option("--adaptive", args->adaptive,
+                    "Adaptive sampling: a 16-spp pilot, then rounds of 8 spp on average over 8x8 tiles (1/8 of each round "
+                    "spread evenly), until --spp on average (or --time) is spent. on: each tile's count towards its share "
+                    "in proportion to its samples' standard deviation (least squared error of the linear image); relative: "
+                    "each round in proportion to the tile's relative variance (Tungsten's; favours dark tiles). Errors "
+                    "capped at the 95th percentile. Same image at any thread count; path integrator only, no --samples, "
+                    "guiding or --forensics (docs/equal-time-interiors.md)")
+        ->check(CLI::IsMember({"on", "relative", "off"}))
+        ->capture_default_str();
     cmd->add_flag("--quiet", args->quiet, "No progress display and no summary");
     cmd->add_flag("--strict", args->strict,
                   "A .pbrt scene: refuse (exit 2) anything the translation would approximate or ignore, instead of a warning");

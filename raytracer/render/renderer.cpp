@@ -22,6 +22,7 @@
 #include <tbb/task_arena.h>
 
 #include "collision/finite.hpp"
+#include "raytracer/render/adaptive_sampling.hpp"
 #include "raytracer/render/camera.hpp"
 #include "raytracer/render/guiding_sd_tree.hpp"
 #include "raytracer/render/integrators/bdpt.hpp"
@@ -78,32 +79,88 @@ public:
             allow.emplace(tbb::global_control::max_allowed_parallelism, static_cast<std::size_t>(opt_.threads));
         tbb::task_arena arena(threads);
         arena.execute([this] {
-            const int tiles = tiles_x_ * tiles_y_;
-            for (int s = 0; s < opt_.spp; ++s) {
-                if (stopped(s)) break;
-                if (vcm_) light_pass(tiles, opt_.first_sample + s);
-                std::atomic<bool> abandoned{false};
-                tbb::parallel_for(tbb::blocked_range<int>(0, tiles, 1), [&](const tbb::blocked_range<int>& r) {
-                    for (int t = r.begin(); t < r.end(); ++t) {
-                        if (stopped(s)) {
-                            abandoned.store(true, std::memory_order_relaxed);
-                            return;
-                        }
-                        render_tile(t, opt_.first_sample + s);
-                        tiles_done_.fetch_add(1, std::memory_order_relaxed);
-                    }
-                });
-                if (abandoned.load()) {
-                    if (opt_.forensics != nullptr) opt_.forensics->drop_pass();
-                    break;
-                }
-                if (!tile_splats_.empty()) add_splats();
-                if (opt_.guiding && guide_.training()) learn(s + 1);
-                accumulate_pass();
-                if (opt_.forensics != nullptr) opt_.forensics->end_pass();
-                completed_spp_.store(s + 1, std::memory_order_release);
-            }
+            // Adaptive: the pilot is the uniform render's first passes, then the rounds.
+            run_passes(opt_.adaptive ? std::min(opt_.spp, kAdaptivePilotSpp) : opt_.spp);
+            if (opt_.adaptive) run_rounds();
         });
+    }
+
+    void run_passes(int passes) {
+        const int tiles = tiles_x_ * tiles_y_;
+        for (int s = 0; s < passes; ++s) {
+            if (stopped(s)) break;
+            if (vcm_) light_pass(tiles, opt_.first_sample + s);
+            std::atomic<bool> abandoned{false};
+            tbb::parallel_for(tbb::blocked_range<int>(0, tiles, 1), [&](const tbb::blocked_range<int>& r) {
+                for (int t = r.begin(); t < r.end(); ++t) {
+                    if (stopped(s)) {
+                        abandoned.store(true, std::memory_order_relaxed);
+                        return;
+                    }
+                    render_tile(t, opt_.first_sample + s);
+                    tiles_done_.fetch_add(1, std::memory_order_relaxed);
+                }
+            });
+            if (abandoned.load()) {
+                if (opt_.forensics != nullptr) opt_.forensics->drop_pass();
+                break;
+            }
+            if (!tile_splats_.empty()) add_splats();
+            if (opt_.guiding && guide_.training()) learn(s + 1);
+            accumulate_pass();
+            if (opt_.forensics != nullptr) opt_.forensics->end_pass();
+            completed_spp_.store(s + 1, std::memory_order_release);
+            samples_done_.fetch_add(static_cast<std::int64_t>(sum_.size()), std::memory_order_relaxed);
+        }
+    }
+
+    // Adaptive rounds after the pilot (adaptive_sampling.hpp). Each round's allocation is computed
+    // on this thread from the sums of the rounds before, so it does not depend on the threads;
+    // the round is rendered row-parallel, each pixel's new samples in index order from its count
+    // on, straight after its earlier ones (sum and sum of squares continued from the pixel's own,
+    // so they are the very numbers a uniform render of n_p samples gives). A round cut short by
+    // the time budget or a cancel is dropped whole: every pixel keeps its count from the rounds
+    // before, never one that depends on which tiles a thread had reached.
+    void run_rounds() {
+        counts_.assign(sum_.size(), completed_spp_.load());
+        if (stopped(1) || completed_spp_.load() < std::min(opt_.spp, kAdaptivePilotSpp)) return;
+        const AdaptiveTiles tiles(width_, height_);
+        const std::int64_t pixels = static_cast<std::int64_t>(sum_.size());
+        const std::int64_t target = static_cast<std::int64_t>(opt_.spp) * pixels;
+        std::int64_t done = static_cast<std::int64_t>(completed_spp_.load()) * pixels;
+        round_sum_.resize(sum_.size());
+        round_sq_.resize(sum_.size());
+        while (done < target && !stopped(1)) {
+            const std::int64_t budget = std::min(target - done, kAdaptiveRoundSpp * pixels);
+            const std::vector<int> more =
+                opt_.adaptive_error == AdaptiveError::Relative
+                    ? adaptive_round(tiles, adaptive_tile_errors(tiles, sum_, sum_sq_, counts_), budget)
+                    : adaptive_round_mse(tiles, adaptive_tile_deviations(tiles, sum_, sum_sq_, counts_), counts_, budget);
+            // Tasks of one image row each, not 16x16 tiles: a round's counts are uneven, and a
+            // thread left waiting on one heavy tile at the round's end burns the CPU budget.
+            std::atomic<bool> abandoned{false};
+            tbb::parallel_for(tbb::blocked_range<int>(0, height_, 1), [&](const tbb::blocked_range<int>& r) {
+                for (int y = r.begin(); y < r.end(); ++y) {
+                    if (stopped(1)) {
+                        abandoned.store(true, std::memory_order_relaxed);
+                        return;
+                    }
+                    render_round_row(y, more);
+                }
+            });
+            if (abandoned.load()) break;
+            std::int64_t added = 0;
+            for (std::size_t i = 0; i < sum_.size(); ++i) {
+                if (more[i] == 0) continue;
+                sum_[i] = round_sum_[i];
+                sum_sq_[i] = round_sq_[i];
+                counts_[i] += more[i];
+                added += more[i];
+            }
+            done += added;
+            completed_spp_.store(static_cast<int>(done / pixels), std::memory_order_release);
+            if (added == 0) break;
+        }
     }
 
     // Tiles finished over all passes, or the budget's time spent: both only grow, so progress
@@ -111,8 +168,11 @@ public:
     RenderProgress progress() const {
         const double total = static_cast<double>(tiles_x_) * tiles_y_ * opt_.spp;
         RenderProgress p;
-        p.fraction = std::max(budget_.fraction(),
-                              std::min(1.0, static_cast<double>(tiles_done_.load(std::memory_order_relaxed)) / total));
+        // Adaptive rounds are counted in samples (their tiles hold different counts).
+        const double done = opt_.adaptive ? static_cast<double>(samples_done_.load(std::memory_order_relaxed)) /
+                                                (static_cast<double>(sum_.size()) * opt_.spp)
+                                          : static_cast<double>(tiles_done_.load(std::memory_order_relaxed)) / total;
+        p.fraction = std::max(budget_.fraction(), std::min(1.0, done));
         p.completed_spp = completed_spp_.load(std::memory_order_acquire);
         p.seconds = budget_.elapsed();
         p.seconds_left = budget_.left();
@@ -125,23 +185,29 @@ public:
         res.image = Image(width_, height_);
         res.variance = Image(width_, height_);
         const int spp = completed_spp_.load();
-        for (std::size_t i = 0; spp > 0 && i < sum_.size(); ++i) {
-            res.image.pixels[i] = mean_of(sum_[i], spp);
-            const glm::dvec3 mean = sum_value(sum_[i]) / double(spp);
-            if (spp > 1) {
-                const glm::dvec3 var = glm::max(sum_sq_[i] - double(spp) * mean * mean, glm::dvec3(0.0)) / double(spp - 1);
-                res.variance.pixels[i] = glm::vec3(var / double(spp));
+        std::uint64_t samples = 0;
+        for (std::size_t i = 0; i < sum_.size(); ++i) {
+            // Each pixel's own count: spp, or under adaptive sampling its n_p.
+            const int n = counts_.empty() ? spp : counts_[i];
+            samples += static_cast<std::uint64_t>(n);
+            if (n < 1) continue;
+            res.image.pixels[i] = mean_of(sum_[i], n);
+            const glm::dvec3 mean = sum_value(sum_[i]) / double(n);
+            if (n > 1) {
+                const glm::dvec3 var = glm::max(sum_sq_[i] - double(n) * mean * mean, glm::dvec3(0.0)) / double(n - 1);
+                res.variance.pixels[i] = glm::vec3(var / double(n));
             }
         }
         res.stats.seconds = seconds;
         res.stats.completed_spp = spp;
-        res.stats.samples = static_cast<std::uint64_t>(spp) * sum_.size();
+        res.stats.samples = samples;
         res.stats.rays = rays_.load();
         res.stats.nonfinite_samples = nonfinite_.load();
         res.stats.clamped_samples = clamped_.load();
         res.stats.cancelled = spp < opt_.spp && cancelled();
         res.stats.budget_spent = spp < opt_.spp && !res.stats.cancelled;
         res.sums = std::move(sum_);
+        res.pixel_samples = std::move(counts_);
         return res;
     }
 
@@ -239,28 +305,65 @@ private:
         for (int y = y0; y < y1; ++y) {
             for (int x = x0; x < x1; ++x) {
                 const std::size_t pixel = static_cast<std::size_t>(y) * width_ + x;
-                PixelSampler sampler(opt_.sampler, opt_.seed, pixel, static_cast<std::uint64_t>(sample));
-                const glm::vec2 u_film = sampler.get2d(sample_dim::kFilm);
-                const FilmOffset film = camera_.film_offset(u_film.x, u_film.y);  // from the pixel filter
-                const glm::vec2 lens = sampler.get2d(sample_dim::kLens);
-                const float fx = static_cast<float>(x) + film.dx;
-                const float fy = static_cast<float>(y) + film.dy;
-                const float time = sample_time(sampler);
                 if (tally != nullptr) tally->begin();
-                glm::vec3 l = film.weight * limited(vcm_    ? vcm_->sample(pixel, fx, fy, lens, time, sampler, rays)
-                                                    : bdpt ? bdpt_.sample(fx, fy, lens, time, sampler, rays, *splats)
-                                                           : integrator_.radiance(camera_.generate(fx, fy, lens.x, lens.y),
-                                                                                  sampler, rays, records, time, tally));
-                if (!collision::finite(l)) {
-                    l = glm::vec3(0.0f);
-                    ++nonfinite;
-                }
+                const glm::vec3 l = sample_pixel(x, y, sample, rays, nonfinite, records, splats, tally);
                 if (tally != nullptr) opt_.forensics->finish_sample(tile, pixel, *tally, l);
                 pass_[pixel] = l;
             }
         }
         rays_.fetch_add(rays, std::memory_order_relaxed);
         if (nonfinite != 0) nonfinite_.fetch_add(nonfinite, std::memory_order_relaxed);
+    }
+
+    // One camera sample of pixel (x, y): its value after the pixel filter's weight and the film's
+    // clamp, a non-finite one counted and made black.
+    glm::vec3 sample_pixel(int x, int y, int sample, std::uint64_t& rays, std::uint64_t& nonfinite,
+                           std::vector<GuideRecord>* records, std::vector<Splat>* splats, PathTally* tally) {
+        const std::size_t pixel = static_cast<std::size_t>(y) * width_ + x;
+        PixelSampler sampler(opt_.sampler, opt_.seed, pixel, static_cast<std::uint64_t>(sample));
+        const glm::vec2 u_film = sampler.get2d(sample_dim::kFilm);
+        const FilmOffset film = camera_.film_offset(u_film.x, u_film.y);  // from the pixel filter
+        const glm::vec2 lens = sampler.get2d(sample_dim::kLens);
+        const float fx = static_cast<float>(x) + film.dx;
+        const float fy = static_cast<float>(y) + film.dy;
+        const float time = sample_time(sampler);
+        glm::vec3 l = film.weight * limited(vcm_                 ? vcm_->sample(pixel, fx, fy, lens, time, sampler, rays)
+                                            : splats != nullptr ? bdpt_.sample(fx, fy, lens, time, sampler, rays, *splats)
+                                                                : integrator_.radiance(camera_.generate(fx, fy, lens.x, lens.y),
+                                                                                       sampler, rays, records, time, tally));
+        if (!collision::finite(l)) {
+            l = glm::vec3(0.0f);
+            ++nonfinite;
+        }
+        return l;
+    }
+
+    // An adaptive round's samples for one image row: pixel p's samples counts_[p] .. +more[p]-1,
+    // added to copies of its sums in that order (committed by run_rounds if the round completes).
+    void render_round_row(int y, const std::vector<int>& more) {
+        std::uint64_t rays = 0, nonfinite = 0, clamped = 0;
+        std::int64_t samples = 0;
+        for (int x = 0; x < width_; ++x) {
+            const std::size_t pixel = static_cast<std::size_t>(y) * width_ + x;
+            if (more[pixel] == 0) continue;
+            PixelSum sum = sum_[pixel];
+            glm::dvec3 sq = sum_sq_[pixel];
+            for (int k = 0; k < more[pixel]; ++k) {
+                const glm::vec3 l = sample_pixel(x, y, counts_[pixel] + k, rays, nonfinite, nullptr, nullptr, nullptr);
+                bool c = false;
+                add_sample(sum, l, c);
+                clamped += c ? 1 : 0;
+                const glm::dvec3 v(l);
+                sq += v * v;
+            }
+            round_sum_[pixel] = sum;
+            round_sq_[pixel] = sq;
+            samples += more[pixel];
+        }
+        rays_.fetch_add(rays, std::memory_order_relaxed);
+        samples_done_.fetch_add(samples, std::memory_order_relaxed);
+        if (nonfinite != 0) nonfinite_.fetch_add(nonfinite, std::memory_order_relaxed);
+        if (clamped != 0) clamped_.fetch_add(clamped, std::memory_order_relaxed);
     }
 
     // film.clamp_sample: the whole sample scaled so its largest component is at most the limit,
@@ -286,8 +389,11 @@ private:
     std::vector<glm::vec3> pass_;   // the pass in flight
     GuidingSdTree guide_;           // read during a pass, trained between passes
     std::vector<std::vector<GuideRecord>> tile_records_;  // the pass in flight's, per tile
+    std::vector<int> counts_;              // adaptive: samples per pixel so far (empty: uniform)
+    std::vector<PixelSum> round_sum_;      // adaptive: the round in flight's sums, per pixel it samples
+    std::vector<glm::dvec3> round_sq_;
     std::atomic<int> completed_spp_{0};
-    std::atomic<std::int64_t> tiles_done_{0};
+    std::atomic<std::int64_t> tiles_done_{0}, samples_done_{0};
     std::atomic<std::uint64_t> rays_{0}, nonfinite_{0}, clamped_{0};
 };
 
@@ -314,6 +420,9 @@ RenderResult render_with_planted_defect(const Scene& scene, const Accel& accel, 
     if (options.guiding && options.integrator != IntegratorKind::Path)
         throw std::invalid_argument("render: path guiding is the path integrator's");
     if (!(options.time_budget >= 0.0)) throw std::invalid_argument("render: time_budget must be >= 0 seconds");
+    if (options.adaptive && (options.integrator != IntegratorKind::Path || options.guiding || options.forensics != nullptr ||
+                             options.first_sample != 0))
+        throw std::invalid_argument("render: adaptive sampling is the path integrator's, without guiding, forensics or a first_sample");
 
     const auto start = std::chrono::steady_clock::now();
     PassRenderer renderer(scene, accel, options, defect);

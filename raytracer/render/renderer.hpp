@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "raytracer/accel/accel.hpp"
+#include "raytracer/render/adaptive_sampling.hpp"
 #include "raytracer/image/image.hpp"
 #include "raytracer/render/roulette.hpp"
 #include "raytracer/image/partial_sum.hpp"
@@ -50,6 +51,13 @@ struct RenderOptions {
     // Noise forensics (path_forensics.hpp): when set, every sample's contributions are recorded
     // there by path type, per 16x16 tile; the image is the same bit for bit.
     PathForensics* forensics = nullptr;
+    // Adaptive sampling (adaptive_sampling.hpp): a uniform pilot of kAdaptivePilotSpp passes, then
+    // rounds that give noisier 8x8 tiles more samples, until spp x pixels samples (or the time
+    // budget) are spent; pixel p gets samples 0..n_p-1 of its own sequence. Path integrator only,
+    // without guiding, forensics or first_sample (a farm part cannot know the rounds' allocation
+    // without the whole image of the rounds before). spp <= the pilot: the uniform render exactly.
+    bool adaptive = false;
+    AdaptiveError adaptive_error = AdaptiveError::Mse;  // where a round's samples go (adaptive_sampling.hpp)
     const std::atomic<bool>* cancel = nullptr;  // set (e.g. by SIGINT) to stop early
     // Seconds (0 = none) after which the pass in flight is dropped and the render ends; the first
     // pass always completes. Counted on budget_clock from the start of render().
@@ -65,7 +73,7 @@ struct RenderStats {
     std::uint64_t rays = 0;     // every ray traced (camera, bounce, shadow)
     bool cancelled = false;      // stopped by `cancel`
     bool budget_spent = false;   // stopped by the time budget before reaching spp
-    int completed_spp = 0;      // samples per pixel in the returned image
+    int completed_spp = 0;      // samples per pixel in the returned image (adaptive: the mean, rounded down)
     // Samples whose radiance came out NaN or infinite, counted and replaced by black so one bad
     // path cannot poison a pixel; non-zero means a bug worth reporting.
     std::uint64_t nonfinite_samples = 0;
@@ -79,9 +87,12 @@ struct RenderResult {
     // stores, and what makes a merged farm render equal to this image bit for bit.
     std::vector<PixelSum> sums;
     // Estimated variance of each pixel's mean, per channel: the unbiased sample variance of the
-    // pixel's samples divided by completed_spp (zero when completed_spp < 2). For tests whose
+    // pixel's samples divided by its sample count (zero below 2 samples). For tests whose
     // tolerances come from the noise (z-tests on pixel or block means).
     Image variance;
+    // Adaptive only: each pixel's sample count n_p (its mean is sums[i] / n_p, its variance is
+    // from its own n_p samples). Empty for a uniform render (every pixel has completed_spp).
+    std::vector<int> pixel_samples;
     RenderStats stats;
 };
 
@@ -95,7 +106,8 @@ struct RenderResult {
 // spp = completed_spp gives.
 // Throws std::invalid_argument for a film smaller than 1x1, spp < 1, max_depth < 1, threads < 0,
 // Sampling::LightTracing with the path integrator, any sampling but NeeMis with vcm, guiding with bdpt or vcm,
-// first_sample < 0 or first_sample + spp beyond INT_MAX, time_budget < 0.
+// first_sample < 0 or first_sample + spp beyond INT_MAX, time_budget < 0, adaptive with bdpt, vcm,
+// guiding, forensics or first_sample > 0.
 RenderResult render(const Scene& scene, const Accel& accel, const RenderOptions& options);
 
 }  // namespace sweeptrace
