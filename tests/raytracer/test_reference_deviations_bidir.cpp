@@ -97,7 +97,7 @@ Image vb_scaled(const VbRender& r) {
 }
 
 void vb_print(const char* what, const BlockComparison& c) {
-    std::printf("  %-44s mean %.4f %.4f %.4f, blocks |z|<3 %5.1f %% |z|<5 %5.1f %% (%zu), median block %+.2f %%\n", what,
+    std::printf("  %-52s mean %.4f %.4f %.4f, blocks |z|<3 %5.1f %% |z|<5 %5.1f %% (%zu), median block %+.2f %%\n", what,
                 c.mean_ratio.x, c.mean_ratio.y, c.mean_ratio.z, 100.0 * c.share_within_3, 100.0 * c.share_within_5, c.tested,
                 100.0 * c.median_relative_error);
 }
