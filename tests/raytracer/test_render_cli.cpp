@@ -205,7 +205,7 @@ TEST_CASE("render cli: film.exposure and tone_curve change only 8-bit output, a 
     CHECK(fs::exists(dir / "flipped.png"));
 }
 
-TEST_CASE("render cli: bdpt says that a scene's clamp_indirect and guiding are the path tracer's and not applied; path stays silent", "[render][cli][bdpt]") {
+TEST_CASE("render cli: bdpt says that a scene's clamp_indirect and guiding are the path tracer's and not applied, and path stays silent", "[render][cli][bdpt]") {
     const fs::path dir = fresh_dir("bdpt-ignored-settings");
     std::ofstream(dir / "clamped.json") << R"({
   "camera": { "position": [0, 0, 4], "look_at": [0, 0, 0], "fov": 40 },
