@@ -80,9 +80,10 @@ struct SceneRow {
     int width = 0, height = 0;
     BlockComparison blocks;
     // The replicas' block variance over the pixel-variance sum (block_variance_scale); applied to
-    // our variance when the integrator splats (bdpt), at least 1: a splat adds the same light
-    // subpath's positive contribution to neighbouring pixels, so their covariances are not
-    // negative and a measure below 1 is the replicas' own noise. Reported for every scene.
+    // our variance when the integrator splats (bdpt), as measured, and reported for every scene.
+    // It can be below 1: one light vertex's splat lands on one pixel of a block or another, never
+    // both, which correlates those pixels negatively (one subpath's several vertices landing near
+    // each other correlate them positively).
     double variance_scale = 1.0;
     bool scale_applied = false;
     std::vector<std::string> warnings, stand_ins;
@@ -256,7 +257,7 @@ SceneRow check_scene(const SceneInput& in, const ReferenceCheckArgs& a, const fs
     row.variance_scale = block_variance_scale(ours.batches, ours.variance, valid);
     row.scale_applied = scene.film.integrator == IntegratorKind::Bdpt && a.batches >= 2;
     row.blocks = compare_blocks(ours.image, ours.variance, ref.image, ref.variance, valid, 8,
-                                row.scale_applied ? std::max(1.0, row.variance_scale) : 1.0);
+                                row.scale_applied ? row.variance_scale : 1.0);
     if (!picture_dir.empty()) {
         const fs::path pic = picture_dir / (in.name + ".png");
         write_image(comparison_picture(ours.image, ref.image, valid, row.blocks), pic);

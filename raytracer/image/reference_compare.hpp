@@ -57,11 +57,11 @@ BlockComparison compare_blocks(const Image& ours, const Image& our_variance, con
                                const Image& reference_variance, const std::vector<std::uint8_t>& valid,
                                int block = 8, double our_variance_scale = 1.0);
 
-// How much larger the variance of a block mean really is than the sum of its pixels' variances
-// says, measured on independent replicas. Summing pixel variances assumes independent pixels; a
-// bidirectional render's light-tracing splats land on many pixels of one sample pass, so its
-// neighbouring pixels' errors are positively correlated and the sum understates the block's
-// variance. `batches` are K >= 2 independent renders of the same image (disjoint sample ranges of
+// The variance of a block mean over what the sum of its pixels' variances says, measured on
+// independent replicas. Summing pixel variances assumes independent pixels; a bidirectional
+// render's light-tracing splats land on many pixels of one sample pass, which correlates
+// neighbouring pixels: positively where one light subpath's vertices land near each other,
+// negatively where one vertex's splat lands on one pixel of a block or another, never both. `batches` are K >= 2 independent renders of the same image (disjoint sample ranges of
 // one render, equal sample counts), `whole_variance` the per-pixel variance of their mean (what
 // `render --variance` gives for the whole render). Per block and channel, the replicas' variance of
 // the whole mean is the sample variance of the K batch block means / K; the result is the sum of
