@@ -33,9 +33,9 @@ using namespace sweeptrace;
 
 namespace {
 
-// Tungsten's max_bounces b was written as the file's maxdepth b + 1 = 7. Tungsten's path tracer
-// then makes paths of b + 1 = 7 vertices after the camera, but its bidirectional path tracer,
-// which rendered this reference, of at most b = 6 (s + t <= b + 1 with the camera vertex counted).
+// Tungsten's max_bounces b was written as the file's maxdepth b + 1 = 7; its bidirectional path
+// tracer, which rendered this reference, makes paths of at most b = 6 vertices after the camera
+// (s + t <= b + 1 with the camera vertex counted), as its path tracer does.
 constexpr int kVbFileDepth = 7, kVbDepth = 6;
 constexpr int kVbBatches = 16;
 
@@ -125,13 +125,13 @@ TEST_CASE("reference deviations: veach-bidir: our bdpt and our path tracer agree
     for (const double m : {c.mean_ratio.x, c.mean_ratio.y, c.mean_ratio.z}) CHECK(std::abs(m - 1.0) < 0.02);
 }
 
-TEST_CASE("reference deviations: veach-bidir: Tungsten's bdpt stops one vertex earlier than its path tracer and its lamps are Beckmann", "[.][reference-deviations]") {
+TEST_CASE("reference deviations: veach-bidir: Tungsten's bdpt stops at 6 vertices after the camera and its lamps are Beckmann", "[.][reference-deviations]") {
     if (!vb_have()) return;
     // Two settings of the reference that the pbrt-v4 file does not carry, each alone not enough:
     // - depth: Tungsten's BidirectionalPathTracer::traceSample bounds every strategy by
     //   s + t <= max_bounces + 1 (s light vertices, t camera vertices, the camera's own counted),
     //   so with max_bounces 6 (the file's maxdepth 7) its longest path has 6 vertices after the
-    //   camera, where its path tracer's has 7;
+    //   camera, not the file's 7;
     // - the lamps: Tungsten's scene gives "Lamp" (the floor lamp's shade and stand, the table
     //   lamp) as rough_conductor, distribution beckmann, roughness 0.25 (its alpha); pbrt-v4's
     //   conductor is Trowbridge-Reitz (GGX) only, and the file keeps alpha 0.25 with it.
@@ -151,7 +151,7 @@ TEST_CASE("reference deviations: veach-bidir: Tungsten's bdpt stops one vertex e
     std::printf("veach-bidir, 64 px, bdpt 1024 spp against Tungsten's reference (block variance x %.2f %.2f %.2f %.2f of "
                 "the pixel sums, by %d batches)\n", v1, v2, v3, v4, kVbBatches);
     vb_print("GGX lamps (the file), depth 7 (the file's)", ggx7);
-    vb_print("GGX lamps (the file), depth 6 (Tungsten bdpt's)", ggx6);
+    vb_print("GGX lamps (the file), depth 6 (Tungsten's)", ggx6);
     vb_print("Beckmann lamps (Tungsten's), depth 7", beck7);
     vb_print("Beckmann lamps (Tungsten's), depth 6: the reference", beck6);
     const auto mean_within = [](const BlockComparison& c, double tol) {
