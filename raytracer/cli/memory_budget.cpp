@@ -1,6 +1,7 @@
 #include "raytracer/cli/memory_budget.hpp"
 
 #include "raytracer/input_error.hpp"
+#include "raytracer/render/integrators/path_vertex.hpp"
 
 namespace sweeptrace {
 
@@ -9,6 +10,10 @@ namespace {
 // Per pixel: renderer sums and sums of squares (2 x dvec3), the pass in flight, the mean and the
 // variance images (3 x vec3), the display copy (vec3) and the 8-bit RGB buffer plus its encoding.
 constexpr std::uint64_t kFilmBytesPerPixel = 2 * 24 + 3 * 12 + 12 + 2 * 3;
+// vcm keeps every pixel's light subpath of the iteration (integrators/vcm.hpp): per vertex, the
+// vertex itself, its photon (point, pixel, index) and its id in a grid cell with the table's share.
+// Counted at max_depth vertices per pixel, the most a light subpath holds.
+constexpr std::uint64_t kVcmBytesPerLightVertex = sizeof(PathVertex) + 20 + 16;
 // Per primitive of the acceleration structure (a triangle, or an analytic object at the top
 // level): BVH nodes (~2 per primitive at 32 bytes), the primitive's index and precomputed test
 // data, and the builder's temporary boxes and centroids. Rounded up: Embree's is of that order.
@@ -20,7 +25,10 @@ constexpr std::uint64_t kAccelBytesPerVertex = 24;
 
 MemoryEstimate estimate_render_memory(const Scene& scene) {
     MemoryEstimate e;
-    e.film = std::uint64_t(scene.film.width) * std::uint64_t(scene.film.height) * kFilmBytesPerPixel;
+    const std::uint64_t pixels = std::uint64_t(scene.film.width) * std::uint64_t(scene.film.height);
+    e.film = pixels * kFilmBytesPerPixel;
+    if (scene.film.integrator == IntegratorKind::Vcm)
+        e.film += pixels * std::uint64_t(scene.film.max_depth) * kVcmBytesPerLightVertex;
     std::uint64_t primitives = scene.objects.size(), vertices = 0;
     for (const Mesh& m : scene.meshes) {
         primitives += m.triangles.indices.size();

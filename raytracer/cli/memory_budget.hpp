@@ -6,7 +6,8 @@
 //
 // The estimate counts the big allocations, each per element with its size in memory_budget.cpp:
 // the film (the renderer's double-precision sums, the pass buffer, the mean and variance images,
-// the display copy and the encoded file) and the scene's acceleration structure over every
+// the display copy and the encoded file; under vcm also every pixel's light subpath) and the
+// scene's acceleration structure over every
 // object and triangle. It is an estimate of the peak, not a bound: small per-object data and
 // allocator overhead are not counted. The scene's meshes are already loaded when it is made
 // (their input files are limited in size, scene/text_file.hpp) and are not part of it.

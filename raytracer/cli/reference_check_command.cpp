@@ -80,7 +80,7 @@ struct SceneRow {
     int width = 0, height = 0;
     BlockComparison blocks;
     // The replicas' block variance over the pixel-variance sum (block_variance_scale); applied to
-    // our variance when the integrator splats (bdpt), as measured, and reported for every scene.
+    // our variance when the integrator splats (bdpt, vcm), as measured, and reported for every scene.
     // It can be below 1: one light vertex's splat lands on one pixel of a block or another, never
     // both, which correlates those pixels negatively (one subpath's several vertices landing near
     // each other correlate them positively).
@@ -186,7 +186,7 @@ RenderResult refcheck_render(const Scene& scene, int spp, int max_depth, const R
     // the variance, and the z-test would be too lenient).
     o.sampler = SamplerKind::Independent;
     o.guiding = false;
-    o.integrator = scene.film.integrator;  // pbrt's Integrator "bdpt" renders with ours
+    o.integrator = scene.film.integrator;  // pbrt's Integrator "bdpt" and "sppm" render with ours (bdpt, vcm)
     return render(scene, accel, o);
 }
 
@@ -255,7 +255,7 @@ SceneRow check_scene(const SceneInput& in, const ReferenceCheckArgs& a, const fs
         }
     }
     row.variance_scale = block_variance_scale(ours.batches, ours.variance, valid);
-    row.scale_applied = scene.film.integrator == IntegratorKind::Bdpt && a.batches >= 2;
+    row.scale_applied = scene.film.integrator != IntegratorKind::Path && a.batches >= 2;
     row.blocks = compare_blocks(ours.image, ours.variance, ref.image, ref.variance, valid, 8,
                                 row.scale_applied ? row.variance_scale : 1.0);
     if (!picture_dir.empty()) {

@@ -53,7 +53,7 @@ struct RenderArgs {
     std::string accel = "bvh";
     std::string sampler;  // empty: the scene's film.sampler
     std::string guiding;  // "on", "off" or empty: the scene's film.guiding
-    std::string integrator;  // "path", "bdpt" or empty: the scene's film.integrator
+    std::string integrator;  // "path", "bdpt", "vcm" or empty: the scene's film.integrator
     std::string time_clock = "wall";
     bool quiet = false;
     std::string samples;  // "A:B": render a farm part
@@ -191,7 +191,10 @@ int run_render(const RenderArgs& a) {
     for (const std::string& w : emitters_facing_nothing(scene)) std::fprintf(stderr, "sweeptrace: warning: %s\n", escape_control(w).c_str());
     a.limits.apply(scene);
     if (!a.sampler.empty()) scene.film.sampler = a.sampler == "independent" ? SamplerKind::Independent : SamplerKind::Sobol;
-    if (!a.integrator.empty()) scene.film.integrator = a.integrator == "bdpt" ? IntegratorKind::Bdpt : IntegratorKind::Path;
+    if (!a.integrator.empty())
+        scene.film.integrator = a.integrator == "vcm"    ? IntegratorKind::Vcm
+                                : a.integrator == "bdpt" ? IntegratorKind::Bdpt
+                                                         : IntegratorKind::Path;
     // Every file the load read (the scene's own list, read_files.hpp), before any work starts.
     std::vector<NamedInput> inputs{{"scene", scene_path}};
     for (const std::filesystem::path& f : scene.input_files) inputs.push_back({"scene's input", f});
@@ -230,7 +233,7 @@ int run_render(const RenderArgs& a) {
     // asking for both on the command line is an error.
     require(!(a.guiding == "on" && opt.integrator != IntegratorKind::Path), "--guiding on needs the path integrator");
     require(a.forensics.empty() || opt.integrator == IntegratorKind::Path,
-            "--forensics needs the path integrator: it follows a camera path's vertices, and bdpt's light paths have none of them");
+            "--forensics needs the path integrator: it follows a camera path's vertices, and the light paths of bdpt and vcm have none of them");
     opt.guiding = opt.integrator == IntegratorKind::Path && (a.guiding.empty() ? scene.film.guiding : a.guiding == "on");
     if (opt.integrator == IntegratorKind::Bdpt) {
         // The path tracer's biased firefly guard and its guide have no bdpt counterpart: say what
@@ -297,7 +300,9 @@ int run_render(const RenderArgs& a) {
         std::fprintf(stderr,
                      "%s: %dx%d, %d spp%s, %s (%s, built in %.2f s), %d thread%s: %.2f s, %s samples/s, %s rays/s -> %s\n",
                      scene_path.filename().string().c_str(), scene.film.width, scene.film.height, st.completed_spp,
-                     opt.guiding ? " guided" : opt.integrator == IntegratorKind::Bdpt ? " bdpt" : "",
+                     opt.guiding                              ? " guided"
+                     : opt.integrator != IntegratorKind::Path ? (std::string(" ") + integrator_name(opt.integrator)).c_str()
+                                                              : "",
                      accel->name().c_str(), si_text(double(accel->memory_bytes())).append("B").c_str(), build_seconds,
                      threads, threads == 1 ? "" : "s", st.seconds, si_text(double(st.samples) / secs).c_str(),
                      si_text(double(st.rays) / secs).c_str(), out.string().c_str());
@@ -345,8 +350,9 @@ void add_render_command(CLI::App& app, int& exit_code) {
                     "Path guiding (learned during the render, unbiased): on or off (default: the scene's film.guiding)")
         ->check(CLI::IsMember({"on", "off"}));
     cmd->add_option("--integrator", args->integrator,
-                    "Light transport: path (unidirectional) or bdpt (bidirectional) (default: the scene's film.integrator)")
-        ->check(CLI::IsMember({"path", "bdpt"}));
+                    "Light transport: path (unidirectional), bdpt (bidirectional) or vcm (vertex connection and merging) "
+                    "(default: the scene's film.integrator)")
+        ->check(CLI::IsMember({"path", "bdpt", "vcm"}));
     cmd->add_flag("--quiet", args->quiet, "No progress display and no summary");
     cmd->add_flag("--strict", args->strict,
                   "A .pbrt scene: refuse (exit 2) anything the translation would approximate or ignore, instead of a warning");

@@ -48,6 +48,7 @@ RenderIdentity render_identity(const Scene& scene, const std::filesystem::path& 
     id.seed = scene.seed;
     id.max_depth = scene.film.max_depth;
     id.accel = accel;
+    id.integrator = integrator_name(scene.film.integrator);
     id.version = program_version();
     id.spp = scene.film.spp;
     return id;

@@ -1,6 +1,6 @@
 #pragma once
 // What identifies a render for the farm (image/partial_image.hpp): the scene's content hash,
-// the film size, seed, depth and spp after the command line's overrides, the accelerator and
+// the film size, seed, depth, integrator and spp after the command line's overrides, the accelerator and
 // the program version.
 #include <filesystem>
 #include <string>

@@ -32,6 +32,7 @@ std::map<std::string, std::string> attributes_of(const PartialImage& p) {
             {"sweeptrace.seed", std::to_string(p.id.seed)},
             {"sweeptrace.maxDepth", std::to_string(p.id.max_depth)},
             {"sweeptrace.accel", p.id.accel},
+            {"sweeptrace.integrator", p.id.integrator},
             {"sweeptrace.version", p.id.version},
             {"sweeptrace.spp", std::to_string(p.id.spp)},
             {"sweeptrace.samples", std::to_string(p.sample_begin) + ":" + std::to_string(p.sample_end)},
@@ -141,6 +142,7 @@ PartialImage header_part(const Imf::Header& hd, const std::string& file) {
     p.id.seed = number<std::uint64_t>(attribute(hd, "sweeptrace.seed", file), "sweeptrace.seed", file);
     p.id.max_depth = static_cast<int>(number(attribute(hd, "sweeptrace.maxDepth", file), "sweeptrace.maxDepth", file));
     p.id.accel = attribute(hd, "sweeptrace.accel", file);
+    p.id.integrator = attribute(hd, "sweeptrace.integrator", file);
     p.id.version = attribute(hd, "sweeptrace.version", file);
     p.id.spp = static_cast<int>(number(attribute(hd, "sweeptrace.spp", file), "sweeptrace.spp", file));
     const std::string range = attribute(hd, "sweeptrace.samples", file);

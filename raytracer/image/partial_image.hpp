@@ -31,6 +31,7 @@ struct RenderIdentity {
     std::uint64_t seed = 0;
     int max_depth = 0;
     std::string accel;
+    std::string integrator;  // film.integrator after --integrator ("path", "bdpt", "vcm")
     std::string version;
     int spp = 0;  // the whole render's samples per pixel: the parts cover [0, spp)
 

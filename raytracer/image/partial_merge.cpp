@@ -51,6 +51,7 @@ std::string identity_difference(const RenderIdentity& a, const RenderIdentity& b
          {differs("scene hash", a.scene_hash, b.scene_hash), differs("width", a.width, b.width),
           differs("height", a.height, b.height), differs("seed", a.seed, b.seed),
           differs("max depth", a.max_depth, b.max_depth), differs("accel", a.accel, b.accel),
+          differs("integrator", a.integrator, b.integrator),
           differs("program version", a.version, b.version), differs("spp", a.spp, b.spp)})
         if (!d.empty()) return d;
     return {};

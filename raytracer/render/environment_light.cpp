@@ -1,6 +1,7 @@
 #include "raytracer/render/environment_light.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 #include <glm/geometric.hpp>
@@ -60,6 +61,35 @@ glm::vec3 equal_area_direction(float u, float v) {
     return {w.x, w.z, -w.y};
 }
 
+// The 9 real spherical harmonics of order <= 2 at unit direction d, each times the clamped cosine's
+// convolution factor A_l (pi, 2 pi / 3, pi / 4): sum_k c_k sh_k(n) is then the irradiance at
+// normal n of a map whose coefficients are c_k = int L sh_k d omega (Ramamoorthi and Hanrahan 2001).
+std::array<double, 9> sh_order2(const glm::vec3& d, bool convolved) {
+    const double x = d.x, y = d.y, z = d.z;
+    const double a0 = convolved ? kPiD : 1.0, a1 = convolved ? 2.0 * kPiD / 3.0 : 1.0, a2 = convolved ? kPiD / 4.0 : 1.0;
+    return {a0 * 0.282095,           a1 * 0.488603 * y,      a1 * 0.488603 * z,
+            a1 * 0.488603 * x,       a2 * 1.092548 * x * y,  a2 * 1.092548 * y * z,
+            a2 * 0.315392 * (3.0 * z * z - 1.0), a2 * 1.092548 * x * z, a2 * 0.546274 * (x * x - y * y)};
+}
+
+// The largest irradiance over 256 orientations spread evenly on the sphere (a Fibonacci spiral),
+// from the map's coefficients; at least the mean over all orientations, int L d omega / 4 (the
+// order-1 and order-2 terms average to zero), so positive for any map that emits.
+double max_irradiance_of(const std::array<double, 9>& coefficients, double integral) {
+    constexpr int kOrientations = 256;
+    double best = integral / 4.0;
+    for (int k = 0; k < kOrientations; ++k) {
+        const double z = 1.0 - (2.0 * k + 1.0) / kOrientations;
+        const double r = std::sqrt(std::max(0.0, 1.0 - z * z));
+        const double phi = k * kPiD * (3.0 - std::sqrt(5.0));  // the golden angle
+        const std::array<double, 9> y = sh_order2(glm::vec3(r * std::cos(phi), r * std::sin(phi), z), true);
+        double e = 0.0;
+        for (std::size_t i = 0; i < 9; ++i) e += coefficients[i] * y[i];
+        best = std::max(best, e);
+    }
+    return best;
+}
+
 int texel(float t, int n) { return std::clamp(static_cast<int>(t * static_cast<float>(n)), 0, n - 1); }
 
 }  // namespace
@@ -116,21 +146,40 @@ EnvironmentLight::EnvironmentLight(const Background& bg) : bg_(&bg) {
     const bool equal_area = is_equal_area(bg);
     const double cell = equal_area ? 4.0 * kPiD / (static_cast<double>(width_) * height_)
                                    : (2.0 * kPiD / width_) * (kPiD / height_);  // du dv -> d(phi) d(theta)
+    std::array<double, 9> coefficients{};  // int lum(L) sh_k d omega, in the map's frame
+    std::vector<float> sin_phi(static_cast<std::size_t>(width_)), cos_phi(sin_phi.size());  // equirect columns
+    for (int i = 0; i < width_; ++i) {
+        const float phi = ((i + 0.5f) / static_cast<float>(width_) - 0.5f) * 2.0f * kPi;
+        sin_phi[static_cast<std::size_t>(i)] = std::sin(phi);
+        cos_phi[static_cast<std::size_t>(i)] = std::cos(phi);
+    }
     for (int j = 0; j < height_; ++j) {
         // The row's Jacobian factor J_j: sin(theta_j) at the row's centre (equirect), 1 (equal-area).
         const double jacobian = equal_area ? 1.0 : std::sin((j + 0.5) * kPiD / height_);
+        const float v = (j + 0.5f) / static_cast<float>(height_);
+        const float sin_theta = std::sin(v * kPi), cos_theta = std::cos(v * kPi);  // equirect: the row's centre
         std::vector<float> w(static_cast<std::size_t>(width_));
         for (int i = 0; i < width_; ++i) {
             const float lum = luminance(bg.scale * img.at(i, j));
             w[static_cast<std::size_t>(i)] = static_cast<float>(lum * jacobian);
             // Equirect: the midpoint rule in theta, a stand-in used only for selection; equal-area: exact.
             integral_ += lum * jacobian * cell;
+            if (lum > 0.0f) {
+                // The texel's centre in the map's frame (the maximum over orientations does not
+                // depend on the frame).
+                const auto c = static_cast<std::size_t>(i);
+                const glm::vec3 d = equal_area ? equal_area_direction((i + 0.5f) / static_cast<float>(width_), v)
+                                               : glm::vec3(sin_theta * sin_phi[c], cos_theta, -sin_theta * cos_phi[c]);
+                const std::array<double, 9> y = sh_order2(d, false);
+                for (std::size_t k = 0; k < 9; ++k) coefficients[k] += lum * jacobian * cell * y[k];
+            }
         }
         rows_[static_cast<std::size_t>(j)].build(std::move(w));
         row_sums[static_cast<std::size_t>(j)] = static_cast<float>(rows_[static_cast<std::size_t>(j)].sum);
         total_ += rows_[static_cast<std::size_t>(j)].sum;
     }
     marginal_.build(std::move(row_sums));
+    max_irradiance_ = max_irradiance_of(coefficients, integral_);
 }
 
 bool EnvironmentLight::sample(float u1, float u2, glm::vec3& dir, float& pdf, glm::vec3& radiance) const {

@@ -64,6 +64,13 @@ public:
     bool emits() const { return total_ > 0.0; }
     // The integral of luminance over the sphere, int lum(L) d omega (scale included).
     double luminance_integral() const { return integral_; }
+    // The largest irradiance (luminance) the map gives a small disc, over the disc's orientations
+    // n: max_n int lum(L) max(0, n . omega) d omega. What a sun's E is for the sun (the disc facing
+    // it), so light selection can weigh the two alike (lights.hpp). From the map's order-2
+    // spherical harmonics (Ramamoorthi and Hanrahan 2001: within a few percent of the exact
+    // irradiance; a single bright texel gives 1.06 x its lum d omega, a uniform map pi L exactly),
+    // maximised over 256 orientations. A uniform sky gives a quarter of luminance_integral().
+    double max_irradiance() const { return max_irradiance_; }
 
     glm::vec3 radiance(const glm::vec3& dir) const { return environment_radiance(*bg_, dir); }
     // A direction from two uniforms in [0, 1), its solid-angle density and radiance; false for a
@@ -91,6 +98,7 @@ private:
     Distribution1D marginal_;           // over rows
     double total_ = 0.0;                // sum of all weights
     double integral_ = 0.0;
+    double max_irradiance_ = 0.0;
 };
 
 }  // namespace sweeptrace

@@ -23,7 +23,8 @@
 // Which light: the lights at infinity (directional lights, suns, the environment) together get
 // the share pbrt-v4's BVHLightSampler gives them, n_infinite / (n_infinite + 1) when the scene
 // also has lights at finite places (else all of it), and split it by the irradiance E each gives
-// a disc facing it (int lum(L) d omega for the environment); the finite ones (emissive objects,
+// a disc facing it (for the environment, the largest over the disc's orientations:
+// EnvironmentLight::max_irradiance); the finite ones (emissive objects,
 // points, spots) share the rest in proportion to their (estimated) power / pi: an emitter's
 // luminance of the emission times area (times 2 when two-sided, the area as the shape's home
 // states it, a stand-in for curved shapes under non-uniform scales), a point light 4 I, a spot
@@ -50,6 +51,7 @@
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
+#include "collision/bounds3.hpp"
 #include "raytracer/geometry/shapes/shape_light.hpp"
 #include "raytracer/geometry/surface_hit.hpp"
 #include "raytracer/render/environment_light.hpp"
@@ -237,5 +239,9 @@ private:
     bool emit_scene_light(const NonSurfaceLight& l, float u1, float u2, float u3, float u4, LightEmission& out) const;
     float env_probability_ = 0.0f;                 // it is the last entry of cdf_
 };
+
+// Every object's world box together (object_world_bounds; empty for a scene without objects): the
+// extent lights at infinity emit over, and what vcm's default merging radius is a fraction of.
+collision::Bounds3 scene_world_bounds(const Scene& scene);
 
 }  // namespace sweeptrace

@@ -26,6 +26,7 @@
 #include "raytracer/render/guiding_sd_tree.hpp"
 #include "raytracer/render/integrators/bdpt.hpp"
 #include "raytracer/render/integrators/path.hpp"
+#include "raytracer/render/integrators/vcm.hpp"
 #include "raytracer/render/lights.hpp"
 #include "raytracer/render/path_forensics.hpp"
 #include "raytracer/render/planted_defect.hpp"
@@ -58,7 +59,8 @@ public:
           sum_(static_cast<std::size_t>(width_) * height_),
           sum_sq_(sum_.size(), glm::dvec3(0.0)),
           pass_(sum_.size()) {
-        if (opt.integrator == IntegratorKind::Bdpt) tile_splats_.resize(static_cast<std::size_t>(tiles_x_) * tiles_y_);
+        if (opt.integrator != IntegratorKind::Path) tile_splats_.resize(static_cast<std::size_t>(tiles_x_) * tiles_y_);
+        if (opt.integrator == IntegratorKind::Vcm) vcm_.emplace(scene, lights_, bdpt_, opt.max_depth);
         if (opt.guiding) {
             tile_records_.resize(static_cast<std::size_t>(tiles_x_) * tiles_y_);
             integrator_.set_guide(&guide_);
@@ -79,6 +81,7 @@ public:
             const int tiles = tiles_x_ * tiles_y_;
             for (int s = 0; s < opt_.spp; ++s) {
                 if (stopped(s)) break;
+                if (vcm_) light_pass(tiles, opt_.first_sample + s);
                 std::atomic<bool> abandoned{false};
                 tbb::parallel_for(tbb::blocked_range<int>(0, tiles, 1), [&](const tbb::blocked_range<int>& r) {
                     for (int t = r.begin(); t < r.end(); ++t) {
@@ -182,6 +185,34 @@ private:
         if (nonfinite != 0) nonfinite_.fetch_add(nonfinite, std::memory_order_relaxed);
     }
 
+    // vcm: the iteration's light subpaths and their splats, tile by tile (any thread), then its
+    // photons into the grid, before any camera subpath of the pass.
+    void light_pass(int tiles, int sample) {
+        vcm_->begin_iteration(sample);
+        tbb::parallel_for(tbb::blocked_range<int>(0, tiles, 1), [&](const tbb::blocked_range<int>& r) {
+            for (int t = r.begin(); t < r.end(); ++t) {
+                const int x0 = (t % tiles_x_) * kTileSize, y0 = (t / tiles_x_) * kTileSize;
+                const int x1 = std::min(x0 + kTileSize, width_), y1 = std::min(y0 + kTileSize, height_);
+                std::uint64_t rays = 0;
+                std::vector<Splat>& splats = tile_splats_[static_cast<std::size_t>(t)];
+                for (int y = y0; y < y1; ++y)
+                    for (int x = x0; x < x1; ++x) {
+                        const std::size_t pixel = static_cast<std::size_t>(y) * width_ + x;
+                        PixelSampler sampler(opt_.sampler, opt_.seed, pixel, static_cast<std::uint64_t>(sample));
+                        vcm_->trace_light(pixel, sample_time(sampler), sampler, rays, splats);
+                    }
+                rays_.fetch_add(rays, std::memory_order_relaxed);
+            }
+        });
+        vcm_->build_grid();
+    }
+
+    // The sample's shutter time, drawn only with a shutter, so still scenes take exactly the
+    // numbers they did.
+    float sample_time(PixelSampler& sampler) const {
+        return camera_.has_shutter() ? camera_.shutter_fraction(sampler.get1d(sample_dim::kTime)) : 0.0f;
+    }
+
     // Training on the pass just finished: tiles merged in tile order, so the guide the next pass
     // reads is the same for any thread count.
     void learn(int completed_passes) {
@@ -214,12 +245,12 @@ private:
                 const glm::vec2 lens = sampler.get2d(sample_dim::kLens);
                 const float fx = static_cast<float>(x) + film.dx;
                 const float fy = static_cast<float>(y) + film.dy;
-                // Drawn only with a shutter, so still scenes take exactly the numbers they did.
-                const float time = camera_.has_shutter() ? camera_.shutter_fraction(sampler.get1d(sample_dim::kTime)) : 0.0f;
+                const float time = sample_time(sampler);
                 if (tally != nullptr) tally->begin();
-                glm::vec3 l = film.weight * limited(bdpt ? bdpt_.sample(fx, fy, lens, time, sampler, rays, *splats)
-                                                         : integrator_.radiance(camera_.generate(fx, fy, lens.x, lens.y),
-                                                                                sampler, rays, records, time, tally));
+                glm::vec3 l = film.weight * limited(vcm_    ? vcm_->sample(pixel, fx, fy, lens, time, sampler, rays)
+                                                    : bdpt ? bdpt_.sample(fx, fy, lens, time, sampler, rays, *splats)
+                                                           : integrator_.radiance(camera_.generate(fx, fy, lens.x, lens.y),
+                                                                                  sampler, rays, records, time, tally));
                 if (!collision::finite(l)) {
                     l = glm::vec3(0.0f);
                     ++nonfinite;
@@ -248,7 +279,8 @@ private:
     CameraModel camera_;
     PathIntegrator integrator_;
     BdptIntegrator bdpt_;
-    std::vector<std::vector<Splat>> tile_splats_;  // bdpt: the pass in flight's light-tracing splats, per tile
+    std::optional<VcmIntegrator> vcm_;  // vcm only: it drives bdpt_ per iteration
+    std::vector<std::vector<Splat>> tile_splats_;  // bdpt, vcm: the pass in flight's light-tracing splats, per tile
     std::vector<PixelSum> sum_;     // per-pixel exact sum over completed passes
     std::vector<glm::dvec3> sum_sq_;  // per-pixel sum of squares, for the variance
     std::vector<glm::vec3> pass_;   // the pass in flight
@@ -275,6 +307,8 @@ RenderResult render_with_planted_defect(const Scene& scene, const Accel& accel, 
     if (options.threads < 0) throw std::invalid_argument("render: threads must be >= 0");
     if (options.first_sample < 0 || options.first_sample > std::numeric_limits<int>::max() - options.spp)
         throw std::invalid_argument("render: first_sample must be >= 0 and first_sample + spp fit in an int");
+    if (options.sampling != Sampling::NeeMis && options.integrator == IntegratorKind::Vcm)
+        throw std::invalid_argument("render: vcm has no sampling variants (light tracing alone is bdpt's)");
     if (options.sampling == Sampling::LightTracing && options.integrator != IntegratorKind::Bdpt)
         throw std::invalid_argument("render: light tracing alone is a bdpt strategy");
     if (options.guiding && options.integrator != IntegratorKind::Path)

@@ -94,7 +94,7 @@ struct RenderResult {
 // A time budget ends the render the same way (after at least one pass): the image is the one
 // spp = completed_spp gives.
 // Throws std::invalid_argument for a film smaller than 1x1, spp < 1, max_depth < 1, threads < 0,
-// Sampling::LightTracing with the path integrator, guiding with bdpt,
+// Sampling::LightTracing with the path integrator, any sampling but NeeMis with vcm, guiding with bdpt or vcm,
 // first_sample < 0 or first_sample + spp beyond INT_MAX, time_budget < 0.
 RenderResult render(const Scene& scene, const Accel& accel, const RenderOptions& options);
 

@@ -17,11 +17,7 @@ namespace {
 // The sphere around the world bounds of every object (meshes by their vertices' box), of radius
 // at least 1 so that a scene of points still gives a directional light a weight.
 float scene_radius(const Scene& scene, glm::vec3& centre) {
-    collision::Bounds3 world;
-    for (const Object& obj : scene.objects) {
-        const collision::Bounds3 box = object_world_bounds(obj, scene.meshes);
-        if (!box.empty()) world.extend(box);
-    }
+    const collision::Bounds3 world = scene_world_bounds(scene);
     centre = glm::vec3(0.0f);
     if (world.empty()) return 1.0f;
     centre = 0.5f * (world.lo + world.hi);
@@ -79,7 +75,7 @@ void LightSet::add_scene_lights(const Scene& scene, std::vector<float>& weights)
     if (scene.background.kind == Background::Kind::Environment && scene.background.environment) {
         auto env = std::make_shared<const EnvironmentLight>(scene.background);
         if (radius < 0.0f) radius = bounds_radius_ = scene_radius(scene, bounds_centre_);
-        const float weight = static_cast<float>(env->luminance_integral());  // its E, as above
+        const float weight = static_cast<float>(env->max_irradiance());  // its E, as above
         if (env->emits() && weight > 0.0f && std::isfinite(weight)) {
             env_ = std::move(env);
             weights.push_back(weight);
@@ -208,6 +204,15 @@ glm::vec3 LightSet::emission_toward(std::uint32_t light, const glm::vec3& point,
     if (sl.type == SceneLight::Type::Point) return sl.intensity;
     if (sl.type == SceneLight::Type::Spot) return sl.intensity * spot_falloff(sl, glm::dot(dir, sl.direction));
     return glm::vec3(0.0f);
+}
+
+collision::Bounds3 scene_world_bounds(const Scene& scene) {
+    collision::Bounds3 world;
+    for (const Object& obj : scene.objects) {
+        const collision::Bounds3 box = object_world_bounds(obj, scene.meshes);
+        if (!box.empty()) world.extend(box);
+    }
+    return world;
 }
 
 }  // namespace sweeptrace

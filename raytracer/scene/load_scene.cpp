@@ -78,7 +78,7 @@ int read_film_setting(const Node& node, FilmSetting setting) {
 
 Film read_film(const Node& node) {
     node.require_object({"width", "height", "spp", "max_depth", "sampler", "guiding", "exposure", "tone_curve", "filter",
-                         "clamp_indirect", "clamp_sample", "integrator"});
+                         "clamp_indirect", "clamp_sample", "integrator", "vcm_radius"});
     Film film;
     film.width = read_film_setting(node.at("width"), FilmSetting::Width);
     film.height = read_film_setting(node.at("height"), FilmSetting::Height);
@@ -95,8 +95,10 @@ Film read_film(const Node& node) {
         const std::string name = integrator->string();
         if (name == "path") film.integrator = IntegratorKind::Path;
         else if (name == "bdpt") film.integrator = IntegratorKind::Bdpt;
-        else integrator->fail("unknown integrator \"" + name + "\" (known: path, bdpt)");
+        else if (name == "vcm") film.integrator = IntegratorKind::Vcm;
+        else integrator->fail("unknown integrator \"" + name + "\" (known: path, bdpt, vcm)");
     }
+    if (auto radius = node.find("vcm_radius")) film.vcm_radius = radius->number_at_least(0.0f, false);
     if (auto clamp = node.find("clamp_indirect")) film.clamp_indirect = clamp->number_at_least(0.0f, false);
     if (auto clamp = node.find("clamp_sample")) film.clamp_sample = clamp->number_at_least(0.0f, false);
     read_film_display(node, film);

@@ -43,8 +43,13 @@ struct Camera {
 enum class SamplerKind { Independent, Sobol };
 
 // Which light transport method renders the film (render/integrators/): the unidirectional path
-// tracer (the default), or bidirectional path tracing (Veach 1997, ch. 10).
-enum class IntegratorKind { Path, Bdpt };
+// tracer (the default), bidirectional path tracing (Veach 1997, ch. 10), or vertex connection and
+// merging (Georgiev et al. 2012: bdpt plus photon merging at camera vertices).
+enum class IntegratorKind { Path, Bdpt, Vcm };
+// Its name in the scene file and on the command line.
+inline const char* integrator_name(IntegratorKind k) {
+    return k == IntegratorKind::Vcm ? "vcm" : k == IntegratorKind::Bdpt ? "bdpt" : "path";
+}
 
 // The curve that takes exposed linear radiance to [0, 1] for 8-bit output (render/tone_map.hpp).
 enum class ToneCurve { Clamp, Aces };
@@ -67,6 +72,9 @@ struct Film {
     SamplerKind sampler = SamplerKind::Sobol;
     bool guiding = false;  // path guiding by default (render --guiding overrides)
     IntegratorKind integrator = IntegratorKind::Path;  // scene key "integrator" (render --integrator overrides)
+    // vcm's merging radius of the first iteration, world units (scene key "vcm_radius"); 0 = the
+    // default, a fraction of the scene's extent (render/integrators/vcm.hpp says which and why).
+    float vcm_radius = 0.0f;
     float exposure = 0.0f;  // stops: 8-bit output shows radiance x 2^exposure (linear outputs untouched)
     ToneCurve tone_curve = ToneCurve::Clamp;
     FilterSpec filter;  // box of radius 0.5: each sample uniform in its pixel

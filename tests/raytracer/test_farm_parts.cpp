@@ -31,6 +31,7 @@ RenderIdentity identity() {
     id.seed = 42;
     id.max_depth = 8;
     id.accel = "bvh";
+    id.integrator = "vcm";
     id.version = "test";
     id.spp = kSpp;
     return id;
@@ -181,6 +182,10 @@ TEST_CASE("farm: the merge names a different render, an overlap and a gap", "[fa
     other.id.accel = "embree";
     CHECK(merge_error({part(0, 4), other}, {"a.exr", "b.exr"}) ==
           "'b.exr' is not a part of the same render as 'a.exr': accel 'bvh' vs 'embree'");
+    other = part(4, 12);
+    other.id.integrator = "bdpt";
+    CHECK(merge_error({part(0, 4), other}, {"a.exr", "b.exr"}) ==
+          "'b.exr' is not a part of the same render as 'a.exr': integrator 'vcm' vs 'bdpt'");
     other = part(4, 12);
     other.id.scene_hash = "ffffffffffffffff";
     CHECK_THAT(merge_error({part(0, 4), other}, {"a.exr", "b.exr"}), Catch::Contains("scene hash"));

@@ -8,7 +8,9 @@
 // They say SKIPPED and pass without ../shared/bitterli.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -48,6 +50,13 @@ Scene load(const std::string& scene, int width) {
 Material& material(Scene& s, const std::string& name) {
     for (Material& m : s.materials)
         if (m.name == name) return m;
+    FAIL("no material " << name);
+    throw;
+}
+
+std::uint32_t material_index(const Scene& s, const std::string& name) {
+    for (std::uint32_t i = 0; i < s.materials.size(); ++i)
+        if (s.materials[i].name == name) return i;
     FAIL("no material " << name);
     throw;
 }
@@ -266,4 +275,98 @@ TEST_CASE("reference deviations: classroom rebuilt z-up, its sky under Rotate an
     print("image mean", r);
     std::filesystem::remove_all(dir);
     CHECK(within(r, 0.01));
+}
+
+TEST_CASE("reference deviations: kitchen's blinds are Tungsten's transparency, alpha 0.612 over a lambert", "[.][reference-deviations]") {
+    if (!have("kitchen")) return;
+    // The scene's Tungsten form (111116/toyray-scenes, kitchen/scene.json, commit 0e1de82c) gives
+    // the blinds "transparency" with alpha 0.612066 over a lambert of albedo (0.612, 0.4995,
+    // 0.3787): a hit is the lambert with probability alpha and otherwise passes straight through,
+    // unchanged (neutral). The pbrt-v4 file has diffusetransmission 0.3/0.25/0.2 instead, and
+    // pbrt-v4 has no such material. We have no stochastic transparency either, so the experiment
+    // mixes two renders, alpha x (blinds an opaque lambert) + (1 - alpha) x (blinds removed):
+    // exact for light that meets the blinds once (the camera's view of the blinds lit from
+    // behind), only approximate for light that crosses them more than once.
+    Scene s = load("kitchen", 160);
+    const Image ref = reference("kitchen", s.film.width, s.film.height);
+    // The blinds as the camera sees them, over the window (image fractions at 160 x 90).
+    auto blinds = [&](const Image& im) { return ratio(im, ref, 0.625, 0.111, 0.875, 0.222); };
+    const Image as_file = render_small(s, 64, s.film.max_depth);
+    Material& m = material(s, "Blinds");
+    m.transmittance = glm::vec3(0.0f);
+    m.albedo = glm::vec3(0.6120656f, 0.4995053f, 0.3786763f);
+    const Image opaque = render_small(s, 64, s.film.max_depth);
+    Scene open = s;
+    const std::uint32_t index = material_index(open, "Blinds");
+    std::erase_if(open.objects, [&](const Object& o) { return o.material == index; });
+    const Image gone = render_small(open, 64, s.film.max_depth);
+    const float alpha = 0.612066f;
+    Image mix(ref.width, ref.height);
+    for (int y = 0; y < ref.height; ++y)
+        for (int x = 0; x < ref.width; ++x) mix.at(x, y) = alpha * opaque.at(x, y) + (1.0f - alpha) * gone.at(x, y);
+    std::printf("kitchen, 160 px, 64 spp: ours / reference, r g b\n");
+    print("the blinds, as the pbrt-v4 file says (diffusetransmission)", blinds(as_file));
+    print("the blinds, an opaque lambert (Tungsten's base alone)", blinds(opaque));
+    print("the blinds, removed", blinds(gone));
+    print("the blinds, alpha x lambert + (1 - alpha) x removed", blinds(mix));
+    print("image mean, as the file says", ratio(as_file, ref));
+    print("image mean, the mix (light crossing the blinds twice: approximate)", ratio(mix, ref));
+    CHECK(blinds(as_file).y < 0.7);
+    CHECK(within(blinds(mix), 0.15));
+}
+
+TEST_CASE("reference deviations: coffee's silver handle is Tungsten's mirror of albedo 1, the pot's band is light trapped by its silver ring", "[.][reference-deviations]") {
+    if (!have("coffee")) return;
+    // The scene's Tungsten form (111116/toyray-scenes, coffee/scene.json, commit 9e68a8d8) gives
+    // "Metal" as "mirror", albedo 1: no Fresnel term at all, where the pbrt-v4 file has pbrt's
+    // silver conductor (normal reflectance about 0.95, bluer loss). Its plastics are smooth
+    // ("plastic"; the file's coateddiffuse roughness 0.001), which changes nothing measurable.
+    // Depth: Tungsten's max_bounces 16 is our 16 (see reference-deviations.md: its path tracer
+    // counts every surface hit, the light's included, as ours does).
+    Scene s = load("coffee", 200);
+    const Image ref = reference("coffee", s.film.width, s.film.height);
+    // The handle (the silver bar left of the pot) and the bright band in the glass just above
+    // the pot's silver ring (image fractions at 200 x 250).
+    auto handle = [&](const Image& im) { return ratio(im, ref, 0.20, 0.36, 0.25, 0.80); };
+    auto band = [&](const Image& im) { return ratio(im, ref, 0.30, 0.72, 0.70, 0.76); };
+    const Image as_file = render_small(s, 128, 16);
+    Material& metal = material(s, "Metal");
+    metal = Material{};
+    metal.name = "Metal";
+    metal.type = Material::Type::Metal;
+    metal.roughness = 0.0f;
+    metal.albedo = glm::vec3(1.0f);
+    const Image mirror = render_small(s, 128, 16);
+    std::printf("coffee, 200 px, 128 spp, depth 16: ours / reference, r g b\n");
+    print("the handle, silver conductor (the pbrt-v4 file)", handle(as_file));
+    print("the handle, mirror of albedo 1 (Tungsten's form)", handle(mirror));
+    print("image mean, silver conductor", ratio(as_file, ref));
+    print("image mean, mirror of albedo 1", ratio(mirror, ref));
+    CHECK(handle(as_file).z < 0.96);
+    CHECK(within(handle(mirror), 0.02));
+    // The band: the ring (models/Mesh015.ply) is an open silver channel, its outer wall and two
+    // annuli closed only by the glass, so light that enters it is trapped between mirror and glass
+    // and leaves late: the band keeps brightening with the path depth long after the rest of the
+    // image has converged, and without the ring it converges. The reference holds what our paths
+    // of about 11 vertices do; why Tungsten loses the trapped light sooner is not known.
+    std::printf("the band above the pot's ring (mirror of albedo 1) by our path depth:\n");
+    const Image d9 = render_small(s, 128, 9), d13 = render_small(s, 128, 13), d25 = render_small(s, 128, 25);
+    print("depth 9", band(d9));
+    print("depth 13", band(d13));
+    print("depth 16 (Tungsten's max_bounces 16)", band(mirror));
+    print("depth 25", band(d25));
+    print("image mean, depth 25 / depth 16", ratio(d25, mirror));
+    Scene ringless = s;
+    const std::uint32_t index = material_index(ringless, "Metal");
+    // The file's two silver shapes, in its order: the ring (Mesh015.ply), then the handle.
+    const auto ring = std::find_if(ringless.objects.begin(), ringless.objects.end(), [&](const Object& o) { return o.material == index; });
+    REQUIRE(ring != ringless.objects.end());
+    ringless.objects.erase(ring);
+    const Image r13 = render_small(ringless, 128, 13), r25 = render_small(ringless, 128, 25);
+    print("without the ring, depth 13", band(r13));
+    print("without the ring, depth 25", band(r25));
+    CHECK(band(mirror).y > 1.3);
+    CHECK(band(d9).y < 1.0);
+    CHECK(band(d25).y > band(mirror).y + 0.15);
+    CHECK(std::fabs(band(r25).y - band(r13).y) < 0.06);
 }

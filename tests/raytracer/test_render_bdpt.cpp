@@ -2,7 +2,7 @@
 // image (block z-test) on shipped scenes, and a planted wrong MIS weight does not; light tracing
 // alone (t = 1) matches the closed form of a small Lambertian emitter over a diffuse plane; the
 // MIS weights sum to 1 over the strategies of random paths; the image is the same bit for bit on
-// 1 and 3 threads and split into farm parts; the emission and camera densities are the ones
+// 1, 2 and 3 threads and split into farm parts; the emission and camera densities are the ones
 // sampled with.
 #include <catch2/catch.hpp>
 
@@ -12,7 +12,9 @@
 
 #include <glm/geometric.hpp>
 
+#include "bidirectional_test_support.hpp"
 #include "convergence_harness.hpp"
+#include "random_mis_path.hpp"
 #include "raytracer/render/camera.hpp"
 #include "raytracer/render/integrators/bdpt_mis.hpp"
 #include "raytracer/render/lights.hpp"
@@ -23,41 +25,6 @@ using namespace sweeptrace;
 using namespace sweeptrace::testing;
 
 namespace {
-
-Scene shipped(const char* name, int width, int height) {
-    Scene s = load_scene(std::filesystem::path(SWEEPTRACE_SOURCE_DIR) / "scenes" / name);
-    s.film.width = width;
-    s.film.height = height;
-    // The path tracer's firefly guard is biased on purpose and bdpt does not apply it: both
-    // estimate the unclamped image here.
-    s.film.clamp_indirect = 0.0f;
-    return s;
-}
-
-RenderResult render_as(const Scene& scene, const Accel& accel, IntegratorKind integrator, int spp, std::uint64_t seed,
-                       PlantedDefect defect = PlantedDefect::None, int threads = 0, int first_sample = 0,
-                       Sampling sampling = Sampling::NeeMis) {
-    RenderOptions o;
-    o.integrator = integrator;
-    o.spp = spp;
-    o.first_sample = first_sample;
-    o.max_depth = scene.film.max_depth;
-    o.seed = seed;
-    o.threads = threads;
-    o.sampling = sampling;
-    return render_with_planted_defect(scene, accel, o, defect);
-}
-
-// bdpt against an independent path-traced render: both noisy, so the null variance is the path
-// render's and the reference's noise is counted as large again (2 max(Va, Vb) >= Va + Vb).
-BlockTestResult against_path(const RenderResult& path, const RenderResult& bdpt, int block) {
-    BlockTestOptions options;
-    options.block = block;
-    options.golden_is_8bit = false;
-    options.reference_noise_ratio = 1.0;
-    options.null_variance = &path.variance;
-    return block_test(path.image, bdpt.image, bdpt.variance, options);
-}
 
 // 128 spp of bdpt against 256 of path, 4x4 blocks; returns the path render.
 RenderResult check_converges_to_path(const Scene& scene, const Accel& accel) {
@@ -151,36 +118,15 @@ TEST_CASE("bdpt: light tracing alone matches the closed form of a small emitter 
     CHECK_FALSE(test_against_truth(brighter, r, 4, 1e-4, nullptr).pass());
 }
 
-// Random paths: densities log-uniform over four decades, delta vertices where a subpath would
-// put them (with the densities next to them 0, as the walks store them), the light hittable or
-// not. Over the possible strategies the weights sum to 1; leaving next event estimation out of the
-// sums (the planted defect) makes them sum to more wherever it was possible.
+// Random paths (random_mis_path.hpp): over the possible strategies the weights sum to 1; leaving
+// next event estimation out of the sums (the planted defect) makes them sum to more wherever it
+// was possible.
 TEST_CASE("bdpt: MIS weights sum to 1 over the strategies of random paths, and a planted wrong weight does not",
           "[bdpt][mis]") {
     std::mt19937 rng(12345);
-    std::uniform_real_distribution<float> decade(-2.0f, 2.0f);
-    std::uniform_real_distribution<float> unit(0.0f, 1.0f);
     int planted_over = 0, tested = 0;
     for (int n = 0; n < 2000; ++n) {
-        MisPath p;
-        p.k = 1 + static_cast<int>(unit(rng) * 8.0f);
-        const auto size = static_cast<std::size_t>(p.k + 1);
-        p.fwd.resize(size);
-        p.rev.resize(size);
-        p.delta.assign(size, 0);
-        for (std::size_t i = 0; i < size; ++i) {
-            p.fwd[i] = std::pow(10.0f, decade(rng));
-            p.rev[i] = std::pow(10.0f, decade(rng));
-        }
-        for (int i = 1; i < p.k; ++i)
-            if (unit(rng) < 0.25f) {
-                p.delta[static_cast<std::size_t>(i)] = 1;
-                p.fwd[static_cast<std::size_t>(i + 1)] = 0.0f;
-                p.rev[static_cast<std::size_t>(i - 1)] = 0.0f;
-            }
-        p.nee0 = std::pow(10.0f, decade(rng));
-        p.light_hittable = unit(rng) < 0.7f;
-        p.light_to_camera = unit(rng) < 0.7f;
+        const MisPath p = random_mis_path(rng);
         double sum = 0.0, planted = 0.0;
         int possible = 0;
         for (int s = 0; s <= p.k; ++s) {
@@ -201,35 +147,10 @@ TEST_CASE("bdpt: MIS weights sum to 1 over the strategies of random paths, and a
     CHECK(planted_over > 200);
 }
 
-TEST_CASE("bdpt: the same image bit for bit on 1 and 3 threads, and split into farm parts", "[bdpt][determinism]") {
-    Scene scene = shipped("default.json", 24, 14);
-    // Every kind of light at once: the scene's sphere, a point, a spot, a sun.
-    SceneLight point;
-    point.type = SceneLight::Type::Point;
-    point.position = {1.0f, 2.0f, 2.0f};
-    point.intensity = glm::vec3(3.0f);
-    SceneLight spot = point;
-    spot.type = SceneLight::Type::Spot;
-    spot.direction = glm::normalize(glm::vec3(0.0f, -1.0f, -0.5f));
-    spot.cos_cone = std::cos(0.5f);
-    spot.cos_falloff_start = std::cos(0.3f);
-    SceneLight sun;
-    sun.type = SceneLight::Type::Directional;
-    sun.direction = glm::normalize(glm::vec3(0.3f, -1.0f, -0.2f));
-    sun.irradiance = glm::vec3(1.0f);
-    sun.half_angle = 0.05f;
-    scene.lights = {point, spot, sun};
-    scene.film.max_depth = 5;
+TEST_CASE("bdpt: the same image bit for bit on 1, 2 and 3 threads, and split into farm parts", "[bdpt][determinism]") {
+    const Scene scene = every_light_scene();
     const auto accel = make_accel(AccelKind::Bvh, scene);
-    const RenderResult one = render_as(scene, *accel, IntegratorKind::Bdpt, 3, 9, PlantedDefect::None, 1);
-    const RenderResult three = render_as(scene, *accel, IntegratorKind::Bdpt, 3, 9, PlantedDefect::None, 3);
-    CHECK(same_bits(one.image, three.image));
-    CHECK(one.sums == three.sums);
-    const RenderResult a = render_as(scene, *accel, IntegratorKind::Bdpt, 1, 9, PlantedDefect::None, 2, 0);
-    const RenderResult b = render_as(scene, *accel, IntegratorKind::Bdpt, 2, 9, PlantedDefect::None, 2, 1);
-    std::vector<PixelSum> merged = a.sums;
-    for (std::size_t i = 0; i < merged.size(); ++i) merged[i] += b.sums[i];
-    CHECK(merged == one.sums);
+    const RenderResult one = check_bit_identical(scene, *accel, IntegratorKind::Bdpt);
     // Not trivially equal: the light subpaths' splats reach the image.
     const RenderResult path = render_as(scene, *accel, IntegratorKind::Path, 3, 9, PlantedDefect::None, 1);
     CHECK_FALSE(same_bits(path.image, one.image));

@@ -1,6 +1,6 @@
 // Choosing the light transport method: film.integrator in our JSON (default path, unknown names
-// refused with the key's path), and pbrt's Integrator "bdpt" mapped to ours with its maxdepth,
-// without a warning.
+// refused with the key's path), and pbrt's Integrator "bdpt" and "sppm" mapped to ours (bdpt,
+// vcm with sppm's radius) with their maxdepth, without a warning.
 #include <catch2/catch.hpp>
 
 #include "pbrt_test_support.hpp"
@@ -20,16 +20,21 @@ std::string scene_with_film(const std::string& film_extra) {
 
 }  // namespace
 
-TEST_CASE("film.integrator: path by default, bdpt on request, anything else refused", "[scene][bdpt]") {
+TEST_CASE("film.integrator: path by default, bdpt or vcm on request, anything else refused", "[scene][bdpt]") {
     const TempDir dir;
     CHECK(load_scene(dir.write("a.json", scene_with_film(""))).film.integrator == IntegratorKind::Path);
     CHECK(load_scene(dir.write("b.json", scene_with_film(R"(, "integrator": "path")"))).film.integrator ==
           IntegratorKind::Path);
     CHECK(load_scene(dir.write("c.json", scene_with_film(R"(, "integrator": "bdpt")"))).film.integrator ==
           IntegratorKind::Bdpt);
-    const std::string e = load_error(dir, scene_with_film(R"(, "integrator": "vcm")"));
+    const Scene v = load_scene(dir.write("d.json", scene_with_film(R"(, "integrator": "vcm", "vcm_radius": 0.25)")));
+    CHECK(v.film.integrator == IntegratorKind::Vcm);
+    CHECK(v.film.vcm_radius == 0.25f);
+    CHECK(load_scene(dir.write("e.json", scene_with_film(""))).film.vcm_radius == 0.0f);  // the default
+    CHECK(load_error(dir, scene_with_film(R"(, "vcm_radius": 0)")).find("film.vcm_radius") != std::string::npos);
+    const std::string e = load_error(dir, scene_with_film(R"(, "integrator": "sppm")"));
     CHECK(e.find("film.integrator") != std::string::npos);
-    CHECK(e.find("unknown integrator \"vcm\" (known: path, bdpt)") != std::string::npos);
+    CHECK(e.find("unknown integrator \"sppm\" (known: path, bdpt, vcm)") != std::string::npos);
     CHECK(load_error(dir, scene_with_film(R"(, "integrator": 3)")).find("film.integrator") != std::string::npos);
 }
 
@@ -41,4 +46,22 @@ TEST_CASE("pbrt Integrator \"bdpt\" becomes film.integrator bdpt with its maxdep
     CHECK(c.doc["film"]["max_depth"] == 4);
     const auto p = convert_text(dir, "Integrator \"path\" \"integer maxdepth\" 3\nWorldBegin\n");
     CHECK_FALSE(p.doc["film"].contains("integrator"));  // the default, as before
+}
+
+TEST_CASE("pbrt Integrator \"sppm\" becomes film.integrator vcm with its radius and maxdepth, without a warning",
+          "[pbrt][vcm]") {
+    const TempDir dir;
+    const auto c = convert_text(dir, "Integrator \"sppm\" \"integer maxdepth\" 4 \"float radius\" 0.05\nWorldBegin\n");
+    CHECK(c.warnings.empty());
+    CHECK(c.doc["film"]["integrator"] == "vcm");
+    CHECK(c.doc["film"]["vcm_radius"] == Approx(0.05));
+    CHECK(c.doc["film"]["max_depth"] == 5);
+    // pbrt's default radius is 1, stated rather than left to our scene-relative default.
+    const auto d = convert_text(dir, "Integrator \"sppm\"\nWorldBegin\n");
+    CHECK(d.warnings.empty());
+    CHECK(d.doc["film"]["vcm_radius"] == Approx(1.0));
+    // mlt still has no counterpart: its warning names what is lost.
+    const auto m = convert_text(dir, "Integrator \"mlt\"\nWorldBegin\n");
+    REQUIRE(m.warnings.size() == 1);
+    CHECK(m.warnings[0].find("sppm") != std::string::npos);
 }

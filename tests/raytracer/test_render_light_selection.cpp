@@ -7,6 +7,7 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <memory>
 #include <vector>
 
 #include "bsdf_chi_square.hpp"
@@ -61,9 +62,9 @@ TEST_CASE("light selection: lights at infinity share a fixed part by irradiance,
         REQUIRE(lights.light_name(2) == "sun");
         REQUIRE(lights.light_name(3) == "environment");
         // Two lights at infinity and a finite group: 2/3 split as the sun's E (2) to the map's
-        // int lum(L) d omega; the quads split 1/3 as 1 : 6.
+        // largest irradiance on a disc; the quads split 1/3 as 1 : 6.
         const EnvironmentLight env(scene.background);
-        const double e_env = env.luminance_integral();
+        const double e_env = env.max_irradiance();
         const std::vector<double> expected{1.0 / 21.0, 6.0 / 21.0, 2.0 / 3.0 * 2.0 / (2.0 + e_env),
                                            2.0 / 3.0 * e_env / (2.0 + e_env)};
         CHECK(lights.selection_probability(dim) == Approx(expected[0]));
@@ -120,7 +121,7 @@ TEST_CASE("light selection: with only lights at infinity they split all of it by
     sun.irradiance = glm::vec3(5.0f);
     only_far.lights.push_back(sun);
     const LightSet a(only_far);
-    const double e_env = EnvironmentLight(only_far.background).luminance_integral();
+    const double e_env = EnvironmentLight(only_far.background).max_irradiance();
     const double p_sun = 5.0 / (5.0 + e_env);
     Rng rng(3, 0, 0);
     int picked_sun = 0;
@@ -132,6 +133,44 @@ TEST_CASE("light selection: with only lights at infinity they split all of it by
         if (ls.light == 0) REQUIRE(ls.pdf == Approx(p_sun));  // a delta direction: pdf = selection probability
     }
     CHECK(std::abs(picked_sun - n * p_sun) < 4.0 * std::sqrt(n * p_sun * (1.0 - p_sun)));
+}
+
+TEST_CASE("light selection: a map's weight is its largest irradiance on a disc, as a sun's is its E", "[render][lights]") {
+    // Exact values: a uniform map of luminance 1 gives pi to a disc facing any way (a quarter of
+    // its int L d omega = 4 pi); the upper half alone gives pi to a disc facing up; one bright
+    // texel gives its lum d omega to a disc facing it (the order-2 harmonics: 1.06x, at an
+    // orientation within a few degrees of it).
+    using Mapping = Background::EnvironmentMapping;
+    const double kTestPi = 3.14159265358979323846;
+    for (const Mapping mapping : {Mapping::Equirect, Mapping::EqualArea}) {
+        const bool equal_area = mapping == Mapping::EqualArea;
+        INFO("equal-area " << equal_area);
+        const int w = 64, h = equal_area ? 64 : 32;
+        auto uniform = std::make_shared<Image>(w, h), upper = std::make_shared<Image>(w, h), texel = std::make_shared<Image>(w, h);
+        for (int j = 0; j < h; ++j)
+            for (int i = 0; i < w; ++i) {
+                uniform->at(i, j) = glm::vec3(1.0f);
+                texel->at(i, j) = glm::vec3(0.0f);
+            }
+        texel->at(w / 3, h / 5) = glm::vec3(500.0f);
+        // (EnvironmentLight keeps a pointer to its Background: each is a named variable.)
+        const Background uniform_bg = env_background(uniform, 30.0f, 1.0f, mapping);
+        const EnvironmentLight u(uniform_bg);
+        CHECK(u.luminance_integral() == Approx(4.0 * kTestPi).epsilon(2e-3));
+        CHECK(u.max_irradiance() == Approx(kTestPi).epsilon(2e-3));
+        const Background texel_bg = env_background(texel, 0.0f, 1.0f, mapping);
+        const EnvironmentLight t(texel_bg);
+        CHECK(t.max_irradiance() / t.luminance_integral() > 0.97);
+        CHECK(t.max_irradiance() / t.luminance_integral() < 1.07);
+        if (!equal_area) {
+            // The upper half (rows above the equirect map's equator, y > 0): pi to a disc facing up.
+            for (int j = 0; j < h; ++j)
+                for (int i = 0; i < w; ++i) upper->at(i, j) = glm::vec3(j < h / 2 ? 1.0f : 0.0f);
+            const Background upper_bg = env_background(upper, 0.0f, 1.0f, mapping);
+            const EnvironmentLight half(upper_bg);
+            CHECK(half.max_irradiance() == Approx(kTestPi).epsilon(1e-2));
+        }
+    }
 }
 
 TEST_CASE("light selection: NEE+MIS and BSDF-only agree under a quad, a sun and a map together", "[render][lights][mis]") {

@@ -7,6 +7,7 @@
 
 #include "raytracer/render/bsdf.hpp"
 #include "raytracer/render/integrators/path.hpp"
+#include "raytracer/render/integrators/vcm_mis.hpp"
 #include "raytracer/render/sampling.hpp"
 #include "raytracer/render/texture.hpp"
 
@@ -86,6 +87,7 @@ bool BdptIntegrator::blocked(const collision::Ray& ray, float time) const {
 
 float BdptIntegrator::weight(const MisPath& path, int s) const {
     if (light_tracing_only_) return 1.0f;
+    if (merge_eta_ > 0.0f) return vcm_mis_weight(path, s, false, merge_eta_, defect_ == PlantedDefect::VcmDropsMerges);
     return bdpt_mis_weight(path, s, defect_ == PlantedDefect::BdptDropsNee);
 }
 
@@ -101,6 +103,15 @@ glm::vec3 BdptIntegrator::sample(float x, float y, const glm::vec2& lens, float 
     }
     camera_walk(x, y, lens, time, sampler, rays, sp, l);
     light_walk(time, sampler, rays, sp);
+    l += connections(sp, time, sampler, rays);
+    const int nl = static_cast<int>(sp.light.size());
+    for (int s = 1; s <= nl && s <= max_depth_; ++s) light_to_camera(sp, s, time, sampler, rays, splats);
+    return l;
+}
+
+// Every strategy with t >= 2: emitters found (s = 0), next event estimation (s = 1), connections.
+glm::vec3 BdptIntegrator::connections(Subpaths& sp, float time, PixelSampler& sampler, std::uint64_t& rays) const {
+    glm::vec3 l(0.0f);
     const int nc = static_cast<int>(sp.cam.size()), nl = static_cast<int>(sp.light.size());
     for (int t = 2; t <= nc; ++t) {
         const int j = t - 1;
@@ -109,7 +120,27 @@ glm::vec3 BdptIntegrator::sample(float x, float y, const glm::vec2& lens, float 
         if (j + 1 <= max_depth_) l += next_event(sp, j, time, sampler, rays);
         for (int s = 2; s <= nl && s + t - 1 <= max_depth_; ++s) l += connect(sp, s, t, time, rays);
     }
+    return l;
+}
+
+void BdptIntegrator::light_subpath(float time, PixelSampler& sampler, std::uint64_t& rays, std::vector<PathVertex>& light,
+                                   std::vector<Splat>& splats) const {
+    thread_local Subpaths sp;
+    light_walk(time, sampler, rays, sp);
+    const int nl = static_cast<int>(sp.light.size());
     for (int s = 1; s <= nl && s <= max_depth_; ++s) light_to_camera(sp, s, time, sampler, rays, splats);
+    light.assign(sp.light.begin(), sp.light.end());
+}
+
+glm::vec3 BdptIntegrator::camera_subpath(float x, float y, const glm::vec2& lens, float time, PixelSampler& sampler,
+                                         std::uint64_t& rays, const std::vector<PathVertex>& light,
+                                         std::vector<PathVertex>& cam) const {
+    thread_local Subpaths sp;
+    glm::vec3 l(0.0f);
+    camera_walk(x, y, lens, time, sampler, rays, sp, l);
+    sp.light.assign(light.begin(), light.end());
+    l += connections(sp, time, sampler, rays);
+    std::swap(cam, sp.cam);
     return l;
 }
 

@@ -53,11 +53,24 @@ public:
     glm::vec3 sample(float x, float y, const glm::vec2& lens, float time, PixelSampler& sampler, std::uint64_t& rays,
                      std::vector<Splat>& splats) const;
 
+    // The two halves of sample(), drawing the same numbers, for vcm.cpp, which traces every light
+    // subpath of an iteration before any camera subpath: the light subpath (into `light`) with its
+    // t = 1 splats, and the camera subpath (into `cam`) joined to a given light subpath by every
+    // strategy with t >= 2, returning what sample() returns.
+    void light_subpath(float time, PixelSampler& sampler, std::uint64_t& rays, std::vector<PathVertex>& light,
+                       std::vector<Splat>& splats) const;
+    glm::vec3 camera_subpath(float x, float y, const glm::vec2& lens, float time, PixelSampler& sampler,
+                             std::uint64_t& rays, const std::vector<PathVertex>& light, std::vector<PathVertex>& cam) const;
+    // VCM's merging density eta = pi r^2 N (vcm_mis.hpp): > 0 puts the merges into every strategy's
+    // weight; 0 (the default) gives bdpt's. Set between passes, never during one.
+    void set_merge_density(float eta) { merge_eta_ = eta; }
+
 private:
     struct Subpaths;
     void camera_walk(float x, float y, const glm::vec2& lens, float time, PixelSampler& sampler, std::uint64_t& rays,
                      Subpaths& sp, glm::vec3& escaped) const;
     void light_walk(float time, PixelSampler& sampler, std::uint64_t& rays, Subpaths& sp) const;
+    glm::vec3 connections(Subpaths& sp, float time, PixelSampler& sampler, std::uint64_t& rays) const;
     glm::vec3 escaped_radiance(const Subpaths& sp, const glm::vec3& dir, const glm::vec3& beta, float pdf) const;
     glm::vec3 emitter_hit(Subpaths& sp, int j) const;
     glm::vec3 next_event(Subpaths& sp, int j, float time, PixelSampler& sampler, std::uint64_t& rays) const;
@@ -77,6 +90,7 @@ private:
     PlantedDefect defect_;
     RoulettePolicy roulette_;
     bool light_tracing_only_;  // Sampling::LightTracing: t = 1 alone, at full weight
+    float merge_eta_ = 0.0f;
     bool moving_ = false;
     int width_, height_;
     float filter_radius_;

@@ -37,4 +37,9 @@ struct MisPath {
 // tests: the next event strategy (s = 1) left out of the sum, so the weights no longer sum to 1.
 float bdpt_mis_weight(const MisPath& path, int s, bool drop_nee = false);
 
+// The two steps of that weight, for vcm_mis.cpp, which adds merging to the same sums: whether
+// strategy i exists for `path`, and p_{i+1} / p_i (delta densities counted as 1), 0 <= i < k.
+bool bdpt_strategy_possible(const MisPath& path, int i);
+float bdpt_density_ratio(const MisPath& path, int i);
+
 }  // namespace sweeptrace

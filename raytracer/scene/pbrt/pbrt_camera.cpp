@@ -36,18 +36,20 @@ long long clamped(Diagnostics& d, const Where& at, const std::string& what, long
 }
 
 // What we render in place of pbrt-v4's integrators; empty for "path" and "volpath" (our path
-// tracer) and "bdpt" (our bidirectional one, film.integrator "bdpt"). The other light-tracing
-// methods (mlt, sppm, lightpath) reach paths our unidirectional path tracer cannot: light that
+// tracer), "bdpt" (our bidirectional one, film.integrator "bdpt") and "sppm" (our vertex
+// connection and merging, film.integrator "vcm": its merges are progressive photon mapping with
+// the same radius schedule, its connections add what sppm leaves to noise, and it converges to
+// the same image). The other light-tracing methods (mlt, lightpath) reach paths our unidirectional path tracer cannot: light that
 // leaves a small source, passes a specular surface and lands on a diffuse one (a caustic) is found
 // only when a camera path happens to hit the source after the specular bounce, so it stays black
 // or extremely noisy; a delta light can never be hit at all, so light from pbrt's distant, point,
 // spot, goniometric or projection light arriving through or off a specular surface is missing,
 // whatever the spp. Saying "the same image with other noise" hid both.
 std::string integrator_warning(const std::string& type) {
-    if (type == "path" || type == "volpath" || type == "bdpt") return {};
-    if (type == "mlt" || type == "sppm" || type == "lightpath")
-        return " is not supported: our unidirectional path tracer renders instead (Integrator \"bdpt\" would select our "
-               "bidirectional one, which reaches these paths), and converges to the same image only "
+    if (type == "path" || type == "volpath" || type == "bdpt" || type == "sppm") return {};
+    if (type == "mlt" || type == "lightpath")
+        return " is not supported: our unidirectional path tracer renders instead (Integrator \"bdpt\" or \"sppm\" would "
+               "select our bidirectional ones, which reach these paths), and converges to the same image only "
                "where light reaches a diffuse surface without passing a specular one (mirror, smooth glass or metal) "
                "first: caustics from small lights through or off specular surfaces stay black or extremely noisy "
                "at any spp, and light from a delta light (\"distant\", \"point\", \"spot\", \"goniometric\", "
@@ -177,6 +179,18 @@ void write_camera_and_film(WorldContext& w, std::string& film_filename) {
         const ParamList& p = s.params;
         const std::string what = "Integrator \"" + excerpt(s.type) + "\"";
         if (s.type == "bdpt") film["integrator"] = "bdpt";
+        if (s.type == "sppm") {
+            film["integrator"] = "vcm";
+            // pbrt's initial search radius (default 1), our first iteration's; the photon count
+            // per iteration and the iteration count are the render's: one light subpath per pixel
+            // per sample (spp), which changes the noise, not the converged image.
+            const double radius = p.get_float("radius", 1.0, d);
+            if (radius > 0.0 && std::isfinite(radius)) film["vcm_radius"] = radius;
+            else d.warn(s.where, "sppm radius", what + ": \"radius\" " + std::to_string(radius) + " is not > 0: our default used");
+            p.find("photonsperiteration");
+            p.find("iterations");
+            p.find("seed");
+        }
         if (const std::string why = integrator_warning(s.type); !why.empty())
             d.warn(s.where, "integrator " + s.type, what + why);
         depth = p.get_int("maxdepth", 5, d);

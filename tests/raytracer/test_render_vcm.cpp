@@ -1,0 +1,139 @@
+// Vertex connection and merging (render/integrators/vcm.hpp): it converges to the path tracer's
+// image (block z-test) on shipped scenes; its MIS weights sum to 1 over the connections and
+// merges of random paths and a planted wrong weight does not; the radius follows the progressive
+// schedule; the image is the same bit for bit on 1 and 3 threads and split into farm parts
+// (iteration i is sample index i, its radius and light pass depend on nothing else).
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <random>
+
+#include "bidirectional_test_support.hpp"
+#include "convergence_harness.hpp"
+#include "random_mis_path.hpp"
+#include "raytracer/render/integrators/vcm.hpp"
+#include "raytracer/render/integrators/vcm_mis.hpp"
+#include "raytracer/render/planted_defect.hpp"
+
+using namespace sweeptrace;
+using namespace sweeptrace::testing;
+
+namespace {
+
+// r against the reference by the block z-test (against_path): it must pass (`agrees`) or fail.
+void vcm_expect(const RenderResult& reference, const RenderResult& r, int block, bool agrees) {
+    const BlockTestResult t = against_path(reference, r, block);
+    INFO(t.summary());
+    CHECK(t.pass() == agrees);
+}
+
+}  // namespace
+
+TEST_CASE("vcm: converges to the path tracer's image on cornell-box and default", "[vcm][convergence]") {
+    for (const auto& [name, w, h] : {std::tuple{"cornell-box.json", 24, 24}, std::tuple{"default.json", 32, 18}}) {
+        INFO(name);
+        const Scene scene = shipped(name, w, h);
+        const auto accel = make_accel(AccelKind::Bvh, scene);
+        const RenderResult path = render_as(scene, *accel, IntegratorKind::Path, 256, 1);
+        const RenderResult vcm = render_as(scene, *accel, IntegratorKind::Vcm, 128, 2);
+        vcm_expect(path, vcm, 4, true);
+        CHECK(vcm.stats.nonfinite_samples == 0);
+    }
+}
+
+// Random paths as bdpt's MIS test draws them (random_mis_path.hpp), with a merging density eta
+// over four decades: over the connection strategies and the merges, the weights sum to 1; leaving
+// the merges out of the connections' sums (the planted defect) makes them sum to more wherever a
+// merge counted.
+TEST_CASE("vcm: MIS weights sum to 1 over connections and merges of random paths, and a planted wrong weight does not",
+          "[vcm][mis]") {
+    std::mt19937 rng(4242);
+    std::uniform_real_distribution<float> decade(-2.0f, 2.0f);
+    int planted_over = 0, tested = 0, merged = 0;
+    for (int n = 0; n < 2000; ++n) {
+        const MisPath p = random_mis_path(rng);
+        const float eta = std::pow(10.0f, decade(rng));
+        double sum = 0.0, planted = 0.0, merges = 0.0;
+        int possible = 0;
+        for (int s = 0; s <= p.k; ++s) {
+            for (const bool merge : {false, true}) {
+                const float w = vcm_mis_weight(p, s, merge, eta);
+                REQUIRE(w >= 0.0f);
+                REQUIRE(w <= 1.0f + 1e-6f);
+                possible += w > 0.0f ? 1 : 0;
+                sum += w;
+                if (merge) merges += w;
+                planted += vcm_mis_weight(p, s, merge, eta, true);
+            }
+            // Without merging, the weights are bdpt's.
+            CHECK(vcm_mis_weight(p, s, false, 0.0f) == Approx(bdpt_mis_weight(p, s)).epsilon(1e-5));
+            CHECK(vcm_mis_weight(p, s, true, 0.0f) == 0.0f);
+        }
+        INFO("path " << n << ", k " << p.k << ", eta " << eta);
+        if (possible == 0) continue;
+        ++tested;
+        CHECK(sum == Approx(1.0).epsilon(1e-5));
+        merged += merges > 1e-3 ? 1 : 0;
+        if (merges > 1e-3 && merges < 1.0 - 1e-3) planted_over += planted > 1.0 + 1e-4 ? 1 : 0;
+    }
+    CHECK(tested > 1000);
+    CHECK(merged > 300);
+    CHECK(planted_over > 200);
+}
+
+TEST_CASE("vcm: the radius follows r_i = r_1 i^((alpha - 1) / 2), r_1 a fraction of the scene or film.vcm_radius",
+          "[vcm]") {
+    Scene scene = shipped("cornell-box.json", 8, 8);
+    const LightSet lights(scene);
+    const CameraModel camera(scene.camera, 8, 8);
+    const auto accel = make_accel(AccelKind::Bvh, scene);
+    BdptIntegrator bdpt(scene, *accel, lights, camera, 5, PlantedDefect::None);
+    const collision::Bounds3 world = scene_world_bounds(scene);
+    const float r1 = VcmIntegrator::kDefaultRadiusFraction * 0.5f * glm::length(world.hi - world.lo);
+    CHECK(VcmIntegrator::first_radius(scene) == Approx(r1));
+    const VcmIntegrator vcm(scene, lights, bdpt, 5);
+    CHECK(vcm.radius(0) == Approx(r1));
+    CHECK(vcm.radius(9) == Approx(r1 * std::pow(10.0f, -0.125f)));
+    CHECK(vcm.radius(99) == Approx(r1 * std::pow(100.0f, -0.125f)));
+    scene.film.vcm_radius = 0.5f;
+    CHECK(VcmIntegrator::first_radius(scene) == 0.5f);
+}
+
+TEST_CASE("vcm: the same image bit for bit on 1, 2 and 3 threads, and split into farm parts, with every kind of light", "[vcm][determinism]") {
+    const Scene scene = every_light_scene();
+    const auto accel = make_accel(AccelKind::Bvh, scene);
+    const RenderResult one = check_bit_identical(scene, *accel, IntegratorKind::Vcm);
+    // Not trivially equal: the merges reach the image (bdpt draws the same numbers for the rest).
+    const RenderResult bdpt = render_as(scene, *accel, IntegratorKind::Bdpt, 3, 9, PlantedDefect::None, 1);
+    CHECK_FALSE(same_bits(bdpt.image, one.image));
+}
+
+// scenes/caustic.json's floor under the water is lit through two refractions: light tracing and
+// merging are its only techniques there. Seen from close by, looking down at it (no specular
+// surface in view: what bdpt renders without light it cannot find), with a radius above the
+// pixel footprint, merging carries most of the weight, so vcm must agree with bdpt, and leaving the
+// merges out of the connections' weights (the planted defect) counts the caustic up to twice.
+TEST_CASE("vcm: the caustic agrees with bdpt's, and a planted wrong weight does not", "[vcm][convergence]") {
+    Scene scene = shipped("caustic.json", 32, 20);
+    scene.camera.position = {0.0f, 0.4f, -0.3f};
+    scene.camera.look_at = {0.0f, 0.0f, 0.3f};
+    scene.film.vcm_radius = 0.02f;
+    const auto accel = make_accel(AccelKind::Bvh, scene);
+    const RenderResult bdpt = render_as(scene, *accel, IntegratorKind::Bdpt, 1024, 1);
+    vcm_expect(bdpt, render_as(scene, *accel, IntegratorKind::Vcm, 512, 2), 8, true);
+    vcm_expect(bdpt, render_as(scene, *accel, IntegratorKind::Vcm, 512, 2, PlantedDefect::VcmDropsMerges), 8, false);
+}
+
+// Under motion blur a photon carries its own pixel's shutter time, so merging is off (vcm.hpp):
+// what is left are bdpt's connections with bdpt's weights, drawing bdpt's numbers, so the image
+// is bdpt's bit for bit. This also shows vcm's connections are bdpt's, merging aside.
+TEST_CASE("vcm: with a moving object under an open shutter, merging is off and the image is bdpt's", "[vcm]") {
+    Scene scene = shipped("motion.json", 24, 16);
+    REQUIRE(scene.camera.shutter);
+    scene.film.max_depth = 5;
+    const auto accel = make_accel(AccelKind::Bvh, scene);
+    const RenderResult vcm = render_as(scene, *accel, IntegratorKind::Vcm, 2, 3);
+    const RenderResult bdpt = render_as(scene, *accel, IntegratorKind::Bdpt, 2, 3);
+    CHECK(same_bits(vcm.image, bdpt.image));
+    CHECK(vcm.sums == bdpt.sums);
+}
