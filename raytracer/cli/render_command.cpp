@@ -235,16 +235,17 @@ int run_render(const RenderArgs& a) {
     require(a.forensics.empty() || opt.integrator == IntegratorKind::Path,
             "--forensics needs the path integrator: it follows a camera path's vertices, and the light paths of bdpt and vcm have none of them");
     opt.guiding = opt.integrator == IntegratorKind::Path && (a.guiding.empty() ? scene.film.guiding : a.guiding == "on");
-    if (opt.integrator == IntegratorKind::Bdpt) {
-        // The path tracer's biased firefly guard and its guide have no bdpt counterpart: say what
-        // the scene asked for and is not getting, so a brighter or noisier image is no surprise.
+    if (opt.integrator != IntegratorKind::Path) {
+        // The path tracer's biased firefly guard and its guide have no bdpt or vcm counterpart: say
+        // what the scene asked for and is not getting, so a brighter or noisier image is no surprise.
+        const char* name = opt.integrator == IntegratorKind::Vcm ? "vcm" : "bdpt";
         if (scene.film.clamp_indirect > 0.0f)
-            std::fprintf(stderr, "sweeptrace: warning: %s: film.clamp_indirect %g is the path tracer's; bdpt ignores it "
+            std::fprintf(stderr, "sweeptrace: warning: %s: film.clamp_indirect %g is the path tracer's; %s ignores it "
                                  "(its image is the unclamped one)\n",
-                         escape_control(scene_path.filename().string()).c_str(), double(scene.film.clamp_indirect));
+                         escape_control(scene_path.filename().string()).c_str(), double(scene.film.clamp_indirect), name);
         if (scene.film.guiding && a.guiding.empty())
-            std::fprintf(stderr, "sweeptrace: warning: %s: film.guiding is the path tracer's; bdpt renders unguided\n",
-                         escape_control(scene_path.filename().string()).c_str());
+            std::fprintf(stderr, "sweeptrace: warning: %s: film.guiding is the path tracer's; %s renders unguided\n",
+                         escape_control(scene_path.filename().string()).c_str(), name);
     }
     if (!a.samples.empty()) {
         // A part must be exactly the samples [A, B) a whole render draws: a time budget would cut
