@@ -54,6 +54,9 @@ struct ReferenceCheckArgs {
     int downsample = 4;
     int width = 0;  // > 0: the downsample factor is the reference's width / this
     int spp = 1024;
+    // Independent sample ranges, for the block variance of splatting integrators; 0: the largest
+    // K <= 16 that divides spp with at least 2 samples per batch.
+    int batches = 0;
     int mask_spp = 16;
     std::vector<std::string> max_depths;  // "N" for every scene or "NAME=N" for one; default the scene's
     int threads = 0;
@@ -76,6 +79,13 @@ struct SceneRow {
     std::string name;
     int width = 0, height = 0;
     BlockComparison blocks;
+    // The replicas' block variance over the pixel-variance sum (block_variance_scale); applied to
+    // our variance when the integrator splats (bdpt, vcm), as measured, and reported for every scene.
+    // It can be below 1: one light vertex's splat lands on one pixel of a block or another, never
+    // both, which correlates those pixels negatively (one subpath's several vertices landing near
+    // each other correlate them positively).
+    double variance_scale = 1.0;
+    bool scale_applied = false;
     std::vector<std::string> warnings, stand_ins;
     double cpu_seconds = 0.0, wall_seconds = 0.0;
     std::string picture;  // relative to the table's folder
@@ -161,10 +171,14 @@ void refcheck_require_folder(const std::string& path, const char* what) {
                          "' does not exist");
 }
 
-RenderResult refcheck_render(const Scene& scene, int spp, int max_depth, const ReferenceCheckArgs& a) {
-    const std::unique_ptr<Accel> accel = make_accel(AccelKind::Bvh, scene);
+RenderResult refcheck_render(const Scene& scene, int spp, int max_depth, const ReferenceCheckArgs& a,
+                             const Accel* shared_accel = nullptr, int first_sample = 0) {
+    std::unique_ptr<Accel> own;
+    if (!shared_accel) own = make_accel(AccelKind::Bvh, scene);
+    const Accel& accel = shared_accel ? *shared_accel : *own;
     RenderOptions o;
     o.spp = spp;
+    o.first_sample = first_sample;
     o.max_depth = max_depth;
     o.threads = a.threads;
     o.seed = a.seed;
@@ -173,7 +187,39 @@ RenderResult refcheck_render(const Scene& scene, int spp, int max_depth, const R
     o.sampler = SamplerKind::Independent;
     o.guiding = false;
     o.integrator = scene.film.integrator;  // pbrt's Integrator "bdpt" and "sppm" render with ours (bdpt, vcm)
-    return render(scene, *accel, o);
+    return render(scene, accel, o);
+}
+
+// Our render as `batches` disjoint sample ranges of the one render (the same samples as a single
+// render of `spp`): their mean and its per-pixel variance, and each batch's image for the
+// replicas' block variance. A bidirectional render's splats correlate neighbouring pixels, so the
+// sum of pixel variances understates a block's; independent batches measure it.
+struct BatchedRender {
+    Image image, variance;
+    std::vector<Image> batches;
+};
+
+BatchedRender refcheck_batched(const Scene& scene, int max_depth, const ReferenceCheckArgs& a) {
+    const std::unique_ptr<Accel> accel = make_accel(AccelKind::Bvh, scene);
+    const int k = a.batches, per = a.spp / a.batches;
+    BatchedRender out;
+    const int w = scene.film.width, h = scene.film.height;
+    std::vector<glm::dvec3> mean(static_cast<std::size_t>(w) * h), var(mean.size());
+    for (int b = 0; b < k; ++b) {
+        RenderResult r = refcheck_render(scene, per, max_depth, a, accel.get(), b * per);
+        for (std::size_t i = 0; i < mean.size(); ++i) {
+            mean[i] += glm::dvec3(r.image.pixels[i]) / double(k);
+            var[i] += glm::dvec3(r.variance.pixels[i]) / double(k) / double(k);
+        }
+        out.batches.push_back(std::move(r.image));
+    }
+    out.image = Image(w, h);
+    out.variance = Image(w, h);
+    for (std::size_t i = 0; i < mean.size(); ++i) {
+        out.image.pixels[i] = glm::vec3(mean[i]);
+        out.variance.pixels[i] = glm::vec3(var[i]);
+    }
+    return out;
 }
 
 SceneRow check_scene(const SceneInput& in, const ReferenceCheckArgs& a, const fs::path& picture_dir,
@@ -191,7 +237,7 @@ SceneRow check_scene(const SceneInput& in, const ReferenceCheckArgs& a, const fs
     // pixel, blurs little next to it).
     if (a.filter == "box") scene.film.filter = FilterSpec{};
     const int depth = in.max_depth > 0 ? in.max_depth : scene.film.max_depth;
-    const RenderResult ours = refcheck_render(scene, a.spp, depth, a);
+    const BatchedRender ours = refcheck_batched(scene, depth, a);
 
     std::vector<std::uint8_t> valid = ref.valid;
     std::vector<fs::path> named;
@@ -208,7 +254,10 @@ SceneRow check_scene(const SceneInput& in, const ReferenceCheckArgs& a, const fs
             if (std::max({m.x, m.y, m.z}) > 0.02f) valid[i] = 0;
         }
     }
-    row.blocks = compare_blocks(ours.image, ours.variance, ref.image, ref.variance, valid);
+    row.variance_scale = block_variance_scale(ours.batches, ours.variance, valid);
+    row.scale_applied = scene.film.integrator != IntegratorKind::Path && a.batches >= 2;
+    row.blocks = compare_blocks(ours.image, ours.variance, ref.image, ref.variance, valid, 8,
+                                row.scale_applied ? row.variance_scale : 1.0);
     if (!picture_dir.empty()) {
         const fs::path pic = picture_dir / (in.name + ".png");
         write_image(comparison_picture(ours.image, ref.image, valid, row.blocks), pic);
@@ -228,11 +277,11 @@ std::string share_text(double share) {
 std::string row_text(const SceneRow& r, int spp) {
     char t[600];
     const glm::dvec3& m = r.blocks.mean_ratio;
-    std::snprintf(t, sizeof t, "| %s | %dx%d | %d | %.4f %.4f %.4f | %s | %s | %+.2f %% | %s | %zu | %.0f (%.0f) | %s |", r.name.c_str(),
-                  r.width, r.height, spp, m.x, m.y, m.z, share_text(r.blocks.share_within_3).c_str(),
-                  share_text(r.blocks.share_within_5).c_str(), 100.0 * r.blocks.median_relative_error,
-                  share_text(1.0 - r.blocks.valid_share).c_str(), r.warnings.size(), r.cpu_seconds, r.wall_seconds,
-                  r.matches() ? "yes" : "**no**");
+    std::snprintf(t, sizeof t, "| %s | %dx%d | %d | %.4f %.4f %.4f | %s | %s | %+.2f %% | %.2f%s | %s | %zu | %.0f (%.0f) | %s |",
+                  r.name.c_str(), r.width, r.height, spp, m.x, m.y, m.z, share_text(r.blocks.share_within_3).c_str(),
+                  share_text(r.blocks.share_within_5).c_str(), 100.0 * r.blocks.median_relative_error, r.variance_scale,
+                  r.scale_applied ? " (applied)" : "", share_text(1.0 - r.blocks.valid_share).c_str(), r.warnings.size(),
+                  r.cpu_seconds, r.wall_seconds, r.matches() ? "yes" : "**no**");
     std::string s = t;
     if (!r.picture.empty()) s += " [picture](" + r.picture + ") |";
     return s;
@@ -243,7 +292,7 @@ std::string command_line(const ReferenceCheckArgs& a) {
     std::string c = "sweeptrace reference-check " + a.folder;
     for (const std::string& s : a.scenes) c += " --scene " + s;
     c += a.width > 0 ? " --width " + std::to_string(a.width) : " --downsample " + std::to_string(a.downsample);
-    c += " --spp " + std::to_string(a.spp) + " --mask-spp " + std::to_string(a.mask_spp) + " --seed " + std::to_string(a.seed);
+    c += " --spp " + std::to_string(a.spp) + " --batches " + std::to_string(a.batches) + " --mask-spp " + std::to_string(a.mask_spp) + " --seed " + std::to_string(a.seed);
     for (const std::string& d : a.max_depths) c += " --max-depth " + d;
     if (a.filter != "box") c += " --filter " + a.filter;
     for (const std::string& s : a.stand_ins) c += " --stand-in " + s;
@@ -259,9 +308,9 @@ std::string table_block(const std::vector<SceneRow>& rows, const ReferenceCheckA
     std::string t = std::string(kTableBegin) + "\n";
     t += "Generated " + std::string(date) + " by sweeptrace " + program_version() + " (" + std::to_string(int(cores)) +
          " threads):\n\n```\n" + command_line(a) + "\n```\n\n";
-    t += "| scene | size | spp | mean ratio R G B | blocks \\|z\\| < 3 | \\|z\\| < 5 | median block error | masked | "
-         "importer warnings | CPU s (wall s) | matches | |\n";
-    t += "|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+    t += "| scene | size | spp | mean ratio R G B | blocks \\|z\\| < 3 | \\|z\\| < 5 | median block error | "
+         "block variance / pixel sum | masked | importer warnings | CPU s (wall s) | matches | |\n";
+    t += "|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
     for (const SceneRow& r : rows) t += row_text(r, a.spp) + "\n";
     t += "\nStand-ins masked and the importer's warnings, per scene:\n\n";
     for (const SceneRow& r : rows) {
@@ -301,6 +350,13 @@ int run_reference_check(ReferenceCheckArgs a) {
     if (a.width > 0 && a.downsample_opt->count())
         throw InputError("reference-check: give --width or --downsample, not both");
     if (a.filter != "box" && a.filter != "scene") throw InputError("reference-check: --filter is box or scene, got '" + a.filter + "'");
+    if (a.batches == 0)
+        for (int k = 16; k >= 1 && a.batches == 0; --k)
+            if (a.spp % k == 0 && (a.spp / k >= 2 || k == 1)) a.batches = k;
+    if (a.spp % a.batches != 0 || a.spp / a.batches < 2)
+        throw InputError("reference-check: --spp " + std::to_string(a.spp) + " is not a multiple of --batches " +
+                         std::to_string(a.batches) + " with at least 2 samples per batch (the batches split the "
+                         "render's samples equally, and each needs its own variance)");
     if (!a.table.empty()) {
         refcheck_require_folder(a.table, "--table");
         if (fs::path(a.table).extension() != ".md") throw InputError("reference-check: --table '" + a.table + "': write a .md file");
@@ -320,9 +376,11 @@ int run_reference_check(ReferenceCheckArgs a) {
         const SceneRow& r = rows.back();
         const glm::dvec3& m = r.blocks.mean_ratio;
         std::printf("%s %dx%d %d spp: mean ratio %.4f %.4f %.4f, blocks |z|<3 %s |z|<5 %s (%zu tested), median block "
-                    "error %+.2f %%, masked %s, %zu importer warnings, %.1f s CPU %.1f s wall: %s\n",
+                    "error %+.2f %%, block variance %.2f x the pixel sum%s, masked %s, %zu importer warnings, %.1f s CPU "
+                    "%.1f s wall: %s\n",
                     r.name.c_str(), r.width, r.height, a.spp, m.x, m.y, m.z, share_text(r.blocks.share_within_3).c_str(),
                     share_text(r.blocks.share_within_5).c_str(), r.blocks.tested, 100.0 * r.blocks.median_relative_error,
+                    r.variance_scale, r.scale_applied ? " (applied)" : "",
                     share_text(1.0 - r.blocks.valid_share).c_str(), r.warnings.size(), r.cpu_seconds, r.wall_seconds,
                     r.matches() ? "matches" : "DOES NOT MATCH");
         std::fflush(stdout);
@@ -357,6 +415,11 @@ void add_reference_check_command(CLI::App& app, int& exit_code) {
         ->check(CLI::Range(8, 16384));
     cmd->add_option("--spp", args->spp, "Samples per pixel (independent sampler: exact variance)")->capture_default_str()
         ->check(CLI::Range(2, 1 << 20));
+    cmd->add_option("--batches", args->batches,
+                    "Split the render's samples into K equal independent batches; their spread measures each "
+                    "block's variance, which splatting integrators (bdpt) correlate across pixels (1: off; default: "
+                    "the largest K <= 16 dividing --spp with 2 samples per batch)")
+        ->check(CLI::Range(1, 1024));
     cmd->add_option("--mask-spp", args->mask_spp, "Samples per pixel of the stand-in mask")->capture_default_str()
         ->check(CLI::Range(1, 4096));
     cmd->add_option("--max-depth", args->max_depths,

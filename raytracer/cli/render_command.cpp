@@ -251,6 +251,18 @@ int run_render(const RenderArgs& a) {
                               "learns from whole passes over the image");
         require(a.forensics.empty(), "--adaptive on cannot be combined with --forensics: the report is per pass over the image");
     }
+    if (opt.integrator != IntegratorKind::Path) {
+        // The path tracer's biased firefly guard and its guide have no bdpt or vcm counterpart: say
+        // what the scene asked for and is not getting, so a brighter or noisier image is no surprise.
+        const char* name = opt.integrator == IntegratorKind::Vcm ? "vcm" : "bdpt";
+        if (scene.film.clamp_indirect > 0.0f)
+            std::fprintf(stderr, "sweeptrace: warning: %s: film.clamp_indirect %g is the path tracer's; %s ignores it "
+                                 "(its image is the unclamped one)\n",
+                         escape_control(scene_path.filename().string()).c_str(), double(scene.film.clamp_indirect), name);
+        if (scene.film.guiding && a.guiding.empty())
+            std::fprintf(stderr, "sweeptrace: warning: %s: film.guiding is the path tracer's; %s renders unguided\n",
+                         escape_control(scene_path.filename().string()).c_str(), name);
+    }
     if (!a.samples.empty()) {
         // A part must be exactly the samples [A, B) a whole render draws: a time budget would cut
         // it short, and a guided sample depends on the guide trained on every pass before it.

@@ -65,7 +65,8 @@ DownsampledReference downsample_reference(const Image& reference, int factor) {
 }
 
 BlockComparison compare_blocks(const Image& ours, const Image& our_variance, const Image& reference,
-                               const Image& reference_variance, const std::vector<std::uint8_t>& valid, int block) {
+                               const Image& reference_variance, const std::vector<std::uint8_t>& valid, int block,
+                               double our_variance_scale) {
     BlockComparison r;
     r.block = block;
     r.blocks_x = (ours.width + block - 1) / block;
@@ -88,7 +89,7 @@ BlockComparison compare_blocks(const Image& ours, const Image& our_variance, con
                     if (!valid[i]) continue;
                     o += glm::dvec3(ours.pixels[i]);
                     f += glm::dvec3(reference.pixels[i]);
-                    var += glm::dvec3(our_variance.pixels[i]) + glm::dvec3(reference_variance.pixels[i]);
+                    var += our_variance_scale * glm::dvec3(our_variance.pixels[i]) + glm::dvec3(reference_variance.pixels[i]);
                     ++n;
                 }
             sum_ours += o;
@@ -127,6 +128,38 @@ BlockComparison compare_blocks(const Image& ours, const Image& our_variance, con
     }
     r.valid_share = ours.pixels.empty() ? 0.0 : double(n_valid) / double(ours.pixels.size());
     return r;
+}
+
+double block_variance_scale(const std::vector<Image>& batches, const Image& whole_variance,
+                            const std::vector<std::uint8_t>& valid, int block) {
+    const std::size_t k = batches.size();
+    if (k < 2) return 1.0;
+    const int w = whole_variance.width, h = whole_variance.height;
+    double replicas = 0.0, pixels = 0.0;
+    std::vector<glm::dvec3> sums(k);
+    for (int by = 0; by * block < h; ++by)
+        for (int bx = 0; bx * block < w; ++bx) {
+            std::fill(sums.begin(), sums.end(), glm::dvec3(0.0));
+            glm::dvec3 var(0.0);
+            int n = 0;
+            for (int y = by * block; y < std::min(h, (by + 1) * block); ++y)
+                for (int x = bx * block; x < std::min(w, (bx + 1) * block); ++x) {
+                    const std::size_t i = static_cast<std::size_t>(y) * w + x;
+                    if (!valid[i]) continue;
+                    for (std::size_t b = 0; b < k; ++b) sums[b] += glm::dvec3(batches[b].pixels[i]);
+                    var += glm::dvec3(whole_variance.pixels[i]);
+                    ++n;
+                }
+            if (2 * n < block * block) continue;  // the blocks compare_blocks tests
+            glm::dvec3 mean(0.0);
+            for (const glm::dvec3& v : sums) mean += v / double(k);
+            glm::dvec3 spread(0.0);
+            for (const glm::dvec3& v : sums) spread += (v - mean) * (v - mean);
+            const glm::dvec3 of_mean = spread / double(k - 1) / double(k);  // of the block sum over the whole render
+            replicas += of_mean.x + of_mean.y + of_mean.z;
+            pixels += var.x + var.y + var.z;
+        }
+    return pixels > 0.0 ? replicas / pixels : 1.0;
 }
 
 Image comparison_picture(const Image& ours, const Image& reference, const std::vector<std::uint8_t>& valid,

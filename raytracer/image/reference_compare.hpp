@@ -51,10 +51,25 @@ struct BlockComparison {
     double valid_share = 0.0;            // valid pixels / all pixels
 };
 
-// All images the same size; `valid` one byte per pixel.
+// All images the same size; `valid` one byte per pixel. `our_variance_scale` multiplies the sum
+// of our pixels' variances in every block (block_variance_scale below; 1 for independent pixels).
 BlockComparison compare_blocks(const Image& ours, const Image& our_variance, const Image& reference,
                                const Image& reference_variance, const std::vector<std::uint8_t>& valid,
-                               int block = 8);
+                               int block = 8, double our_variance_scale = 1.0);
+
+// The variance of a block mean over what the sum of its pixels' variances says, measured on
+// independent replicas. Summing pixel variances assumes independent pixels; a bidirectional
+// render's light-tracing splats land on many pixels of one sample pass, which correlates
+// neighbouring pixels: positively where one light subpath's vertices land near each other,
+// negatively where one vertex's splat lands on one pixel of a block or another, never both. `batches` are K >= 2 independent renders of the same image (disjoint sample ranges of
+// one render, equal sample counts), `whole_variance` the per-pixel variance of their mean (what
+// `render --variance` gives for the whole render). Per block and channel, the replicas' variance of
+// the whole mean is the sample variance of the K batch block means / K; the result is the sum of
+// those over every tested block and channel divided by the sum of the pixel-variance sums: pooled,
+// so it is a stable figure (each block's own replica variance has only K - 1 degrees of freedom,
+// whose heavy-tailed z would fail more than the 3-sigma share allows). 1 when nothing is tested.
+double block_variance_scale(const std::vector<Image>& batches, const Image& whole_variance,
+                            const std::vector<std::uint8_t>& valid, int block = 8);
 
 // The picture for people: ours | reference | z map, side by side, linear RGB for write_image's
 // 8-bit sRGB PNG. Both renders share one scale, 1 / (the 99th percentile of the reference's

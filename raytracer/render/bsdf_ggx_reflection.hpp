@@ -4,7 +4,9 @@
 // so the distribution, masking, sampling and density live here once. bsdf.hpp states the model
 // (height-correlated Smith G2, visible-normal sampling, alpha = roughness^2 clamped at
 // kMinMetalAlpha; roughness 0 a perfect mirror, a delta lobe). `fresnel(cos_d)` returns the RGB
-// reflectance at the angle between the light and the microfacet normal.
+// reflectance at the angle between the light and the microfacet normal. A conductor may choose
+// Beckmann's distribution instead (Material::Microfacet): the same alpha and height-correlated G2,
+// with its exact Lambda, and normals sampled by D(h) h.z (no visible-normal sampling).
 #include <algorithm>
 
 #include <glm/geometric.hpp>
@@ -16,6 +18,20 @@
 namespace sweeptrace::ggx_reflection {
 
 inline float alpha(const Material& m) { return std::max(m.roughness * m.roughness, kMinMetalAlpha); }
+
+// The conductor may choose Beckmann's distribution (Material::Microfacet); the metal is GGX.
+inline bool beckmann(const Material& m) { return m.microfacet == Material::Microfacet::Beckmann; }
+inline float lobe_d(const Material& m, const glm::vec3& h, float a) { return beckmann(m) ? beckmann_d(h, a) : ggx_d(h, a); }
+inline float lobe_lambda(const Material& m, const glm::vec3& w, float a) {
+    return beckmann(m) ? beckmann_lambda(w, a) : ggx_lambda(w, a);
+}
+// The density of wi: GGX samples visible normals, D G1(wo) / (4 wo.z); Beckmann samples D(h) h.z,
+// and the reflection's Jacobian 1 / (4 wo.h) makes it D h.z / (4 wo.h).
+inline float lobe_pdf(const Material& m, const glm::vec3& wo, const glm::vec3& h, float d, float lambda_o) {
+    if (!beckmann(m)) return d / (4.0f * wo.z * (1.0f + lambda_o));
+    const float wo_h = glm::dot(wo, h);
+    return wo_h > 0.0f ? d * h.z / (4.0f * wo_h) : 0.0f;
+}
 
 // Reflection must stay on wo's side of both the shading and the geometric normal.
 inline bool valid(const ShadingContext& ctx, const glm::vec3& wi_local, const glm::vec3& wi) {
@@ -31,12 +47,11 @@ BsdfEval eval(const Material& m, const ShadingContext& ctx, const glm::vec3& wi,
     const glm::vec3& wo = ctx.wo_local;
     const float a = alpha(m);
     const glm::vec3 h = glm::normalize(wo + wl);
-    const float d = ggx_d(h, a);
-    const float lo = ggx_lambda(wo, a), li = ggx_lambda(wl, a);
+    const float d = lobe_d(m, h, a);
+    const float lo = lobe_lambda(m, wo, a), li = lobe_lambda(m, wl, a);
     const float g2 = 1.0f / (1.0f + lo + li);
-    const float g1 = 1.0f / (1.0f + lo);
     e.f_cos = fresnel(glm::dot(wl, h)) * (d * g2 / (4.0f * wo.z));
-    e.pdf = d * g1 / (4.0f * wo.z);
+    e.pdf = lobe_pdf(m, wo, h, d, lo);
     return e;
 }
 
@@ -52,6 +67,19 @@ bool sample(const Material& m, const ShadingContext& ctx, float u1, float u2, Bs
         return true;
     }
     const float a = alpha(m);
+    if (beckmann(m)) {
+        const glm::vec3 h = sample_beckmann_normal(a, u1, u2);
+        const float wo_h = glm::dot(wo, h);
+        if (!(wo_h > 0.0f)) return false;
+        const glm::vec3 wl = 2.0f * wo_h * h - wo;
+        const glm::vec3 wi = ctx.frame.to_world(wl);
+        if (!valid(ctx, wl, wi)) return false;
+        const float d = beckmann_d(h, a);
+        const float lo = beckmann_lambda(wo, a), li = beckmann_lambda(wl, a);
+        // f cos / pdf = F G2 wo.h / (wo.z h.z): D cancels.
+        out = BsdfSample{wi, fresnel(wo_h) * (wo_h / (wo.z * h.z * (1.0f + lo + li))), d * h.z / (4.0f * wo_h), false};
+        return out.pdf > 0.0f;
+    }
     const glm::vec3 h = sample_ggx_vndf(wo, a, u1, u2);
     const float wo_h = glm::dot(wo, h);
     const glm::vec3 wl = 2.0f * wo_h * h - wo;

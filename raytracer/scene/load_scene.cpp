@@ -194,11 +194,16 @@ Material read_material(const Node& node, const std::string& name, std::vector<Te
         m.type = Material::Type::Metal;
         if (auto r = node.find("roughness")) read_roughness(*r);
     } else if (type == "conductor") {
-        require_surface_keys({"roughness", "metal", "eta", "k"});
+        require_surface_keys({"roughness", "metal", "eta", "k", "distribution"});
         m.type = Material::Type::Conductor;
         m.albedo = glm::vec3(1.0f);  // untinted unless given
         read_conductor(node, m);
         if (auto r = node.find("roughness")) read_roughness(*r);
+        if (auto d = node.find("distribution")) {
+            const std::string name = d->string();
+            if (name == "beckmann") m.microfacet = Material::Microfacet::Beckmann;
+            else if (name != "ggx") d->fail("unknown distribution \"" + name + "\" (known: ggx, beckmann)");
+        }
     } else if (type == "dielectric") {
         require_surface_keys({"ior"});
         m.type = Material::Type::Dielectric;

@@ -146,6 +146,11 @@ struct Material {
     // side of the surface beside albedo / pi on wo's side; 0 (the default) is an opaque Lambertian.
     glm::vec3 transmittance{0.0f};
     float roughness = 0.0f;    // Metal: 0 = perfect mirror
+    // Conductor: the microfacet distribution of its rough lobe. GGX (the default, pbrt-v4's only
+    // one) or Beckmann, which Tungsten and Mitsuba scenes name and whose far narrower tails pbrt-v4
+    // cannot express (docs/reference-deviations-veach-bidir.md). Both take alpha = roughness^2.
+    enum class Microfacet { Ggx, Beckmann };
+    Microfacet microfacet = Microfacet::Ggx;
     float ior = 1.5f;          // Dielectric, ThinDielectric
     // Conductor: the complex index of refraction eta + i k per RGB channel, relative to the
     // outside (scene/named_metals.hpp holds the named metals'); albedo tints its Fresnel term.

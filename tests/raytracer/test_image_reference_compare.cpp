@@ -124,3 +124,53 @@ TEST_CASE("stand-in mask scene: only surfaces reading a flat 8x8 texture emit, d
     stand_in_mask_scene(s, {}, none);
     CHECK_FALSE(none);
 }
+
+// 16 batches of a flat 64x64 image of 1, each pixel's noise the sum of its own and one shared by
+// its 4x4 patch (as one light-tracing splat lands on neighbouring pixels); `whole_variance` the
+// exact per-pixel variance of the batches' mean, what summing pixels assumes is all there is.
+namespace {
+struct RcSplatLike {
+    std::vector<Image> batches;
+    Image mean, variance;
+};
+RcSplatLike rc_splat_like(float sigma_pixel, float sigma_patch, unsigned seed) {
+    std::mt19937 rng(seed);
+    std::normal_distribution<float> n(0.0f, 1.0f);
+    constexpr int kK = 16, kW = 64;
+    RcSplatLike r{{}, Image(kW, kW), Image(kW, kW)};
+    for (int b = 0; b < kK; ++b) {
+        Image im(kW, kW);
+        std::vector<glm::vec3> patch(16 * 16);
+        for (auto& p : patch) p = glm::vec3(n(rng), n(rng), n(rng)) * sigma_patch;
+        for (int y = 0; y < kW; ++y)
+            for (int x = 0; x < kW; ++x)
+                im.at(x, y) = glm::vec3(1.0f) + glm::vec3(n(rng), n(rng), n(rng)) * sigma_pixel + patch[(y / 4) * 16 + x / 4];
+        for (std::size_t i = 0; i < im.pixels.size(); ++i) r.mean.pixels[i] += im.pixels[i] / float(kK);
+        r.batches.push_back(std::move(im));
+    }
+    for (auto& v : r.variance.pixels) v = glm::vec3((sigma_pixel * sigma_pixel + sigma_patch * sigma_patch) / float(kK));
+    return r;
+}
+}  // namespace
+
+TEST_CASE("block variance from replicas: correlated pixels' blocks vary 8.5x their pixel sum, independent ones 1x, and the scaled z-test is right", "[reference]") {
+    const std::vector<std::uint8_t> all(64 * 64, 1);
+    // Independent pixels: the replicas agree with the pixel sum.
+    const RcSplatLike ind = rc_splat_like(0.1f, 0.0f, 3);
+    CHECK(block_variance_scale(ind.batches, ind.variance, all) == Approx(1.0).epsilon(0.15));
+    // Equal pixel and patch noise: a block's 4 patches of 16 pixels give 64 s^2 + 4 * 256 s^2
+    // against the sum's 64 * 2 s^2, 8.5 times.
+    const RcSplatLike cor = rc_splat_like(0.1f, 0.1f, 4);
+    const double scale = block_variance_scale(cor.batches, cor.variance, all);
+    CHECK(scale == Approx(8.5).epsilon(0.2));
+    CHECK(block_variance_scale({cor.batches.front()}, cor.variance, all) == 1.0);  // one batch: nothing measured
+    // The truth (a flat 1, without noise) against the correlated mean: summing pixel variances
+    // flags blocks that are only noise; the replicas' measure does not.
+    Image truth(64, 64), zero(64, 64);
+    for (auto& p : truth.pixels) p = glm::vec3(1.0f);
+    const BlockComparison plain = compare_blocks(cor.mean, cor.variance, truth, zero, all);
+    const BlockComparison scaled = compare_blocks(cor.mean, cor.variance, truth, zero, all, 8, scale);
+    INFO("scale " << scale << ", within |z| < 3: plain " << plain.share_within_3 << ", scaled " << scaled.share_within_3);
+    CHECK(plain.share_within_3 < 0.6);
+    CHECK(scaled.share_within_3 >= 0.95);
+}

@@ -1,6 +1,6 @@
 // Sampled directions' densities match eval_bsdf's pdf, by the chi-square test of pbrt-v4 and
 // Mitsuba (bsdf_chi_square.hpp), for every material with a non-delta lobe: diffuse, GGX metal,
-// GGX conductor (gold's complex-IOR Fresnel),
+// GGX and Beckmann conductor (gold's complex-IOR Fresnel),
 // rough dielectric (from outside and from inside, where total internal reflection takes part),
 // coated diffuse (a smooth coat's mirror lobe is the extra bin; a rough coat's is sampled). Roughness >= 0.3 (alpha >= 0.09): the
 // bins are 5 degrees and the density integral per bin an 8 x 8 midpoint rule, fine enough for
@@ -21,7 +21,7 @@ using sweeptrace::test::chi_square_bsdf;
 
 namespace {
 
-constexpr int kTests = 48, kSamples = 200000;
+constexpr int kTests = 54, kSamples = 200000;
 
 SurfaceHit tilted_hit() {
     SurfaceHit h;
@@ -77,6 +77,18 @@ TEST_CASE("chi-square: GGX conductor samples follow its density", "[render][bsdf
     for (float roughness : {0.3f, 0.6f, 1.0f})
         for (float theta : {0.2f, 0.9f, 1.4f}) {
             Material m = make(Material::Type::Conductor, roughness);
+            m.eta = {0.4769f, 0.3938f, 1.6048f};  // gold (scene/named_metals.cpp)
+            m.k = {17.1602f, 2.3489f, 1.7027f};
+            check_chi_square(m, theta, 1.0f, ++seed);
+        }
+}
+
+TEST_CASE("chi-square: Beckmann conductor samples follow its density", "[render][bsdf][chi2][conductor]") {
+    std::uint64_t seed = 120;
+    for (float roughness : {0.5f, 1.0f})
+        for (float theta : {0.2f, 0.9f, 1.4f}) {
+            Material m = make(Material::Type::Conductor, roughness);
+            m.microfacet = Material::Microfacet::Beckmann;
             m.eta = {0.4769f, 0.3938f, 1.6048f};  // gold (scene/named_metals.cpp)
             m.k = {17.1602f, 2.3489f, 1.7027f};
             check_chi_square(m, theta, 1.0f, ++seed);

@@ -204,3 +204,33 @@ TEST_CASE("render cli: film.exposure and tone_curve change only 8-bit output, a 
     CHECK(f.err.find("sweeptrace: warning: flipped.json: objects[1] (quad): one-sided emitter") != std::string::npos);
     CHECK(fs::exists(dir / "flipped.png"));
 }
+
+TEST_CASE("render cli: bdpt and vcm say that a scene's clamp_indirect and guiding are the path tracer's and not applied, and path stays silent", "[render][cli][bdpt]") {
+    const fs::path dir = fresh_dir("bdpt-ignored-settings");
+    std::ofstream(dir / "clamped.json") << R"({
+  "camera": { "position": [0, 0, 4], "look_at": [0, 0, 0], "fov": 40 },
+  "film": { "width": 8, "height": 4, "spp": 2, "max_depth": 3, "clamp_indirect": 5, "guiding": true },
+  "materials": { "m": { "type": "diffuse", "albedo": [0.6, 0.5, 0.4] },
+                 "lamp": { "type": "emissive", "emission": [4, 4, 4] } },
+  "objects": [ { "type": "sphere", "center": [0, 0, 0], "radius": 1, "material": "m" },
+               { "type": "sphere", "center": [0, 3, 0], "radius": 0.5, "material": "lamp" } ]
+})";
+    const Run bd = run_in(dir, {"render", "clamped.json", "--quiet", "--integrator", "bdpt", "-o", "b.pfm"});
+    INFO(bd.err);
+    REQUIRE(bd.exit_code == 0);
+    CHECK(bd.err.find("warning: clamped.json: film.clamp_indirect 5 is the path tracer's; bdpt ignores it") != std::string::npos);
+    CHECK(bd.err.find("warning: clamped.json: film.guiding is the path tracer's; bdpt renders unguided") != std::string::npos);
+    const Run vc = run_in(dir, {"render", "clamped.json", "--quiet", "--integrator", "vcm", "-o", "v.pfm"});
+    INFO(vc.err);
+    REQUIRE(vc.exit_code == 0);
+    CHECK(vc.err.find("warning: clamped.json: film.clamp_indirect 5 is the path tracer's; vcm ignores it") != std::string::npos);
+    const Run pt = run_in(dir, {"render", "clamped.json", "--quiet", "--integrator", "path", "-o", "p.pfm"});
+    INFO(pt.err);
+    REQUIRE(pt.exit_code == 0);
+    CHECK(pt.err.empty());
+    const Run fx = run_in(dir, {"render", "clamped.json", "--quiet", "--integrator", "bdpt", "--forensics", "f.json"});
+    CHECK(fx.exit_code == 2);
+    CHECK(fx.err == "sweeptrace: error: --forensics needs the path integrator: it follows a camera path's vertices, and "
+                    "the light paths of bdpt and vcm have none of them\n");
+    CHECK(!fs::exists(dir / "f.json"));
+}

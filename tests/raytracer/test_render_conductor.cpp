@@ -249,3 +249,33 @@ TEST_CASE("conductor Fresnel: stays in [0, 1] for extreme indices and angles", "
         REQUIRE(f <= 1.0f + 1e-6f);
     }
 }
+
+TEST_CASE("conductor: \"distribution\": \"beckmann\" loads, an unknown one is refused, and its tails are far narrower than GGX's", "[render][bsdf][conductor]") {
+    const test::TempDir dir;
+    const auto scene_with = [&](const std::string& name, const std::string& distribution) {
+        return dir.write(name, R"({
+  "camera": { "position": [0, 0, 5], "look_at": [0, 0, 0] }, "film": { "width": 4, "height": 4 },
+  "materials": { "lamp": { "type": "conductor", "metal": "Au", "roughness": 0.5, "distribution": ")" +
+                                   distribution + R"(" } },
+  "objects": [{ "type": "sphere", "radius": 1, "material": "lamp" }] })");
+    };
+    CHECK(load_scene(scene_with("b.json", "beckmann")).materials[0].microfacet == Material::Microfacet::Beckmann);
+    CHECK(load_scene(scene_with("g.json", "ggx")).materials[0].microfacet == Material::Microfacet::Ggx);
+    CHECK_THROWS_WITH(load_scene(scene_with("p.json", "phong")), Catch::Contains("unknown distribution \"phong\"") &&
+                                                                     Catch::Contains("materials.lamp.distribution"));
+    // At alpha 0.25 (veach-bidir's lamp), seen along the normal: the same peak (both D are
+    // 1 / (pi alpha^2) there), and light 1.4 rad off the normal, whose half vector is 0.7 rad off:
+    // GGX's D falls like tan^-4 there, Beckmann's like exp(-tan^2 / alpha^2), 1/600 of it.
+    Material ggx = gold(0.5f), beck = gold(0.5f);
+    beck.microfacet = Material::Microfacet::Beckmann;
+    SurfaceHit hit;
+    hit.normal = hit.shading_normal = glm::vec3(0.0f, 0.0f, 1.0f);
+    const ShadingContext ctx = make_shading_context(hit, glm::vec3(0.0f, 0.0f, 1.0f));
+    const glm::vec3 mirror(0.0f, 0.0f, 1.0f), wide(std::sin(1.4f), 0.0f, std::cos(1.4f));
+    const float peak_g = eval_bsdf(ggx, ctx, mirror).f_cos.x, peak_b = eval_bsdf(beck, ctx, mirror).f_cos.x;
+    const float wide_g = eval_bsdf(ggx, ctx, wide).f_cos.x, wide_b = eval_bsdf(beck, ctx, wide).f_cos.x;
+    INFO("at the mirror direction " << peak_g << " / " << peak_b << ", 1.4 rad off " << wide_g << " / " << wide_b);
+    CHECK(std::abs(peak_b - peak_g) < 0.02f * peak_g);
+    CHECK(wide_b > 0.0f);
+    CHECK(wide_b < 0.01f * wide_g);
+}

@@ -32,6 +32,10 @@ with tempfile.TemporaryDirectory() as tmp:
                           "--table", table], capture_output=True, text=True)
     assert bad.returncode == 2 and "whole pixels" in bad.stderr, bad
     assert os.listdir(tmp) == [], os.listdir(tmp)
+    bad = subprocess.run([binary, "reference-check", folder, "--scene", "cornell-box", "--downsample", "8",
+                          "--spp", "30", "--batches", "16", "--table", table], capture_output=True, text=True)
+    assert bad.returncode == 2 and "not a multiple of --batches 16" in bad.stderr, bad
+    assert os.listdir(tmp) == [], os.listdir(tmp)
 
     run = subprocess.run([binary, "reference-check", folder, "--scene", "cornell-box", "--downsample", "8",
                           "--spp", "64", "--threads", "2", "--table", table,
