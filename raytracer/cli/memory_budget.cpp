@@ -14,6 +14,9 @@ constexpr std::uint64_t kFilmBytesPerPixel = 2 * 24 + 3 * 12 + 12 + 2 * 3;
 // vertex itself, its photon (point, pixel, index) and its id in a grid cell with the table's share.
 // Counted at max_depth vertices per pixel, the most a light subpath holds.
 constexpr std::uint64_t kVcmBytesPerLightVertex = sizeof(PathVertex) + 20 + 16;
+// Adaptive sampling (render/renderer.cpp): per pixel its count of samples, the round in flight's
+// sums and its share of the round, about 76 bytes as measured by the change that added it.
+constexpr std::uint64_t kAdaptiveBytesPerPixel = 76;
 // Per primitive of the acceleration structure (a triangle, or an analytic object at the top
 // level): BVH nodes (~2 per primitive at 32 bytes), the primitive's index and precomputed test
 // data, and the builder's temporary boxes and centroids. Rounded up: Embree's is of that order.
@@ -23,12 +26,13 @@ constexpr std::uint64_t kAccelBytesPerVertex = 24;
 
 }  // namespace
 
-MemoryEstimate estimate_render_memory(const Scene& scene) {
+MemoryEstimate estimate_render_memory(const Scene& scene, bool adaptive) {
     MemoryEstimate e;
     const std::uint64_t pixels = std::uint64_t(scene.film.width) * std::uint64_t(scene.film.height);
     e.film = pixels * kFilmBytesPerPixel;
     if (scene.film.integrator == IntegratorKind::Vcm)
         e.film += pixels * std::uint64_t(scene.film.max_depth) * kVcmBytesPerLightVertex;
+    if (adaptive) e.film += pixels * kAdaptiveBytesPerPixel;
     std::uint64_t primitives = scene.objects.size(), vertices = 0;
     for (const Mesh& m : scene.meshes) {
         primitives += m.triangles.indices.size();
@@ -38,8 +42,8 @@ MemoryEstimate estimate_render_memory(const Scene& scene) {
     return e;
 }
 
-void check_render_memory(const Scene& scene, std::optional<std::uint64_t> limit) {
-    const MemoryEstimate e = estimate_render_memory(scene);
+void check_render_memory(const Scene& scene, std::optional<std::uint64_t> limit, bool adaptive) {
+    const MemoryEstimate e = estimate_render_memory(scene, adaptive);
     const std::optional<std::uint64_t> room = limit ? limit : available_memory();
     if (!room || e.total() <= *room) return;
     throw InputError(scene.source.string() + ": the render needs an estimated " + byte_text(e.total()) + " (film " +

@@ -6,7 +6,8 @@
 //
 // The estimate counts the big allocations, each per element with its size in memory_budget.cpp:
 // the film (the renderer's double-precision sums, the pass buffer, the mean and variance images,
-// the display copy and the encoded file; under vcm also every pixel's light subpath) and the
+// the display copy and the encoded file; under vcm also every pixel's light subpath, under
+// adaptive sampling its per-pixel counts and round sums) and the
 // scene's acceleration structure over every
 // object and triangle. It is an estimate of the peak, not a bound: small per-object data and
 // allocator overhead are not counted. The scene's meshes are already loaded when it is made
@@ -26,11 +27,12 @@ struct MemoryEstimate {
     std::uint64_t total() const { return film + scene; }
 };
 
-MemoryEstimate estimate_render_memory(const Scene& scene);
+// `adaptive`: render --adaptive on|relative (a render option, not the scene's).
+MemoryEstimate estimate_render_memory(const Scene& scene, bool adaptive = false);
 
 // Throws InputError "render needs an estimated X (film WxH: A, scene: B), more than the Y
 // available ..." when the estimate exceeds `limit` (from --max-memory) or, without one, the
 // available memory.
-void check_render_memory(const Scene& scene, std::optional<std::uint64_t> limit);
+void check_render_memory(const Scene& scene, std::optional<std::uint64_t> limit, bool adaptive = false);
 
 }  // namespace sweeptrace

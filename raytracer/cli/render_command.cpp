@@ -205,7 +205,7 @@ int run_render(const RenderArgs& a) {
         refuse_output_over_input(a.forensics, inputs);
         refuse_output_over_input(forensics_picture(a.forensics), inputs);
     }
-    check_render_memory(scene, a.limits.memory_limit());
+    check_render_memory(scene, a.limits.memory_limit(), a.adaptive != "off");
 
     // A farm part: which samples, and the render they belong to; a re-run task skips a finished one.
     const SampleRange range =

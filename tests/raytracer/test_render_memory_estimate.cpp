@@ -1,0 +1,43 @@
+// The render's memory estimate (cli/memory_budget.hpp) counts what each integrator and sampling
+// mode keeps per pixel: a vcm light subpath per pixel, adaptive sampling's counts and round sums,
+// so --max-memory refuses before the allocation rather than after it.
+#include <catch2/catch.hpp>
+
+#include <cstdint>
+
+#include "raytracer/cli/memory_budget.hpp"
+#include "raytracer/input_error.hpp"
+#include "raytracer/render/integrators/path_vertex.hpp"
+
+using namespace sweeptrace;
+
+namespace {
+
+Scene memory_estimate_scene(IntegratorKind integrator) {
+    Scene s;
+    s.film.width = 64;
+    s.film.height = 32;
+    s.film.max_depth = 8;
+    s.film.integrator = integrator;
+    return s;
+}
+
+}  // namespace
+
+TEST_CASE("render memory estimate: vcm's light subpaths and adaptive sampling's per-pixel state are counted", "[cli][memory]") {
+    const Scene path = memory_estimate_scene(IntegratorKind::Path);
+    const Scene vcm = memory_estimate_scene(IntegratorKind::Vcm);
+    const std::uint64_t pixels = 64 * 32;
+    const MemoryEstimate base = estimate_render_memory(path);
+    CHECK(estimate_render_memory(memory_estimate_scene(IntegratorKind::Bdpt)).film == base.film);
+    // vcm: at least one path vertex per light-subpath vertex, max_depth of them per pixel.
+    CHECK(estimate_render_memory(vcm).film >= base.film + pixels * 8 * sizeof(PathVertex));
+    const MemoryEstimate adaptive = estimate_render_memory(path, true);
+    CHECK(adaptive.film > base.film);
+    CHECK((adaptive.film - base.film) % pixels == 0);  // a cost per pixel
+    CHECK(adaptive.scene == base.scene);
+    // The limit between the two estimates refuses the adaptive render alone.
+    const std::uint64_t limit = base.total() + (adaptive.total() - base.total()) / 2;
+    CHECK_NOTHROW(check_render_memory(path, limit));
+    CHECK_THROWS_AS(check_render_memory(path, limit, true), InputError);
+}
