@@ -61,7 +61,7 @@ public:
           sum_sq_(sum_.size(), glm::dvec3(0.0)),
           pass_(sum_.size()) {
         if (opt.integrator != IntegratorKind::Path) tile_splats_.resize(static_cast<std::size_t>(tiles_x_) * tiles_y_);
-        if (opt.integrator == IntegratorKind::Vcm) vcm_.emplace(scene, lights_, bdpt_, opt.max_depth);
+        if (opt.integrator == IntegratorKind::Vcm) vcm_.emplace(scene, accel, camera_, lights_, bdpt_, opt.max_depth);
         if (opt.guiding) {
             tile_records_.resize(static_cast<std::size_t>(tiles_x_) * tiles_y_);
             integrator_.set_guide(&guide_);

@@ -81,22 +81,51 @@ TEST_CASE("vcm: MIS weights sum to 1 over connections and merges of random paths
     CHECK(planted_over > 200);
 }
 
-TEST_CASE("vcm: the radius follows r_i = r_1 i^((alpha - 1) / 2), r_1 a fraction of the scene or film.vcm_radius",
+TEST_CASE("vcm: the radius follows r_i = r_1 i^((alpha - 1) / 2), r_1 half a pixel's footprint or film.vcm_radius",
           "[vcm]") {
+    // A wall 2 units before a 90-degree pinhole, 16 pixels across: a pixel covers 2 x 2 tan(45) /
+    // 16 = 0.25 of the wall along it, and across its ray 0.25 cos^2 of its angle off the axis, the
+    // corners' 0.25 x 0.6 at least; the median centre ray's lies between.
+    Scene wall;
+    wall.film.width = wall.film.height = 16;
+    wall.camera.position = {0.0f, 0.0f, 0.0f};
+    wall.camera.look_at = {0.0f, 0.0f, -1.0f};
+    wall.camera.vfov_degrees = 90.0f;
+    wall.materials.push_back(Material{});
+    Object quad;
+    quad.shape = collision::Quad{{-10.0f, -10.0f, -2.0f}, {20.0f, 0.0f, 0.0f}, {0.0f, 20.0f, 0.0f}};
+    wall.objects.push_back(quad);
+    {
+        const CameraModel camera(wall.camera, 16, 16);
+        const auto accel = make_accel(AccelKind::Bvh, wall);
+        const float footprint = VcmIntegrator::median_pixel_footprint(wall, *accel, camera);
+        CHECK(footprint > 0.25f * 0.6f);
+        CHECK(footprint <= 0.25f * 1.001f);
+        CHECK(VcmIntegrator::first_radius(wall, *accel, camera) == Approx(0.5f * footprint));
+        wall.film.vcm_radius = 0.5f;
+        CHECK(VcmIntegrator::first_radius(wall, *accel, camera) == 0.5f);
+    }
+    // smallpt's walls are spheres of radius 1e5: a fraction of the scene's bounding sphere (the
+    // rule before this one) made r_1 about 300 units in a room 100 wide, and vcm's image a blur.
+    // Half a pixel's footprint at 24 pixels across a room 100 wide is about 2.
+    {
+        const Scene smallpt = shipped("smallpt.json", 24, 18);
+        const CameraModel camera(smallpt.camera, 24, 18);
+        const auto accel = make_accel(AccelKind::Bvh, smallpt);
+        const float r1 = VcmIntegrator::first_radius(smallpt, *accel, camera);
+        CHECK(r1 > 0.5f);
+        CHECK(r1 < 5.0f);
+    }
     Scene scene = shipped("cornell-box.json", 8, 8);
     const LightSet lights(scene);
     const CameraModel camera(scene.camera, 8, 8);
     const auto accel = make_accel(AccelKind::Bvh, scene);
     BdptIntegrator bdpt(scene, *accel, lights, camera, 5, PlantedDefect::None);
-    const collision::Bounds3 world = scene_world_bounds(scene);
-    const float r1 = VcmIntegrator::kDefaultRadiusFraction * 0.5f * glm::length(world.hi - world.lo);
-    CHECK(VcmIntegrator::first_radius(scene) == Approx(r1));
-    const VcmIntegrator vcm(scene, lights, bdpt, 5);
+    const VcmIntegrator vcm(scene, *accel, camera, lights, bdpt, 5);
+    const float r1 = VcmIntegrator::first_radius(scene, *accel, camera);
     CHECK(vcm.radius(0) == Approx(r1));
     CHECK(vcm.radius(9) == Approx(r1 * std::pow(10.0f, -0.125f)));
     CHECK(vcm.radius(99) == Approx(r1 * std::pow(100.0f, -0.125f)));
-    scene.film.vcm_radius = 0.5f;
-    CHECK(VcmIntegrator::first_radius(scene) == 0.5f);
 }
 
 TEST_CASE("vcm: the same image bit for bit on 1, 2 and 3 threads, and split into farm parts, with every kind of light", "[vcm][determinism]") {

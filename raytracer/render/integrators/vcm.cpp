@@ -1,6 +1,8 @@
 #include "raytracer/render/integrators/vcm.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <vector>
 
 #include <glm/geometric.hpp>
 
@@ -11,17 +13,46 @@
 
 namespace sweeptrace {
 
-VcmIntegrator::VcmIntegrator(const Scene& scene, const LightSet& lights, BdptIntegrator& bdpt, int max_depth)
-    : scene_(scene), lights_(lights), bdpt_(bdpt), max_depth_(max_depth), r1_(first_radius(scene)) {
+VcmIntegrator::VcmIntegrator(const Scene& scene, const Accel& accel, const CameraModel& camera, const LightSet& lights,
+                             BdptIntegrator& bdpt, int max_depth)
+    : scene_(scene), lights_(lights), bdpt_(bdpt), max_depth_(max_depth), r1_(first_radius(scene, accel, camera)) {
     for (const Object& o : scene.objects) merging_ = merging_ && !(scene.camera.shutter && o.motion.moving());
     paths_.resize(static_cast<std::size_t>(scene.film.width) * static_cast<std::size_t>(scene.film.height));
 }
 
-float VcmIntegrator::first_radius(const Scene& scene) {
+float VcmIntegrator::median_pixel_footprint(const Scene& scene, const Accel& accel, const CameraModel& camera) {
+    constexpr int kGrid = 16;
+    const float w = static_cast<float>(scene.film.width), h = static_cast<float>(scene.film.height);
+    std::vector<float> footprints;
+    for (int j = 0; j < kGrid; ++j)
+        for (int i = 0; i < kGrid; ++i) {
+            // Pixel centres spread over the film, and the neighbouring centre one pixel right:
+            // the angle between their rays times the hit distance is the pixel's width there.
+            const float x = std::floor((static_cast<float>(i) + 0.5f) * w / kGrid) + 0.5f;
+            const float y = std::floor((static_cast<float>(j) + 0.5f) * h / kGrid) + 0.5f;
+            const collision::Ray ray = camera.generate(x, y, 0.5f, 0.5f);
+            const collision::Ray next = camera.generate(x + 1.0f, y, 0.5f, 0.5f);
+            SurfaceHit hit;
+            if (!accel.intersect(ray, 0.0f, hit)) continue;
+            const float distance = glm::length(hit.point - ray.origin);  // at the hit, not t: dir need not be unit
+            const float angle = std::acos(std::clamp(glm::dot(glm::normalize(ray.dir), glm::normalize(next.dir)), -1.0f, 1.0f));
+            const float footprint = distance * angle;
+            if (std::isfinite(footprint) && footprint > 0.0f) footprints.push_back(footprint);
+        }
+    if (footprints.empty()) return 0.0f;
+    const auto mid = footprints.begin() + static_cast<std::ptrdiff_t>(footprints.size() / 2);
+    std::nth_element(footprints.begin(), mid, footprints.end());
+    return *mid;
+}
+
+float VcmIntegrator::first_radius(const Scene& scene, const Accel& accel, const CameraModel& camera) {
     if (scene.film.vcm_radius > 0.0f) return scene.film.vcm_radius;
+    const float footprint = median_pixel_footprint(scene, accel, camera);
+    if (footprint > 0.0f) return kDefaultPixelFootprints * footprint;
+    // Nothing seen: photons never meet a camera vertex that matters; any finite radius will do.
     const collision::Bounds3 world = scene_world_bounds(scene);
     const float r = world.empty() ? 1.0f : 0.5f * glm::length(world.hi - world.lo);
-    return kDefaultRadiusFraction * (std::isfinite(r) && r > 0.0f ? r : 1.0f);
+    return 0.003f * (std::isfinite(r) && r > 0.0f ? r : 1.0f);
 }
 
 float VcmIntegrator::radius(int iteration) const {

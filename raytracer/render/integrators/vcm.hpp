@@ -15,11 +15,12 @@
 // Every technique is weighted by vcm_mis.hpp (eta = pi r_i^2 N, N = the pixel count).
 // Radius: r_i = r_1 (i + 1)^((alpha - 1) / 2), alpha = 0.75 (the paper's progressive schedule),
 // so iteration i depends on nothing but (seed, i): a farm part [a, b) runs iterations a..b-1 and
-// parts merge to the whole render bit for bit. r_1 = film.vcm_radius, by default 0.003 times the
-// radius of the scene's bounding sphere (a fraction of the scene's extent rather than of a pixel
-// footprint: the same for every pixel and every farm part, computed once, and a footprint would
-// need the distance of every camera vertex; the factor keeps merging's blur below a pixel on the
-// shipped scenes at their sizes and is SmallVCM's default).
+// parts merge to the whole render bit for bit. r_1 = film.vcm_radius, by default half the median
+// pixel footprint (the width a pixel covers where its centre ray meets the scene) over a fixed
+// 16 x 16 grid of centre rays: one number per render and per farm part, computed once. Not a
+// fraction of the scene's bounding sphere (SmallVCM's default): walls made of huge spheres
+// (smallpt's, radius 1e5) or a vast ground make that radius hundreds of units and merging a blur
+// of the whole room.
 // Motion blur: a photon was traced at its own pixel's shutter time, so merging across pixels
 // would mix times; with a moving object under an open shutter merging is off (bdpt's weights,
 // eta = 0) and vcm renders what bdpt does.
@@ -37,14 +38,19 @@ namespace sweeptrace {
 class VcmIntegrator {
 public:
     static constexpr float kAlpha = 0.75f;
-    static constexpr float kDefaultRadiusFraction = 0.003f;
+    static constexpr float kDefaultPixelFootprints = 0.5f;
 
     // `bdpt` is the renderer's, already set up for the scene; this sets its merge density per
     // iteration.
-    VcmIntegrator(const Scene& scene, const LightSet& lights, BdptIntegrator& bdpt, int max_depth);
+    VcmIntegrator(const Scene& scene, const Accel& accel, const CameraModel& camera, const LightSet& lights,
+                  BdptIntegrator& bdpt, int max_depth);
 
-    // r_1 for `scene`: film.vcm_radius or the default above.
-    static float first_radius(const Scene& scene);
+    // r_1 for `scene` seen by `camera`: film.vcm_radius or the default above (the scene's
+    // bounding-sphere radius x 0.003 where no centre ray meets anything).
+    static float first_radius(const Scene& scene, const Accel& accel, const CameraModel& camera);
+    // The median over a 16 x 16 grid of pixel centres of the width one pixel covers where its
+    // centre ray meets the scene; 0 when no ray meets anything.
+    static float median_pixel_footprint(const Scene& scene, const Accel& accel, const CameraModel& camera);
     // r_i of iteration i (0-based: r_0 = r_1 of the paper's 1-based numbering).
     float radius(int iteration) const;
 
