@@ -111,6 +111,22 @@ bool within(const glm::dvec3& r, double tol) {
     return std::fabs(r.x - 1.0) <= tol && std::fabs(r.y - 1.0) <= tol && std::fabs(r.z - 1.0) <= tol;
 }
 
+// coffee's "Metal" as its Tungsten form has it (111116/toyray-scenes, coffee/scene.json, commit
+// 9e68a8d8): "mirror", albedo 1, no Fresnel term, where the pbrt-v4 file has a silver conductor.
+void coffee_tungsten_mirror(Scene& s) {
+    Material& metal = material(s, "Metal");
+    metal = Material{};
+    metal.name = "Metal";
+    metal.type = Material::Type::Metal;
+    metal.roughness = 0.0f;
+    metal.albedo = glm::vec3(1.0f);
+}
+
+// The regions of coffee the experiments judge (image fractions at 200 x 250): the silver handle
+// left of the pot, and the bright band in the glass just above the pot's silver ring.
+glm::dvec3 coffee_handle(const Image& im, const Image& ref) { return ratio(im, ref, 0.20, 0.36, 0.25, 0.80); }
+glm::dvec3 coffee_band(const Image& im, const Image& ref) { return ratio(im, ref, 0.30, 0.72, 0.70, 0.76); }
+
 }  // namespace
 
 TEST_CASE("reference deviations: classroom's conductors lost Tungsten's albedo multipliers", "[.][reference-deviations]") {
@@ -337,17 +353,10 @@ TEST_CASE("reference deviations: coffee's silver handle is Tungsten's mirror of 
     // counts every surface hit, the light's included, as ours does).
     Scene s = load("coffee", 200);
     const Image ref = reference("coffee", s.film.width, s.film.height);
-    // The handle (the silver bar left of the pot) and the bright band in the glass just above
-    // the pot's silver ring (image fractions at 200 x 250).
-    auto handle = [&](const Image& im) { return ratio(im, ref, 0.20, 0.36, 0.25, 0.80); };
-    auto band = [&](const Image& im) { return ratio(im, ref, 0.30, 0.72, 0.70, 0.76); };
+    auto handle = [&](const Image& im) { return coffee_handle(im, ref); };
+    auto band = [&](const Image& im) { return coffee_band(im, ref); };
     const Image as_file = render_small(s, 128, 16);
-    Material& metal = material(s, "Metal");
-    metal = Material{};
-    metal.name = "Metal";
-    metal.type = Material::Type::Metal;
-    metal.roughness = 0.0f;
-    metal.albedo = glm::vec3(1.0f);
+    coffee_tungsten_mirror(s);
     const Image mirror = render_small(s, 128, 16);
     std::printf("coffee, 200 px, 128 spp, depth 16: ours / reference, r g b\n");
     print("the handle, silver conductor (the pbrt-v4 file)", handle(as_file));
@@ -445,15 +454,10 @@ TEST_CASE("reference deviations: coffee's band is Tungsten's 0.5 mm ray epsilon 
     // Tungsten's epsilon. So in Tungsten a ray leaving the glass there skips the mirror glued to
     // it, and one reflected by that mirror skips the glass surface it sits on.
     Scene s = load("coffee", 200);
-    Material& metal = material(s, "Metal");  // Tungsten's mirror of albedo 1 (experiment above)
-    metal = Material{};
-    metal.name = "Metal";
-    metal.type = Material::Type::Metal;
-    metal.roughness = 0.0f;
-    metal.albedo = glm::vec3(1.0f);
+    coffee_tungsten_mirror(s);  // the handle's cause (experiment above)
     const Image ref = reference("coffee", s.film.width, s.film.height);
-    auto band = [&](const Image& im) { return ratio(im, ref, 0.30, 0.72, 0.70, 0.76); };
-    auto handle = [&](const Image& im) { return ratio(im, ref, 0.20, 0.36, 0.25, 0.80); };
+    auto band = [&](const Image& im) { return coffee_band(im, ref); };
+    auto handle = [&](const Image& im) { return coffee_handle(im, ref); };
     const std::uint32_t metal_index = material_index(s, "Metal");
     // The file's two silver shapes, in its order: the ring (Mesh015.ply), then the handle.
     std::size_t ring = s.objects.size();
@@ -517,12 +521,7 @@ TEST_CASE("reference deviations: coffee matches at the reference check's setting
     // the 5e-4 ray epsilon (CoffeeEpsilonAccel above). About 140 CPU s.
     Scene s = load("coffee", 200);
     s.film.filter = FilterSpec{};
-    Material& metal = material(s, "Metal");
-    metal = Material{};
-    metal.name = "Metal";
-    metal.type = Material::Type::Metal;
-    metal.roughness = 0.0f;
-    metal.albedo = glm::vec3(1.0f);
+    coffee_tungsten_mirror(s);
     const DownsampledReference ref = downsample_reference(read_image(bitterli("coffee") / "TungstenRender.exr"), 4);
     REQUIRE(ref.image.width == s.film.width);
     REQUIRE(ref.image.height == s.film.height);
