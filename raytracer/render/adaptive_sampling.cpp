@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numeric>
 
 #include <glm/common.hpp>
 
@@ -87,20 +86,6 @@ double tile_mean(const AdaptiveTiles& tiles, const std::vector<double>& v) {
     return sum / (double(tiles.width) * double(tiles.height));
 }
 
-std::vector<int> distribute(const AdaptiveTiles& tiles, const std::vector<double>& x, std::int64_t budget);
-
-// A round of `budget` samples: the uniform share evenly, the rest in proportion to each tile's
-// weight; returned as whole samples per pixel.
-std::vector<int> split_round(const AdaptiveTiles& tiles, const std::vector<double>& weight, std::int64_t budget) {
-    const double mean_w = tile_mean(tiles, weight);
-    // Each tile's samples per pixel, as a real number.
-    const double per_pixel_avg = double(budget) / (double(tiles.width) * double(tiles.height));
-    std::vector<double> x(weight.size());
-    for (std::size_t t = 0; t < weight.size(); ++t)
-        x[t] = per_pixel_avg * (kAdaptiveUniformShare + (1.0 - kAdaptiveUniformShare) * weight[t] / mean_w);
-    return distribute(tiles, x, budget);
-}
-
 }  // namespace
 
 std::vector<double> adaptive_tile_deviations(const AdaptiveTiles& tiles, const std::vector<PixelSum>& sums,
@@ -116,92 +101,26 @@ std::vector<double> adaptive_tile_deviations(const AdaptiveTiles& tiles, const s
     return var;
 }
 
-std::vector<int> adaptive_round(const AdaptiveTiles& tiles, const std::vector<double>& errors, std::int64_t budget) {
-    if (budget <= 0) return std::vector<int>(static_cast<std::size_t>(tiles.width) * tiles.height, 0);
-    return split_round(tiles, capped(errors), budget);
+std::vector<double> adaptive_tile_weights(const AdaptiveTiles& tiles, const std::vector<double>& errors) {
+    const std::vector<double> e = capped(errors);
+    const double mean_e = tile_mean(tiles, e);
+    std::vector<double> w(e.size(), 1.0);
+    if (mean_e > 0.0 && std::isfinite(mean_e))
+        for (std::size_t t = 0; t < e.size(); ++t) w[t] = kAdaptiveUniformShare + (1.0 - kAdaptiveUniformShare) * e[t] / mean_e;
+    return w;
 }
 
-std::vector<int> adaptive_round_mse(const AdaptiveTiles& tiles, const std::vector<double>& deviations,
-                                    const std::vector<int>& counts, std::int64_t budget) {
-    const int n = tiles.count();
-    const double pixels = double(tiles.width) * double(tiles.height);
-    if (budget <= 0) return std::vector<int>(static_cast<std::size_t>(tiles.width) * tiles.height, 0);
-    const std::vector<double> sigma = capped(deviations);
-    const double mean_sigma = tile_mean(tiles, sigma);
-    std::vector<double> have(static_cast<std::size_t>(n), 0.0);
-    std::int64_t spent = 0;
-    for (int y = 0; y < tiles.height; ++y)
-        for (int xx = 0; xx < tiles.width; ++xx) {
-            const int c = counts[static_cast<std::size_t>(y) * tiles.width + xx];
-            have[static_cast<std::size_t>(tiles.of_pixel(xx, y))] += c;
-            spent += c;
-        }
-    const double after = double(spent + budget) / pixels;  // mean samples per pixel after the round
-    std::vector<double> shortfall(static_cast<std::size_t>(n));
-    for (int t = 0; t < n; ++t) {
-        const double want = after * sigma[static_cast<std::size_t>(t)] / mean_sigma;
-        shortfall[static_cast<std::size_t>(t)] = std::max(0.0, want - have[static_cast<std::size_t>(t)] / tiles.pixels_in(t));
-    }
-    // Every tile at or above its share: by sigma, as a fresh start would.
-    return split_round(tiles, tile_mean(tiles, shortfall) > 0.0 ? shortfall : sigma, budget);
-}
-
-namespace {
-
-// Whole samples per pixel from each tile's real number x_t, exactly `budget` in all: the floors,
-// then the leftover by largest fractional part (see adaptive_round).
-std::vector<int> distribute(const AdaptiveTiles& tiles, const std::vector<double>& x, std::int64_t budget) {
-    const int n = tiles.count();
-    std::vector<int> per_pixel(static_cast<std::size_t>(tiles.width) * tiles.height, 0);
-    std::vector<int> base(static_cast<std::size_t>(n));
-    std::vector<double> frac(static_cast<std::size_t>(n));
-    std::int64_t given = 0;
-    for (int t = 0; t < n; ++t) {
-        const double f = std::floor(x[static_cast<std::size_t>(t)]);
-        base[static_cast<std::size_t>(t)] = static_cast<int>(f);
-        frac[static_cast<std::size_t>(t)] = x[static_cast<std::size_t>(t)] - f;
-        given += static_cast<std::int64_t>(f) * tiles.pixels_in(t);
-    }
-    // Leftover from the floors goes by largest fractional part; should rounding in x ever make the
-    // floors overshoot the budget, samples are taken back from the smallest fractions instead.
-    std::vector<int> order(static_cast<std::size_t>(n));
-    std::iota(order.begin(), order.end(), 0);
-    std::stable_sort(order.begin(), order.end(),
-                     [&](int a, int b) { return frac[static_cast<std::size_t>(a)] > frac[static_cast<std::size_t>(b)]; });
+std::vector<double> adaptive_pixel_weights(const AdaptiveTiles& tiles, AdaptiveError error, const std::vector<PixelSum>& sums,
+                                           const std::vector<glm::dvec3>& sum_sq, int pilot_spp) {
+    const std::vector<int> counts(sums.size(), pilot_spp);
+    const std::vector<double> tile_w = adaptive_tile_weights(
+        tiles, error == AdaptiveError::Relative ? adaptive_tile_errors(tiles, sums, sum_sq, counts)
+                                                : adaptive_tile_deviations(tiles, sums, sum_sq, counts));
+    std::vector<double> w(sums.size());
     for (int y = 0; y < tiles.height; ++y)
         for (int x = 0; x < tiles.width; ++x)
-            per_pixel[static_cast<std::size_t>(y) * tiles.width + x] = base[static_cast<std::size_t>(tiles.of_pixel(x, y))];
-    std::int64_t left = budget - given;
-    // Leftover: one more sample per pixel, tile by tile in order of fractional part, pixel by
-    // pixel within the last tile reached; repeated (rarely) while samples remain.
-    while (left > 0) {
-        for (int t : order) {
-            const int x0 = (t % tiles.tiles_x) * kAdaptiveTile, y0 = (t / tiles.tiles_x) * kAdaptiveTile;
-            for (int y = y0; y < std::min(y0 + kAdaptiveTile, tiles.height) && left > 0; ++y)
-                for (int x = x0; x < std::min(x0 + kAdaptiveTile, tiles.width) && left > 0; ++x) {
-                    ++per_pixel[static_cast<std::size_t>(y) * tiles.width + x];
-                    --left;
-                }
-            if (left == 0) break;
-        }
-    }
-    while (left < 0) {
-        for (int t = static_cast<int>(order.size()) - 1; t >= 0 && left < 0; --t) {
-            const int tile = order[static_cast<std::size_t>(t)];
-            const int x0 = (tile % tiles.tiles_x) * kAdaptiveTile, y0 = (tile / tiles.tiles_x) * kAdaptiveTile;
-            for (int y = y0; y < std::min(y0 + kAdaptiveTile, tiles.height) && left < 0; ++y)
-                for (int x = x0; x < std::min(x0 + kAdaptiveTile, tiles.width) && left < 0; ++x) {
-                    int& c = per_pixel[static_cast<std::size_t>(y) * tiles.width + x];
-                    if (c > 0) {
-                        --c;
-                        ++left;
-                    }
-                }
-        }
-    }
-    return per_pixel;
+            w[static_cast<std::size_t>(y) * tiles.width + x] = tile_w[static_cast<std::size_t>(tiles.of_pixel(x, y))];
+    return w;
 }
-
-}  // namespace
 
 }  // namespace sweeptrace
