@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "cli_run.hpp"
+#include "image_test_support.hpp"
 #include "raytracer/accel/accel.hpp"
 #include "raytracer/image/image.hpp"
 #include "raytracer/render/adaptive_sampling.hpp"
@@ -39,11 +40,6 @@ RenderOptions adaptive_options(int spp, std::uint64_t seed, bool adaptive) {
     o.adaptive = adaptive;
     o.threads = 2;
     return o;
-}
-
-bool adaptive_same_bits(const Image& a, const Image& b) {
-    return a.width == b.width && a.height == b.height &&
-           std::memcmp(a.pixels.data(), b.pixels.data(), a.pixels.size() * sizeof(glm::vec3)) == 0;
 }
 
 }  // namespace
@@ -107,8 +103,8 @@ TEST_CASE("adaptive: same image at any thread count, and pixel p holds samples 0
     const RenderResult one = render(s, *accel, o);
     o.threads = 3;
     const RenderResult three = render(s, *accel, o);
-    CHECK(adaptive_same_bits(one.image, three.image));
-    CHECK(adaptive_same_bits(one.variance, three.variance));
+    CHECK(testing::bitwise_equal(one.image, three.image));
+    CHECK(testing::bitwise_equal(one.variance, three.variance));
     CHECK(one.sums == three.sums);
     REQUIRE(one.pixel_samples == three.pixel_samples);
 
@@ -138,7 +134,7 @@ TEST_CASE("adaptive: same image at any thread count, and pixel p holds samples 0
 
     // At or below the pilot's spp the render is the uniform one.
     const RenderResult small = render(s, *accel, adaptive_options(kAdaptivePilotSpp, 5, true));
-    CHECK(adaptive_same_bits(small.image, render(s, *accel, adaptive_options(kAdaptivePilotSpp, 5, false)).image));
+    CHECK(testing::bitwise_equal(small.image, render(s, *accel, adaptive_options(kAdaptivePilotSpp, 5, false)).image));
 
     // What it cannot do is refused.
     RenderOptions bad = adaptive_options(40, 5, true);

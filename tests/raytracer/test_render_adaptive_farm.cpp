@@ -7,7 +7,6 @@
 #include <catch2/catch.hpp>
 
 #include <algorithm>
-#include <cstring>
 #include <filesystem>
 #include <numeric>
 #include <string>
@@ -15,6 +14,8 @@
 #include <vector>
 
 #include "cli_run.hpp"
+#include "farm_test_identity.hpp"
+#include "image_test_support.hpp"
 #include "raytracer/accel/accel.hpp"
 #include "raytracer/cli/render_part.hpp"
 #include "raytracer/image/image.hpp"
@@ -47,26 +48,6 @@ RenderOptions adaptfarm_options(int begin, int end, int threads, AdaptiveError e
     return o;
 }
 
-RenderIdentity adaptfarm_identity(int spp, const std::string& adaptive) {
-    RenderIdentity id;
-    id.scene_hash = "0123456789abcdef";
-    id.width = 32;
-    id.height = 24;
-    id.seed = 3;
-    id.max_depth = 5;
-    id.accel = "bvh";
-    id.integrator = "path";
-    id.adaptive = adaptive;
-    id.version = "test";
-    id.spp = spp;
-    return id;
-}
-
-bool adaptfarm_same_bits(const Image& a, const Image& b) {
-    return a.width == b.width && a.height == b.height &&
-           std::memcmp(a.pixels.data(), b.pixels.data(), a.pixels.size() * sizeof(glm::vec3)) == 0;
-}
-
 }  // namespace
 
 TEST_CASE("adaptive farm: any split into parts merges to the single adaptive render bit for bit", "[render][adaptive][farm]") {
@@ -93,7 +74,7 @@ TEST_CASE("adaptive farm: any split into parts merges to the single adaptive ren
             const RenderResult r = render(s, *accel, adaptfarm_options(cuts[i], cuts[i + 1], i % 2 == 0 ? 1 : 3, error));
             REQUIRE(r.stats.completed_spp == cuts[i + 1] - cuts[i]);
             const fs::path file = dir / ("part" + std::to_string(i) + ".exr");
-            write_part(r, adaptfarm_identity(kSpp, error == AdaptiveError::Mse ? "on" : "relative"), cuts[i], file);
+            write_part(r, test::farm_test_identity(32, 24, 3, 5, "path", kSpp, error == AdaptiveError::Mse ? "on" : "relative"), cuts[i], file);
             parts.push_back(read_partial(file));
             names.push_back(file.string());
         }
@@ -102,7 +83,7 @@ TEST_CASE("adaptive farm: any split into parts merges to the single adaptive ren
         INFO("split into " << parts.size() << " parts, from " << cuts[1]);
         CHECK(merged.sums == whole.sums);
         CHECK(merged.counts == whole.pixel_samples);
-        CHECK(adaptfarm_same_bits(merged.mean(), whole.image));
+        CHECK(testing::bitwise_equal(merged.mean(), whole.image));
     }
 }
 
@@ -121,7 +102,7 @@ TEST_CASE("adaptive farm: a part of an adaptive render does not merge with a uni
     const auto merged = test::run_sweeptrace(dir, "merge --quiet a2.exr a1.exr -o merged.exr");
     INFO(merged.err);
     REQUIRE(merged.exit_code == 0);
-    CHECK(adaptfarm_same_bits(read_image(dir / "merged.exr"), read_image(dir / "one.exr")));
+    CHECK(testing::bitwise_equal(read_image(dir / "merged.exr"), read_image(dir / "one.exr")));
     for (const auto& [first, message] : {std::pair<std::string, std::string>{"u1.exr", "adaptive sampling 'off' vs 'on'"},
                                          {"r1.exr", "adaptive sampling 'relative' vs 'on'"}}) {
         const auto r = test::run_sweeptrace(dir, "merge " + first + " a2.exr -o bad.exr");
@@ -152,8 +133,8 @@ TEST_CASE("adaptive farm: a --time budget stops at a pass boundary, the image a 
     // A pass boundary: inside the pilot any pass; after it, the pilot plus whole passes of 8.
     CHECK((t.stats.completed_spp <= kAdaptivePilotSpp || (t.stats.completed_spp - kAdaptivePilotSpp) % kAdaptiveRoundSpp == 0));
     const RenderResult same = render(s, *accel, adaptfarm_options(0, t.stats.completed_spp, 1, AdaptiveError::Mse));
-    CHECK(adaptfarm_same_bits(t.image, same.image));
-    CHECK(adaptfarm_same_bits(t.variance, same.variance));
+    CHECK(testing::bitwise_equal(t.image, same.image));
+    CHECK(testing::bitwise_equal(t.variance, same.variance));
     CHECK(t.pixel_samples == same.pixel_samples);
     CHECK(t.stats.samples == same.stats.samples);
 }
