@@ -34,36 +34,54 @@ PixelMoments pixel_moments(const PixelSum& sum, const glm::dvec3& sum_sq, int co
     return pm;
 }
 
-}  // namespace
+// The pixels a tile measure reads: all of them, or one colour of the checkerboard ((x + y) % 2).
+constexpr int kAllPixels = -1;
+bool in_set(int x, int y, int parity) { return parity == kAllPixels || ((x + y) & 1) == parity; }
 
-std::vector<double> adaptive_tile_errors(const AdaptiveTiles& tiles, const std::vector<PixelSum>& sums,
-                                         const std::vector<glm::dvec3>& sum_sq, const std::vector<int>& counts) {
-    const int n = tiles.count();
-    std::vector<double> var(static_cast<std::size_t>(n), 0.0), mean(static_cast<std::size_t>(n), 0.0);
-    double image_mean = 0.0;
+// Per tile, the number of its pixels in the set.
+std::vector<double> pixels_per_tile(const AdaptiveTiles& tiles, int parity) {
+    std::vector<double> n(static_cast<std::size_t>(tiles.count()), 0.0);
+    for (int y = 0; y < tiles.height; ++y)
+        for (int x = 0; x < tiles.width; ++x)
+            if (in_set(x, y, parity)) n[static_cast<std::size_t>(tiles.of_pixel(x, y))] += 1.0;
+    return n;
+}
+
+// Per tile, the error of AdaptiveError's rule, read from the tile's pixels in the set alone
+// (a tile with none of them: 0). Every pixel holds `count` samples (the pilot's).
+// - Relative: the relative variance of the tile's mean radiance, the mean over its pixels of each
+//   pixel mean's estimated variance (the unbiased sample variance / count, averaged over
+//   channels) divided by the square of the tile's mean radiance plus a floor of (1% of the set's
+//   mean)^2, so a black tile's variance is not divided by zero.
+// - Mse: the per-sample standard deviation, the square root of the mean over its pixels of the
+//   unbiased sample variance (averaged over channels).
+std::vector<double> tile_errors(const AdaptiveTiles& tiles, AdaptiveError rule, const std::vector<PixelSum>& sums,
+                                const std::vector<glm::dvec3>& sum_sq, int count, int parity) {
+    const auto n = static_cast<std::size_t>(tiles.count());
+    std::vector<double> var(n, 0.0), mean(n, 0.0);
+    const std::vector<double> k = pixels_per_tile(tiles, parity);
+    double set_mean = 0.0, set_pixels = 0.0;
     for (int y = 0; y < tiles.height; ++y)
         for (int x = 0; x < tiles.width; ++x) {
+            if (!in_set(x, y, parity)) continue;
             const std::size_t p = static_cast<std::size_t>(y) * tiles.width + x;
-            const int c = counts[p];
-            if (c < 1) continue;
-            const PixelMoments pm = pixel_moments(sums[p], sum_sq[p], c);
+            const PixelMoments pm = pixel_moments(sums[p], sum_sq[p], count);
             const auto t = static_cast<std::size_t>(tiles.of_pixel(x, y));
-            var[t] += pm.sample_variance / double(c);  // the variance of the pixel's mean
+            var[t] += pm.sample_variance;
             mean[t] += pm.mean;
-            image_mean += pm.mean;
+            set_mean += pm.mean;
+            set_pixels += 1.0;
         }
-    image_mean /= double(tiles.width) * double(tiles.height);
-    const double floor = 1e-4 * image_mean * image_mean + 1e-30;
-    std::vector<double> err(static_cast<std::size_t>(n));
-    for (int t = 0; t < n; ++t) {
-        const double k = tiles.pixels_in(t);
-        const double m = mean[static_cast<std::size_t>(t)] / k;
-        err[static_cast<std::size_t>(t)] = (var[static_cast<std::size_t>(t)] / k) / (m * m + floor);
+    set_mean /= std::max(set_pixels, 1.0);
+    const double floor = 1e-4 * set_mean * set_mean + 1e-30;
+    std::vector<double> err(n, 0.0);
+    for (std::size_t t = 0; t < n; ++t) {
+        if (k[t] == 0.0) continue;
+        const double m = mean[t] / k[t];
+        err[t] = rule == AdaptiveError::Relative ? (var[t] / k[t] / double(count)) / (m * m + floor) : std::sqrt(var[t] / k[t]);
     }
     return err;
 }
-
-namespace {
 
 // The errors capped at the kAdaptiveCapPercentile-th percentile, by nth_element on a copy (a
 // deterministic order statistic; ties do not matter, the value is the same). All ones when the
@@ -79,47 +97,38 @@ std::vector<double> capped(const std::vector<double>& errors) {
     return w;
 }
 
-// Pixel-weighted mean over tiles.
-double tile_mean(const AdaptiveTiles& tiles, const std::vector<double>& v) {
-    double sum = 0.0;
-    for (int t = 0; t < tiles.count(); ++t) sum += v[static_cast<std::size_t>(t)] * tiles.pixels_in(t);
-    return sum / (double(tiles.width) * double(tiles.height));
-}
-
-}  // namespace
-
-std::vector<double> adaptive_tile_deviations(const AdaptiveTiles& tiles, const std::vector<PixelSum>& sums,
-                                             const std::vector<glm::dvec3>& sum_sq, const std::vector<int>& counts) {
-    std::vector<double> var(static_cast<std::size_t>(tiles.count()), 0.0);
-    for (int y = 0; y < tiles.height; ++y)
-        for (int x = 0; x < tiles.width; ++x) {
-            const std::size_t p = static_cast<std::size_t>(y) * tiles.width + x;
-            var[static_cast<std::size_t>(tiles.of_pixel(x, y))] += pixel_moments(sums[p], sum_sq[p], counts[p]).sample_variance;
-        }
-    for (int t = 0; t < tiles.count(); ++t)
-        var[static_cast<std::size_t>(t)] = std::sqrt(var[static_cast<std::size_t>(t)] / tiles.pixels_in(t));
-    return var;
-}
-
-std::vector<double> adaptive_tile_weights(const AdaptiveTiles& tiles, const std::vector<double>& errors) {
+// adaptive_tile_weights for tiles whose weights serve `pixels[t]` pixels each: the mean is 1 over
+// those pixels.
+std::vector<double> weights_of(const std::vector<double>& errors, const std::vector<double>& pixels) {
     const std::vector<double> e = capped(errors);
-    const double mean_e = tile_mean(tiles, e);
+    double sum = 0.0, total = 0.0;
+    for (std::size_t t = 0; t < e.size(); ++t) {
+        sum += e[t] * pixels[t];
+        total += pixels[t];
+    }
+    const double mean_e = sum / std::max(total, 1.0);
     std::vector<double> w(e.size(), 1.0);
     if (mean_e > 0.0 && std::isfinite(mean_e))
         for (std::size_t t = 0; t < e.size(); ++t) w[t] = kAdaptiveUniformShare + (1.0 - kAdaptiveUniformShare) * e[t] / mean_e;
     return w;
 }
 
+}  // namespace
+
+std::vector<double> adaptive_tile_weights(const AdaptiveTiles& tiles, const std::vector<double>& errors) {
+    return weights_of(errors, pixels_per_tile(tiles, kAllPixels));
+}
+
 std::vector<double> adaptive_pixel_weights(const AdaptiveTiles& tiles, AdaptiveError error, const std::vector<PixelSum>& sums,
                                            const std::vector<glm::dvec3>& sum_sq, int pilot_spp) {
-    const std::vector<int> counts(sums.size(), pilot_spp);
-    const std::vector<double> tile_w = adaptive_tile_weights(
-        tiles, error == AdaptiveError::Relative ? adaptive_tile_errors(tiles, sums, sum_sq, counts)
-                                                : adaptive_tile_deviations(tiles, sums, sum_sq, counts));
+    // weights[q]: per tile, for the pixels of colour q, from the pixels of the other colour alone.
+    std::vector<double> weights[2];
+    for (int q = 0; q < 2; ++q)
+        weights[q] = weights_of(tile_errors(tiles, error, sums, sum_sq, pilot_spp, 1 - q), pixels_per_tile(tiles, q));
     std::vector<double> w(sums.size());
     for (int y = 0; y < tiles.height; ++y)
         for (int x = 0; x < tiles.width; ++x)
-            w[static_cast<std::size_t>(y) * tiles.width + x] = tile_w[static_cast<std::size_t>(tiles.of_pixel(x, y))];
+            w[static_cast<std::size_t>(y) * tiles.width + x] = weights[(x + y) & 1][static_cast<std::size_t>(tiles.of_pixel(x, y))];
     return w;
 }
 

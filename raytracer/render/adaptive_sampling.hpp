@@ -59,27 +59,19 @@ struct AdaptiveTiles {
     int pixels_in(int tile) const;
 };
 
-// Per tile, the relative variance of its mean radiance: the mean over its pixels of each pixel
-// mean's estimated variance (the unbiased sample variance from the pixel's own count, / count,
-// averaged over channels), divided by the square of the tile's mean radiance plus a floor of
-// (1% of the image's mean)^2, so a black tile's variance is not divided by zero. Pixels with
-// fewer than 2 samples count as variance 0. `counts` is samples per pixel.
-std::vector<double> adaptive_tile_errors(const AdaptiveTiles& tiles, const std::vector<PixelSum>& sums,
-                                         const std::vector<glm::dvec3>& sum_sq, const std::vector<int>& counts);
-
-// Per tile, the per-sample standard deviation: the square root of the mean over its pixels of the
-// unbiased sample variance (averaged over channels). Pixels with fewer than 2 samples count as 0.
-std::vector<double> adaptive_tile_deviations(const AdaptiveTiles& tiles, const std::vector<PixelSum>& sums,
-                                             const std::vector<glm::dvec3>& sum_sq, const std::vector<int>& counts);
-
-// Each tile's weight from its error (adaptive_tile_errors for AdaptiveError::Relative,
-// adaptive_tile_deviations for Mse): kAdaptiveUniformShare + (1 - kAdaptiveUniformShare) x the
+// Each tile's weight from its error: kAdaptiveUniformShare + (1 - kAdaptiveUniformShare) x the
 // error capped at the kAdaptiveCapPercentile-th percentile / the image's mean capped error, so
 // the pixel-weighted mean weight is 1. All-zero errors give every tile weight 1 (uniform).
 std::vector<double> adaptive_tile_weights(const AdaptiveTiles& tiles, const std::vector<double>& errors);
 
-// The weight of every pixel (its tile's), row-major: what the schedule reads, from the pilot's
-// per-pixel sums alone (every pixel holding `pilot_spp` samples), by `error`'s rule.
+// The weight of every pixel, row-major: what the schedule reads, from the pilot's per-pixel sums
+// alone (every pixel holding `pilot_spp` samples), by `error`'s rule (adaptive_sampling.cpp,
+// tile_errors, states the two errors). Cross-fitted on a checkerboard: the pixels with x + y even
+// get their tile's weight from the odd pixels alone (each tile's error, the percentile cap, the
+// mean, the relative rule's floor), and the odd ones from the even ones. So a pixel's count never
+// depends on its own samples, and its mean over them is exactly unbiased (a pixel's samples are
+// independent of every other pixel's: their own random streams). A tile with no pixel of the
+// other colour (a 1x1 corner tile) has error 0: the uniform share.
 std::vector<double> adaptive_pixel_weights(const AdaptiveTiles& tiles, AdaptiveError error, const std::vector<PixelSum>& sums,
                                            const std::vector<glm::dvec3>& sum_sq, int pilot_spp);
 

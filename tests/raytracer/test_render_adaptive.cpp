@@ -95,6 +95,55 @@ TEST_CASE("adaptive: tile weights follow the capped error, keep a uniform share 
     }
 }
 
+TEST_CASE("adaptive: a pixel's weight does not depend on its own samples (checkerboard cross-fit), and averages 1", "[render][adaptive]") {
+    // Made-up pilot sums of a 27x18 image (uneven tiles, a 3x2 corner tile), 16 samples a pixel,
+    // noisier towards the right; then one pixel at a time given a firefly.
+    const int w = 27, h = 18, n = 16;
+    const AdaptiveTiles tiles(w, h);
+    std::vector<PixelSum> sums(static_cast<std::size_t>(w) * h);
+    std::vector<glm::dvec3> sq(sums.size());
+    std::uint64_t state = 12345;
+    auto next = [&state] {
+        state = state * 6364136223846793005ull + 1442695040888963407ull;
+        return double(state >> 11) * 0x1p-53;
+    };
+    for (std::size_t p = 0; p < sums.size(); ++p) {
+        bool clamped = false;
+        const double spread = 0.1 + double(p % w) / w;
+        for (int k = 0; k < n; ++k) {
+            const float v = static_cast<float>(0.5 + spread * (next() - 0.5));
+            add_sample(sums[p], glm::vec3(v), clamped);
+            sq[p] += glm::dvec3(double(v) * v);
+        }
+    }
+    for (const AdaptiveError rule : {AdaptiveError::Mse, AdaptiveError::Relative}) {
+        const std::vector<double> base = adaptive_pixel_weights(tiles, rule, sums, sq, n);
+        // Each colour of the checkerboard has mean weight 1, so the image has too.
+        double mean[2] = {0.0, 0.0}, pixels[2] = {0.0, 0.0};
+        for (int y = 0; y < h; ++y)
+            for (int x = 0; x < w; ++x) {
+                mean[(x + y) & 1] += base[static_cast<std::size_t>(y) * w + x];
+                pixels[(x + y) & 1] += 1.0;
+            }
+        CHECK(mean[0] / pixels[0] == Approx(1.0).epsilon(1e-12));
+        CHECK(mean[1] / pixels[1] == Approx(1.0).epsilon(1e-12));
+        CHECK(*std::max_element(base.begin(), base.end()) > 1.2);  // the allocation is uneven
+        // Pixels of quiet tiles (a tile already at the 95th percentile's cap would not move).
+        for (const std::size_t p : {std::size_t{0}, std::size_t{5 * w + 3}, std::size_t{(h - 1) * w + 2}}) {
+            std::vector<PixelSum> s2 = sums;
+            std::vector<glm::dvec3> q2 = sq;
+            bool clamped = false;
+            add_sample(s2[p], glm::vec3(50.0f), clamped);
+            q2[p] += glm::dvec3(2500.0);
+            const std::vector<double> moved = adaptive_pixel_weights(tiles, rule, s2, q2, n);
+            INFO("pixel " << p);
+            CHECK(moved[p] == base[p]);  // exactly: nothing of its own samples is read
+            // ... while its firefly does move the weights of the other colour (the test can see one).
+            CHECK(moved[p + 1] != base[p + 1]);
+        }
+    }
+}
+
 TEST_CASE("adaptive: same image at any thread count, and pixel p holds samples 0..n_p-1 of its sequence", "[render][adaptive]") {
     const Scene s = adaptive_cornell(40, 32);
     const std::unique_ptr<Accel> accel = make_accel(AccelKind::Bvh, s);
