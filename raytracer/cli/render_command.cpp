@@ -375,7 +375,7 @@ void add_render_command(CLI::App& app, int& exit_code) {
                     "and the mean is within 1/2 of --spp N; with --time, passes of 8 spp on average until it is spent. on: "
                     "weight in proportion to the tile's standard deviation (least squared error of the linear image); "
                     "relative: to its relative variance (Tungsten's; favours dark tiles). Errors capped at the 95th "
-                    "percentile. Same image at any thread count and from any --samples split (A:B then nominal spp; each "
+                    "percentile; each pixel's weight from the other colour of a checkerboard, so unbiased. Same image at any thread count and from any --samples split (A:B then nominal spp; each "
                     "part renders the 16-spp pilot again); path integrator only, no guiding or --forensics "
                     "(docs/equal-time-interiors.md)")
         ->check(CLI::IsMember({"on", "relative", "off"}))
