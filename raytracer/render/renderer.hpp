@@ -59,7 +59,7 @@ struct RenderOptions {
     // passes in it, and past the pilot each pixel's samples between its counts at either end (the
     // part renders the whole pilot for its weights). spp <= the pilot: the uniform render exactly.
     bool adaptive = false;
-    AdaptiveError adaptive_error = AdaptiveError::Mse;  // where a round's samples go (adaptive_sampling.hpp)
+    AdaptiveError adaptive_error = AdaptiveError::Mse;  // where the samples after the pilot go (adaptive_sampling.hpp)
     const std::atomic<bool>* cancel = nullptr;  // set (e.g. by SIGINT) to stop early
     // Seconds (0 = none) after which the pass in flight is dropped and the render ends; the first
     // pass always completes. Counted on budget_clock from the start of render().
