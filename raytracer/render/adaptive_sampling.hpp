@@ -66,7 +66,8 @@ std::vector<double> adaptive_tile_weights(const AdaptiveTiles& tiles, const std:
 
 // The weight of every pixel, row-major: what the schedule reads, from the pilot's per-pixel sums
 // alone (every pixel holding `pilot_spp` samples), by `error`'s rule (adaptive_sampling.cpp,
-// tile_errors, states the two errors). Cross-fitted on a checkerboard: the pixels with x + y even
+// tile_errors, states the two errors; each tile's error is the mean over its 3x3 tiles, a steadier
+// estimate where the noise is fireflies). Cross-fitted on a checkerboard: the pixels with x + y even
 // get their tile's weight from the odd pixels alone (each tile's error, the percentile cap, the
 // mean, the relative rule's floor), and the odd ones from the even ones. So a pixel's count never
 // depends on its own samples, and its mean over them is exactly unbiased (a pixel's samples are
