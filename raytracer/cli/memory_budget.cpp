@@ -17,9 +17,10 @@ constexpr std::uint64_t kFilmBytesPerPixel = 2 * 24 + 3 * 12 + 12 + 2 * 3;
 // vertex itself, its photon (point, pixel, index) and its id in a grid cell with the table's share.
 // Counted at max_depth vertices per pixel, the most a light subpath holds.
 constexpr std::uint64_t kVcmBytesPerLightVertex = sizeof(PathVertex) + 20 + 16;
-// Adaptive sampling (render/renderer.cpp): per pixel its count of samples and its share of the
-// round (ints), the round in flight's sums and sums of squares.
-constexpr std::uint64_t kAdaptiveBytesPerPixel = 2 * sizeof(int) + sizeof(PixelSum) + sizeof(glm::dvec3);
+// Adaptive sampling (render/renderer.cpp, run_adaptive): per pixel its count of samples (int) and
+// weight (double), the pass in flight's sums and sums of squares, and once more those for a farm
+// part whose range starts inside the pilot (its own pilot passes beside the whole pilot's).
+constexpr std::uint64_t kAdaptiveBytesPerPixel = sizeof(int) + sizeof(double) + 2 * (sizeof(PixelSum) + sizeof(glm::dvec3));
 // Per primitive of the acceleration structure (a triangle, or an analytic object at the top
 // level): BVH nodes (~2 per primitive at 32 bytes), the primitive's index and precomputed test
 // data, and the builder's temporary boxes and centroids. Rounded up: Embree's is of that order.

@@ -1,5 +1,6 @@
 // `sweeptrace merge PART... -o final.png|.exr|.pfm`: farm parts (`render --samples A:B`) summed
-// into the image one machine's `render --spp N` gives, bit for bit. Parts of different renders,
+// into the image one machine's `render --spp N` gives, bit for bit (an adaptive render's too:
+// each pixel's mean over its count summed from the parts). Parts of different renders,
 // overlapping ranges or missing samples exit 2 naming what is wrong; nothing is written then.
 #include <algorithm>
 #include <cctype>
@@ -43,15 +44,14 @@ int run_merge(const MergeArgs& a) {
         if (part.id != headers[i].id || part.sample_begin != headers[i].sample_begin ||
             part.sample_end != headers[i].sample_end)
             throw InputError("'" + a.parts[i] + "' changed while the merge was reading it");
-        if (whole.sums.empty()) whole.sums.assign(part.sums.size(), PixelSum{});
-        for (std::size_t px = 0; px < whole.sums.size(); ++px) whole.sums[px] += part.sums[px];
+        add_part(whole, part, a.parts[i]);
     }
     whole.sample_end = whole.id.spp;
     const Image image = whole.mean();
     write_image(is_display_format(a.output) ? to_display(image) : image, a.output);
     if (!a.quiet)
-        std::fprintf(stderr, "merge: %zu parts, %dx%d, %d spp -> %s\n", headers.size(), whole.id.width, whole.id.height,
-                     whole.id.spp, a.output.c_str());
+        std::fprintf(stderr, "merge: %zu parts, %dx%d, %d spp%s -> %s\n", headers.size(), whole.id.width, whole.id.height,
+                     whole.id.spp, whole.id.adaptive == "off" ? "" : " adaptive (mean)", a.output.c_str());
     return 0;
 }
 

@@ -210,7 +210,7 @@ int run_render(const RenderArgs& a) {
     // A farm part: which samples, and the render they belong to; a re-run task skips a finished one.
     const SampleRange range =
         a.samples.empty() ? SampleRange{0, scene.film.spp} : parse_sample_range(a.samples, scene.film.spp);
-    const RenderIdentity identity = a.samples.empty() ? RenderIdentity{} : render_identity(scene, scene_path, a.accel);
+    const RenderIdentity identity = a.samples.empty() ? RenderIdentity{} : render_identity(scene, scene_path, a.accel, a.adaptive);
     if (a.skip_existing && is_finished_part(out, identity, range)) {
         if (!a.quiet) std::fprintf(stderr, "%s: already a verified part of this render, kept\n", out.string().c_str());
         return 0;
@@ -239,11 +239,8 @@ int run_render(const RenderArgs& a) {
     opt.adaptive = a.adaptive != "off";
     opt.adaptive_error = a.adaptive == "relative" ? AdaptiveError::Relative : AdaptiveError::Mse;
     if (opt.adaptive) {
-        // Each round's allocation is computed from the whole image of the rounds before it, so a
-        // farm part cannot know its samples without rendering everything before them.
-        require(a.samples.empty(),
-                "--adaptive on cannot be combined with --samples: each round's samples per pixel depend on the whole image "
-                "of the rounds before, which a farm part does not have; render farm parts with --adaptive off");
+        // A farm part (--samples) needs nothing more: its samples follow from the pilot, which it
+        // renders itself (renderer.cpp, run_adaptive).
         require(opt.integrator == IntegratorKind::Path,
                 "--adaptive on needs the path integrator: the light paths of bdpt and vcm add to other pixels than the "
                 "sample's, so a pixel's count of samples would not be its count of estimates");
@@ -351,7 +348,8 @@ void add_render_command(CLI::App& app, int& exit_code) {
     args->limits.add_options(*cmd);
     args->time_opt = cmd->add_option("--time", args->time,
                                      "Time budget in seconds (wall clock): whole passes of 1 spp until it is spent, at "
-                                     "least one; the image holds the finished passes. With --spp, whichever comes first");
+                                     "least one; the image holds the finished passes (--adaptive: after its pilot, passes of 8 spp on "
+                                     "average). With --spp, whichever comes first");
     cmd->add_option("--accel", args->accel, "Acceleration structure")
         ->check(CLI::IsMember({"bvh", "embree"}))
         ->capture_default_str();
@@ -372,12 +370,14 @@ void add_render_command(CLI::App& app, int& exit_code) {
                     "(default: the scene's film.integrator)")
         ->check(CLI::IsMember({"path", "bdpt", "vcm"}));
     cmd->add_option("--adaptive", args->adaptive,
-                    "Adaptive sampling: a 16-spp pilot, then rounds of 8 spp on average over 8x8 tiles (1/8 of each round "
-                    "spread evenly), until --spp on average (or --time) is spent. on: each tile's count towards its share "
-                    "in proportion to its samples' standard deviation (least squared error of the linear image); relative: "
-                    "each round in proportion to the tile's relative variance (Tungsten's; favours dark tiles). Errors "
-                    "capped at the 95th percentile. Same image at any thread count; path integrator only, no --samples, "
-                    "guiding or --forensics (docs/equal-time-interiors.md)")
+                    "Adaptive sampling: a 16-spp pilot, then each 8x8 tile's samples in proportion to a weight from the "
+                    "pilot's error (1/8 of them spread evenly), so that each pixel gets 16 + round((N - 16) x its weight) "
+                    "and the mean is within 1/2 of --spp N; with --time, passes of 8 spp on average until it is spent. on: "
+                    "weight in proportion to the tile's standard deviation (least squared error of the linear image); "
+                    "relative: to its relative variance (Tungsten's; favours dark tiles). Errors capped at the 95th "
+                    "percentile; each pixel's weight from the other colour of a checkerboard, so unbiased. Same image at any thread count and from any --samples split (A:B then nominal spp; each "
+                    "part renders the 16-spp pilot again); path integrator only, no guiding or --forensics "
+                    "(docs/equal-time-interiors.md)")
         ->check(CLI::IsMember({"on", "relative", "off"}))
         ->capture_default_str();
     cmd->add_flag("--quiet", args->quiet, "No progress display and no summary");
@@ -385,7 +385,7 @@ void add_render_command(CLI::App& app, int& exit_code) {
                   "A .pbrt scene: refuse (exit 2) anything the translation would approximate or ignore, instead of a warning");
     cmd->add_option("--samples", args->samples,
                     "A:B: render only sample indices [A, B) of the --spp render, to a farm part (.exr) for "
-                    "`sweeptrace merge`");
+                    "`sweeptrace merge` (with --adaptive: nominal spp, see there)");
     cmd->add_flag("--skip-existing", args->skip_existing,
                   "With --samples: keep the output if it already is this render's verified part for A:B");
     cmd->callback([args, &exit_code] { exit_code = run_render(*args); });

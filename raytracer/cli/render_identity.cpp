@@ -40,7 +40,8 @@ std::string scene_content_hash(const Scene& scene, const std::filesystem::path& 
     return buf;
 }
 
-RenderIdentity render_identity(const Scene& scene, const std::filesystem::path& scene_file, const std::string& accel) {
+RenderIdentity render_identity(const Scene& scene, const std::filesystem::path& scene_file, const std::string& accel,
+                               const std::string& adaptive) {
     RenderIdentity id;
     id.scene_hash = scene_content_hash(scene, scene_file);
     id.width = scene.film.width;
@@ -49,6 +50,7 @@ RenderIdentity render_identity(const Scene& scene, const std::filesystem::path& 
     id.max_depth = scene.film.max_depth;
     id.accel = accel;
     id.integrator = integrator_name(scene.film.integrator);
+    id.adaptive = adaptive;
     id.version = program_version();
     id.spp = scene.film.spp;
     return id;

@@ -1,7 +1,7 @@
 #pragma once
 // What identifies a render for the farm (image/partial_image.hpp): the scene's content hash,
-// the film size, seed, depth, integrator and spp after the command line's overrides, the accelerator and
-// the program version.
+// the film size, seed, depth, integrator and spp after the command line's overrides, the accelerator,
+// the adaptive sampling mode and the program version.
 #include <filesystem>
 #include <string>
 
@@ -17,7 +17,9 @@ namespace sweeptrace {
 // Throws InputError when a file cannot be read.
 std::string scene_content_hash(const Scene& scene, const std::filesystem::path& scene_file);
 
-// `scene` with its overrides applied (film size, spp, max_depth, seed).
-RenderIdentity render_identity(const Scene& scene, const std::filesystem::path& scene_file, const std::string& accel);
+// `scene` with its overrides applied (film size, spp, max_depth, seed); `adaptive` is render
+// --adaptive's value ("off", "on", "relative"), since parts of different allocations never merge.
+RenderIdentity render_identity(const Scene& scene, const std::filesystem::path& scene_file, const std::string& accel,
+                               const std::string& adaptive);
 
 }  // namespace sweeptrace

@@ -44,6 +44,10 @@ void write_part(const RenderResult& result, const RenderIdentity& id, int first_
     part.sample_begin = first_sample;
     part.sample_end = first_sample + result.stats.completed_spp;
     part.sums = result.sums;
+    // Adaptive: each pixel's own count (a range inside the pilot is uniform: completed_spp each).
+    if (id.adaptive != "off")
+        part.counts = !result.pixel_samples.empty() ? result.pixel_samples
+                                                    : std::vector<int>(result.sums.size(), result.stats.completed_spp);
     write_partial(part, path);
 }
 

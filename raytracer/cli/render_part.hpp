@@ -12,7 +12,8 @@ struct SampleRange {
     int begin = 0, end = 0;  // [begin, end)
 };
 
-// "A:B" with 0 <= A < B <= spp; throws InputError naming --samples and saying why.
+// "A:B" with 0 <= A < B <= spp; throws InputError naming --samples and saying why. Under
+// adaptive sampling A:B are nominal spp (render/adaptive_sampling.hpp): any split works.
 SampleRange parse_sample_range(const std::string& text, int spp);
 
 // True when `path` exists, reads, verifies, and is the part of `id` for exactly `range`: the
@@ -21,6 +22,7 @@ bool is_finished_part(const std::filesystem::path& path, const RenderIdentity& i
 
 // The part of the samples `result` completed, from `first_sample` on (fewer than asked when the
 // render was interrupted: then the part says so, and the merge reports the rest as missing).
+// Under adaptive sampling (id.adaptive) the range is nominal spp and each pixel's count is kept.
 void write_part(const RenderResult& result, const RenderIdentity& id, int first_sample,
                 const std::filesystem::path& path);
 

@@ -8,6 +8,7 @@
 
 #include <charconv>
 #include <cstdio>
+#include <limits>
 #include <map>
 #include <string>
 
@@ -18,10 +19,11 @@
 namespace sweeptrace {
 namespace {
 
-constexpr const char* kFormatVersion = "1";
+constexpr const char* kFormatVersion = "2";  // 2: sweeptrace.adaptive and the count channel
 constexpr int kWords = 4;                    // 32-bit words per 128-bit sum
 constexpr int kSumChannels = 3 * kWords;     // sum.R.0 .. sum.B.3
 const char* const kColor[3] = {"R", "G", "B"};
+constexpr const char* kCountChannel = "count";  // adaptive parts only
 
 std::string sum_channel(int color, int word) { return std::string("sum.") + kColor[color] + "." + std::to_string(word); }
 
@@ -33,6 +35,7 @@ std::map<std::string, std::string> attributes_of(const PartialImage& p) {
             {"sweeptrace.maxDepth", std::to_string(p.id.max_depth)},
             {"sweeptrace.accel", p.id.accel},
             {"sweeptrace.integrator", p.id.integrator},
+            {"sweeptrace.adaptive", p.id.adaptive},
             {"sweeptrace.version", p.id.version},
             {"sweeptrace.spp", std::to_string(p.id.spp)},
             {"sweeptrace.samples", std::to_string(p.sample_begin) + ":" + std::to_string(p.sample_end)},
@@ -49,13 +52,14 @@ struct Fnv {
     void add(const std::string& s) { add(s.data(), s.size() + 1); }  // with the NUL, so fields do not run together
 };
 
-std::string checksum_of(const PartialImage& p, const std::vector<std::uint32_t>& words) {
+std::string checksum_of(const PartialImage& p, const std::vector<std::uint32_t>& words, const std::vector<std::uint32_t>& counts) {
     Fnv f;
     for (const auto& [key, value] : attributes_of(p)) {
         f.add(key);
         f.add(value);
     }
     f.add(words.data(), words.size() * sizeof(std::uint32_t));
+    f.add(counts.data(), counts.size() * sizeof(std::uint32_t));
     char buf[17];
     std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(f.h));
     return buf;
@@ -82,12 +86,21 @@ std::vector<PixelSum> sums_of(const std::vector<std::uint32_t>& w) {
     return sums;
 }
 
-void write_exr_part(const PartialImage& part, const std::vector<std::uint32_t>& words, const std::filesystem::path& path) {
+// An adaptive part's counts as stored (a uniform part: none).
+std::vector<std::uint32_t> counts_of(const PartialImage& part) {
+    if (part.id.adaptive == "off") return {};
+    std::vector<std::uint32_t> c(part.sums.size());
+    for (std::size_t i = 0; i < c.size(); ++i) c[i] = static_cast<std::uint32_t>(part.count(i));
+    return c;
+}
+
+void write_exr_part(const PartialImage& part, const std::vector<std::uint32_t>& words, const std::vector<std::uint32_t>& counts,
+                    const std::filesystem::path& path) {
     const int w = part.id.width, h = part.id.height;
     Imf::Header header(w, h);
     header.compression() = Imf::ZIP_COMPRESSION;
     for (const auto& [key, value] : attributes_of(part)) header.insert(key, Imf::StringAttribute(value));
-    header.insert("sweeptrace.checksum", Imf::StringAttribute(checksum_of(part, words)));
+    header.insert("sweeptrace.checksum", Imf::StringAttribute(checksum_of(part, words, counts)));
     const Image preview = part.mean();
     Imf::FrameBuffer frame;
     auto* rgb = const_cast<char*>(reinterpret_cast<const char*>(preview.pixels.data()));
@@ -103,6 +116,11 @@ void write_exr_part(const PartialImage& part, const std::vector<std::uint32_t>& 
             frame.insert(sum_channel(c, k),
                          Imf::Slice(Imf::UINT, base + (c * kWords + k) * sizeof(std::uint32_t), xs, xs * w));
         }
+    if (!counts.empty()) {
+        header.channels().insert(kCountChannel, Imf::Channel(Imf::UINT));
+        frame.insert(kCountChannel, Imf::Slice(Imf::UINT, const_cast<char*>(reinterpret_cast<const char*>(counts.data())),
+                                               sizeof(std::uint32_t), sizeof(std::uint32_t) * w));
+    }
     Imf::OutputFile file(path.c_str(), header);
     file.setFrameBuffer(frame);
     file.writePixels(h);
@@ -125,9 +143,9 @@ T number(const std::string& text, const std::string& key, const std::string& fil
 
 // The identity and range from the header; the sums are read by the caller.
 PartialImage header_part(const Imf::Header& hd, const std::string& file) {
-    if (attribute(hd, "sweeptrace.part", file) != kFormatVersion)
-        throw InputError("'" + file + "': part format " + attribute(hd, "sweeptrace.part", file) + ", this program reads " +
-                         kFormatVersion);
+    if (const std::string v = attribute(hd, "sweeptrace.part", file); v != kFormatVersion)
+        throw InputError("'" + file + "': part format " + v + ", this program reads " + kFormatVersion +
+                         " (render the part again with this program)");
     if (attribute(hd, "sweeptrace.fractionBits", file) != std::to_string(kSumFractionBits))
         throw InputError("'" + file + "': fixed point with " + attribute(hd, "sweeptrace.fractionBits", file) +
                          " fraction bits, this program uses " + std::to_string(kSumFractionBits));
@@ -143,6 +161,9 @@ PartialImage header_part(const Imf::Header& hd, const std::string& file) {
     p.id.max_depth = static_cast<int>(number(attribute(hd, "sweeptrace.maxDepth", file), "sweeptrace.maxDepth", file));
     p.id.accel = attribute(hd, "sweeptrace.accel", file);
     p.id.integrator = attribute(hd, "sweeptrace.integrator", file);
+    p.id.adaptive = attribute(hd, "sweeptrace.adaptive", file);
+    if (p.id.adaptive != "off" && p.id.adaptive != "on" && p.id.adaptive != "relative")
+        throw InputError("'" + file + "': sweeptrace.adaptive is '" + p.id.adaptive + "', not off, on or relative");
     p.id.version = attribute(hd, "sweeptrace.version", file);
     p.id.spp = static_cast<int>(number(attribute(hd, "sweeptrace.spp", file), "sweeptrace.spp", file));
     const std::string range = attribute(hd, "sweeptrace.samples", file);
@@ -162,10 +183,13 @@ void write_partial(const PartialImage& part, const std::filesystem::path& path) 
         part.sums.empty())
         throw InputError("cannot write '" + path.string() + "': part of " + std::to_string(part.id.width) + "x" +
                          std::to_string(part.id.height) + " holds " + std::to_string(part.sums.size()) + " sums");
+    if (part.id.adaptive != "off" && part.counts.size() != part.sums.size())
+        throw InputError("cannot write '" + path.string() + "': an adaptive part needs a count per pixel");
     const std::vector<std::uint32_t> words = words_of(part.sums);
+    const std::vector<std::uint32_t> counts = counts_of(part);
     write_atomically(path, [&](const std::filesystem::path& temp) {
         try {
-            write_exr_part(part, words, temp);
+            write_exr_part(part, words, counts, temp);
         } catch (const std::exception& e) {
             throw InputError("cannot write '" + path.string() + "': " + e.what());
         }
@@ -203,11 +227,24 @@ PartialImage read_partial(const std::filesystem::path& path) {
                                                                           (c * kWords + k) * sizeof(std::uint32_t),
                                                            xs, xs * w));
             }
+        std::vector<std::uint32_t> counts;
+        if (p.id.adaptive != "off") {
+            if (!in.header().channels().findChannel(kCountChannel))
+                throw InputError("'" + file + "': an adaptive part without its " + kCountChannel + " channel");
+            counts.resize(static_cast<std::size_t>(w) * p.id.height);
+            frame.insert(kCountChannel, Imf::Slice(Imf::UINT, reinterpret_cast<char*>(counts.data()), sizeof(std::uint32_t),
+                                                   sizeof(std::uint32_t) * w));
+        }
         in.setFrameBuffer(frame);
         in.readPixels(0, p.id.height - 1);
-        if (checksum_of(p, words) != attribute(in.header(), "sweeptrace.checksum", file))
+        if (checksum_of(p, words, counts) != attribute(in.header(), "sweeptrace.checksum", file))
             throw InputError("'" + file + "': checksum does not match its contents (damaged or edited part)");
         p.sums = sums_of(words);
+        for (const std::uint32_t c : counts) {
+            if (c > static_cast<std::uint32_t>(std::numeric_limits<int>::max()))
+                throw InputError("'" + file + "': a pixel's count " + std::to_string(c) + " does not fit in an int");
+            p.counts.push_back(static_cast<int>(c));
+        }
         return p;
     } catch (const InputError&) {
         throw;

@@ -1,18 +1,23 @@
 #pragma once
 // A farm part: the exact per-pixel sums of sample indices [sample_begin, sample_end) of one
 // render, and what identifies that render, so that parts from different renders are never summed.
+// Under adaptive sampling (render --adaptive, render/adaptive_sampling.hpp) the range is nominal
+// spp and each pixel holds its own count of samples, which the part stores.
 //
 // File format (`render --samples A:B -o part.exr`): an OpenEXR file any viewer opens, whose
 // R, G, B (FLOAT) hold the part's own mean (a preview), and whose twelve UINT channels
 // `sum.R.0` .. `sum.B.3` hold each channel's 128-bit two's-complement fixed-point sum
-// (partial_sum.hpp) as four 32-bit words, least significant first. String attributes:
-//   sweeptrace.part         format version, "1"
+// (partial_sum.hpp) as four 32-bit words, least significant first; an adaptive part also has a
+// UINT channel `count`, each pixel's number of samples. String attributes:
+//   sweeptrace.part         format version, "2" (format 1, before adaptive parts, is refused:
+//                           its parts came from an older program, which merge refuses anyway)
 //   sweeptrace.sceneHash    hash of the scene file and the mesh files it loads
 //   sweeptrace.seed, sweeptrace.maxDepth, sweeptrace.accel, sweeptrace.version (the program's)
+//   sweeptrace.adaptive     "off", "on" or "relative": render --adaptive
 //   sweeptrace.spp          samples per pixel of the whole render the part belongs to
 //   sweeptrace.samples      "A:B", the part's half-open range of sample indices
 //   sweeptrace.fractionBits "56", the fixed point's scale
-//   sweeptrace.checksum     FNV-1a 64 of the sums and the attributes above, in hex
+//   sweeptrace.checksum     FNV-1a 64 of the sums, the counts and the attributes above, in hex
 // The resolution is the data window. A part that reads and whose checksum matches "verifies".
 #include <cstdint>
 #include <filesystem>
@@ -32,6 +37,7 @@ struct RenderIdentity {
     int max_depth = 0;
     std::string accel;
     std::string integrator;  // film.integrator after --integrator ("path", "bdpt", "vcm")
+    std::string adaptive = "off";  // render --adaptive: "off", "on" or "relative"
     std::string version;
     int spp = 0;  // the whole render's samples per pixel: the parts cover [0, spp)
 
@@ -45,8 +51,12 @@ struct PartialImage {
     RenderIdentity id;
     int sample_begin = 0, sample_end = 0;  // [begin, end): every pixel holds end - begin samples
     std::vector<PixelSum> sums;            // row-major, id.width * id.height
+    // Adaptive (id.adaptive != "off"): each pixel's own count of samples, row-major; empty for a
+    // uniform part, whose pixels all hold end - begin. A pixel may hold none in a short range.
+    std::vector<int> counts;
 
-    Image mean() const;  // mean_of each sum over the part's sample count
+    int count(std::size_t pixel) const { return counts.empty() ? sample_end - sample_begin : counts[pixel]; }
+    Image mean() const;  // mean_of each sum over its pixel's count (black for none)
 };
 
 // Atomic (temporary file + rename). Throws InputError naming `path`.
@@ -67,7 +77,13 @@ PartialImage read_partial_header(const std::filesystem::path& path);
 // (naming the range). `names[i]` is the file `parts[i]` was read from.
 std::vector<std::size_t> check_partials(const std::vector<PartialImage>& parts, const std::vector<std::string>& names);
 
-// check_partials, then the sums added in that order: the whole render as one part.
+// check_partials, then the sums (and an adaptive render's counts) added in that order: the whole
+// render as one part. Throws InputError should a pixel's total count not fit in an int.
 PartialImage merge_partials(const std::vector<PartialImage>& parts, const std::vector<std::string>& names);
+
+// Adds `part` (read from `name`) to `whole` (its id set; sums empty or of the same size): the
+// sums, and under adaptive sampling the counts. The merge's one step, for a merge that reads one
+// part at a time. Throws InputError should a pixel's count not fit in an int.
+void add_part(PartialImage& whole, const PartialImage& part, const std::string& name);
 
 }  // namespace sweeptrace

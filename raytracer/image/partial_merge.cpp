@@ -2,6 +2,8 @@
 // are added in cannot change the result; they are still added in order of their ranges, one
 // fixed order, so that the code states no more than it needs.
 #include <algorithm>
+#include <cstdint>
+#include <limits>
 #include <numeric>
 #include <string>
 
@@ -51,7 +53,7 @@ std::string identity_difference(const RenderIdentity& a, const RenderIdentity& b
          {differs("scene hash", a.scene_hash, b.scene_hash), differs("width", a.width, b.width),
           differs("height", a.height, b.height), differs("seed", a.seed, b.seed),
           differs("max depth", a.max_depth, b.max_depth), differs("accel", a.accel, b.accel),
-          differs("integrator", a.integrator, b.integrator),
+          differs("integrator", a.integrator, b.integrator), differs("adaptive sampling", a.adaptive, b.adaptive),
           differs("program version", a.version, b.version), differs("spp", a.spp, b.spp)})
         if (!d.empty()) return d;
     return {};
@@ -60,7 +62,7 @@ std::string identity_difference(const RenderIdentity& a, const RenderIdentity& b
 Image PartialImage::mean() const {
     Image img(id.width, id.height);
     for (std::size_t i = 0; i < sums.size() && i < img.pixels.size(); ++i)
-        img.pixels[i] = mean_of(sums[i], sample_end - sample_begin);
+        if (count(i) > 0) img.pixels[i] = mean_of(sums[i], count(i));
     return img;
 }
 
@@ -77,6 +79,19 @@ std::vector<std::size_t> check_partials(const std::vector<PartialImage>& parts, 
     return order;
 }
 
+void add_part(PartialImage& whole, const PartialImage& part, const std::string& name) {
+    if (whole.sums.empty()) whole.sums.assign(part.sums.size(), PixelSum{});
+    for (std::size_t px = 0; px < whole.sums.size(); ++px) whole.sums[px] += part.sums[px];
+    if (whole.id.adaptive == "off") return;
+    if (whole.counts.empty()) whole.counts.assign(whole.sums.size(), 0);
+    for (std::size_t px = 0; px < whole.counts.size(); ++px) {
+        const std::int64_t n = std::int64_t{whole.counts[px]} + part.count(px);
+        if (n > std::numeric_limits<int>::max())
+            throw InputError("'" + name + "': pixel " + std::to_string(px) + "'s samples over all parts do not fit in an int");
+        whole.counts[px] = static_cast<int>(n);
+    }
+}
+
 PartialImage merge_partials(const std::vector<PartialImage>& parts, const std::vector<std::string>& names) {
     const std::vector<std::size_t> order = check_partials(parts, names);
     PartialImage whole;
@@ -84,8 +99,7 @@ PartialImage merge_partials(const std::vector<PartialImage>& parts, const std::v
     whole.sample_begin = 0;
     whole.sample_end = whole.id.spp;
     whole.sums.assign(parts[0].sums.size(), PixelSum{});
-    for (std::size_t i : order)
-        for (std::size_t px = 0; px < whole.sums.size(); ++px) whole.sums[px] += parts[i].sums[px];
+    for (std::size_t i : order) add_part(whole, parts[i], names[i]);
     return whole;
 }
 

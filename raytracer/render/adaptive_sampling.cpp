@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numeric>
 
 #include <glm/common.hpp>
 
@@ -35,36 +34,75 @@ PixelMoments pixel_moments(const PixelSum& sum, const glm::dvec3& sum_sq, int co
     return pm;
 }
 
-}  // namespace
+// The pixels a tile measure reads: all of them, or one colour of the checkerboard ((x + y) % 2).
+constexpr int kAllPixels = -1;
+bool in_set(int x, int y, int parity) { return parity == kAllPixels || ((x + y) & 1) == parity; }
 
-std::vector<double> adaptive_tile_errors(const AdaptiveTiles& tiles, const std::vector<PixelSum>& sums,
-                                         const std::vector<glm::dvec3>& sum_sq, const std::vector<int>& counts) {
-    const int n = tiles.count();
-    std::vector<double> var(static_cast<std::size_t>(n), 0.0), mean(static_cast<std::size_t>(n), 0.0);
-    double image_mean = 0.0;
+// Per tile, the number of its pixels in the set.
+std::vector<double> pixels_per_tile(const AdaptiveTiles& tiles, int parity) {
+    std::vector<double> n(static_cast<std::size_t>(tiles.count()), 0.0);
     for (int y = 0; y < tiles.height; ++y)
-        for (int x = 0; x < tiles.width; ++x) {
-            const std::size_t p = static_cast<std::size_t>(y) * tiles.width + x;
-            const int c = counts[p];
-            if (c < 1) continue;
-            const PixelMoments pm = pixel_moments(sums[p], sum_sq[p], c);
-            const auto t = static_cast<std::size_t>(tiles.of_pixel(x, y));
-            var[t] += pm.sample_variance / double(c);  // the variance of the pixel's mean
-            mean[t] += pm.mean;
-            image_mean += pm.mean;
-        }
-    image_mean /= double(tiles.width) * double(tiles.height);
-    const double floor = 1e-4 * image_mean * image_mean + 1e-30;
-    std::vector<double> err(static_cast<std::size_t>(n));
-    for (int t = 0; t < n; ++t) {
-        const double k = tiles.pixels_in(t);
-        const double m = mean[static_cast<std::size_t>(t)] / k;
-        err[static_cast<std::size_t>(t)] = (var[static_cast<std::size_t>(t)] / k) / (m * m + floor);
-    }
-    return err;
+        for (int x = 0; x < tiles.width; ++x)
+            if (in_set(x, y, parity)) n[static_cast<std::size_t>(tiles.of_pixel(x, y))] += 1.0;
+    return n;
 }
 
-namespace {
+// Each tile's value replaced by the mean over its 3x3 neighbourhood of tiles (those inside the
+// image). Why: where the noise is fireflies, 16 pilot samples of one tile's 32 pixels of a colour
+// mostly say which tiles happened to catch one, and following that moves samples at random; nine
+// tiles' pixels estimate the noise of the region (classroom, docs/equal-time-interiors.md: 0.88 of
+// the unsmoothed RMSE at equal time, 0.97 to 1.02 on the other five scenes).
+std::vector<double> neighbourhood_mean(const AdaptiveTiles& tiles, const std::vector<double>& v) {
+    std::vector<double> out(v.size(), 0.0);
+    for (int ty = 0; ty < tiles.tiles_y; ++ty)
+        for (int tx = 0; tx < tiles.tiles_x; ++tx) {
+            double sum = 0.0, count = 0.0;
+            for (int y = std::max(ty - 1, 0); y <= std::min(ty + 1, tiles.tiles_y - 1); ++y)
+                for (int x = std::max(tx - 1, 0); x <= std::min(tx + 1, tiles.tiles_x - 1); ++x) {
+                    sum += v[static_cast<std::size_t>(y) * tiles.tiles_x + x];
+                    count += 1.0;
+                }
+            out[static_cast<std::size_t>(ty) * tiles.tiles_x + tx] = sum / count;
+        }
+    return out;
+}
+
+// Per tile, the error of AdaptiveError's rule, read from the tile's pixels in the set alone (a
+// tile with none of them: 0), then averaged over its neighbourhood (neighbourhood_mean). Every
+// pixel holds `count` samples (the pilot's).
+// - Relative: the relative variance of the tile's mean radiance, the mean over its pixels of each
+//   pixel mean's estimated variance (the unbiased sample variance / count, averaged over
+//   channels) divided by the square of the tile's mean radiance plus a floor of (1% of the set's
+//   mean)^2, so a black tile's variance is not divided by zero.
+// - Mse: the per-sample standard deviation, the square root of the mean over its pixels of the
+//   unbiased sample variance (averaged over channels).
+std::vector<double> tile_errors(const AdaptiveTiles& tiles, AdaptiveError rule, const std::vector<PixelSum>& sums,
+                                const std::vector<glm::dvec3>& sum_sq, int count, int parity) {
+    const auto n = static_cast<std::size_t>(tiles.count());
+    std::vector<double> var(n, 0.0), mean(n, 0.0);
+    const std::vector<double> k = pixels_per_tile(tiles, parity);
+    double set_mean = 0.0, set_pixels = 0.0;
+    for (int y = 0; y < tiles.height; ++y)
+        for (int x = 0; x < tiles.width; ++x) {
+            if (!in_set(x, y, parity)) continue;
+            const std::size_t p = static_cast<std::size_t>(y) * tiles.width + x;
+            const PixelMoments pm = pixel_moments(sums[p], sum_sq[p], count);
+            const auto t = static_cast<std::size_t>(tiles.of_pixel(x, y));
+            var[t] += pm.sample_variance;
+            mean[t] += pm.mean;
+            set_mean += pm.mean;
+            set_pixels += 1.0;
+        }
+    set_mean /= std::max(set_pixels, 1.0);
+    const double floor = 1e-4 * set_mean * set_mean + 1e-30;
+    std::vector<double> err(n, 0.0);
+    for (std::size_t t = 0; t < n; ++t) {
+        if (k[t] == 0.0) continue;
+        const double m = mean[t] / k[t];
+        err[t] = rule == AdaptiveError::Relative ? (var[t] / k[t] / double(count)) / (m * m + floor) : std::sqrt(var[t] / k[t]);
+    }
+    return neighbourhood_mean(tiles, err);
+}
 
 // The errors capped at the kAdaptiveCapPercentile-th percentile, by nth_element on a copy (a
 // deterministic order statistic; ties do not matter, the value is the same). All ones when the
@@ -80,128 +118,39 @@ std::vector<double> capped(const std::vector<double>& errors) {
     return w;
 }
 
-// Pixel-weighted mean over tiles.
-double tile_mean(const AdaptiveTiles& tiles, const std::vector<double>& v) {
-    double sum = 0.0;
-    for (int t = 0; t < tiles.count(); ++t) sum += v[static_cast<std::size_t>(t)] * tiles.pixels_in(t);
-    return sum / (double(tiles.width) * double(tiles.height));
-}
-
-std::vector<int> distribute(const AdaptiveTiles& tiles, const std::vector<double>& x, std::int64_t budget);
-
-// A round of `budget` samples: the uniform share evenly, the rest in proportion to each tile's
-// weight; returned as whole samples per pixel.
-std::vector<int> split_round(const AdaptiveTiles& tiles, const std::vector<double>& weight, std::int64_t budget) {
-    const double mean_w = tile_mean(tiles, weight);
-    // Each tile's samples per pixel, as a real number.
-    const double per_pixel_avg = double(budget) / (double(tiles.width) * double(tiles.height));
-    std::vector<double> x(weight.size());
-    for (std::size_t t = 0; t < weight.size(); ++t)
-        x[t] = per_pixel_avg * (kAdaptiveUniformShare + (1.0 - kAdaptiveUniformShare) * weight[t] / mean_w);
-    return distribute(tiles, x, budget);
+// adaptive_tile_weights for tiles whose weights serve `pixels[t]` pixels each: the mean is 1 over
+// those pixels.
+std::vector<double> weights_of(const std::vector<double>& errors, const std::vector<double>& pixels) {
+    const std::vector<double> e = capped(errors);
+    double sum = 0.0, total = 0.0;
+    for (std::size_t t = 0; t < e.size(); ++t) {
+        sum += e[t] * pixels[t];
+        total += pixels[t];
+    }
+    const double mean_e = sum / std::max(total, 1.0);
+    std::vector<double> w(e.size(), 1.0);
+    if (mean_e > 0.0 && std::isfinite(mean_e))
+        for (std::size_t t = 0; t < e.size(); ++t) w[t] = kAdaptiveUniformShare + (1.0 - kAdaptiveUniformShare) * e[t] / mean_e;
+    return w;
 }
 
 }  // namespace
 
-std::vector<double> adaptive_tile_deviations(const AdaptiveTiles& tiles, const std::vector<PixelSum>& sums,
-                                             const std::vector<glm::dvec3>& sum_sq, const std::vector<int>& counts) {
-    std::vector<double> var(static_cast<std::size_t>(tiles.count()), 0.0);
-    for (int y = 0; y < tiles.height; ++y)
-        for (int x = 0; x < tiles.width; ++x) {
-            const std::size_t p = static_cast<std::size_t>(y) * tiles.width + x;
-            var[static_cast<std::size_t>(tiles.of_pixel(x, y))] += pixel_moments(sums[p], sum_sq[p], counts[p]).sample_variance;
-        }
-    for (int t = 0; t < tiles.count(); ++t)
-        var[static_cast<std::size_t>(t)] = std::sqrt(var[static_cast<std::size_t>(t)] / tiles.pixels_in(t));
-    return var;
+std::vector<double> adaptive_tile_weights(const AdaptiveTiles& tiles, const std::vector<double>& errors) {
+    return weights_of(errors, pixels_per_tile(tiles, kAllPixels));
 }
 
-std::vector<int> adaptive_round(const AdaptiveTiles& tiles, const std::vector<double>& errors, std::int64_t budget) {
-    if (budget <= 0) return std::vector<int>(static_cast<std::size_t>(tiles.width) * tiles.height, 0);
-    return split_round(tiles, capped(errors), budget);
-}
-
-std::vector<int> adaptive_round_mse(const AdaptiveTiles& tiles, const std::vector<double>& deviations,
-                                    const std::vector<int>& counts, std::int64_t budget) {
-    const int n = tiles.count();
-    const double pixels = double(tiles.width) * double(tiles.height);
-    if (budget <= 0) return std::vector<int>(static_cast<std::size_t>(tiles.width) * tiles.height, 0);
-    const std::vector<double> sigma = capped(deviations);
-    const double mean_sigma = tile_mean(tiles, sigma);
-    std::vector<double> have(static_cast<std::size_t>(n), 0.0);
-    std::int64_t spent = 0;
-    for (int y = 0; y < tiles.height; ++y)
-        for (int xx = 0; xx < tiles.width; ++xx) {
-            const int c = counts[static_cast<std::size_t>(y) * tiles.width + xx];
-            have[static_cast<std::size_t>(tiles.of_pixel(xx, y))] += c;
-            spent += c;
-        }
-    const double after = double(spent + budget) / pixels;  // mean samples per pixel after the round
-    std::vector<double> shortfall(static_cast<std::size_t>(n));
-    for (int t = 0; t < n; ++t) {
-        const double want = after * sigma[static_cast<std::size_t>(t)] / mean_sigma;
-        shortfall[static_cast<std::size_t>(t)] = std::max(0.0, want - have[static_cast<std::size_t>(t)] / tiles.pixels_in(t));
-    }
-    // Every tile at or above its share: by sigma, as a fresh start would.
-    return split_round(tiles, tile_mean(tiles, shortfall) > 0.0 ? shortfall : sigma, budget);
-}
-
-namespace {
-
-// Whole samples per pixel from each tile's real number x_t, exactly `budget` in all: the floors,
-// then the leftover by largest fractional part (see adaptive_round).
-std::vector<int> distribute(const AdaptiveTiles& tiles, const std::vector<double>& x, std::int64_t budget) {
-    const int n = tiles.count();
-    std::vector<int> per_pixel(static_cast<std::size_t>(tiles.width) * tiles.height, 0);
-    std::vector<int> base(static_cast<std::size_t>(n));
-    std::vector<double> frac(static_cast<std::size_t>(n));
-    std::int64_t given = 0;
-    for (int t = 0; t < n; ++t) {
-        const double f = std::floor(x[static_cast<std::size_t>(t)]);
-        base[static_cast<std::size_t>(t)] = static_cast<int>(f);
-        frac[static_cast<std::size_t>(t)] = x[static_cast<std::size_t>(t)] - f;
-        given += static_cast<std::int64_t>(f) * tiles.pixels_in(t);
-    }
-    // Leftover from the floors goes by largest fractional part; should rounding in x ever make the
-    // floors overshoot the budget, samples are taken back from the smallest fractions instead.
-    std::vector<int> order(static_cast<std::size_t>(n));
-    std::iota(order.begin(), order.end(), 0);
-    std::stable_sort(order.begin(), order.end(),
-                     [&](int a, int b) { return frac[static_cast<std::size_t>(a)] > frac[static_cast<std::size_t>(b)]; });
+std::vector<double> adaptive_pixel_weights(const AdaptiveTiles& tiles, AdaptiveError error, const std::vector<PixelSum>& sums,
+                                           const std::vector<glm::dvec3>& sum_sq, int pilot_spp) {
+    // weights[q]: per tile, for the pixels of colour q, from the pixels of the other colour alone.
+    std::vector<double> weights[2];
+    for (int q = 0; q < 2; ++q)
+        weights[q] = weights_of(tile_errors(tiles, error, sums, sum_sq, pilot_spp, 1 - q), pixels_per_tile(tiles, q));
+    std::vector<double> w(sums.size());
     for (int y = 0; y < tiles.height; ++y)
         for (int x = 0; x < tiles.width; ++x)
-            per_pixel[static_cast<std::size_t>(y) * tiles.width + x] = base[static_cast<std::size_t>(tiles.of_pixel(x, y))];
-    std::int64_t left = budget - given;
-    // Leftover: one more sample per pixel, tile by tile in order of fractional part, pixel by
-    // pixel within the last tile reached; repeated (rarely) while samples remain.
-    while (left > 0) {
-        for (int t : order) {
-            const int x0 = (t % tiles.tiles_x) * kAdaptiveTile, y0 = (t / tiles.tiles_x) * kAdaptiveTile;
-            for (int y = y0; y < std::min(y0 + kAdaptiveTile, tiles.height) && left > 0; ++y)
-                for (int x = x0; x < std::min(x0 + kAdaptiveTile, tiles.width) && left > 0; ++x) {
-                    ++per_pixel[static_cast<std::size_t>(y) * tiles.width + x];
-                    --left;
-                }
-            if (left == 0) break;
-        }
-    }
-    while (left < 0) {
-        for (int t = static_cast<int>(order.size()) - 1; t >= 0 && left < 0; --t) {
-            const int tile = order[static_cast<std::size_t>(t)];
-            const int x0 = (tile % tiles.tiles_x) * kAdaptiveTile, y0 = (tile / tiles.tiles_x) * kAdaptiveTile;
-            for (int y = y0; y < std::min(y0 + kAdaptiveTile, tiles.height) && left < 0; ++y)
-                for (int x = x0; x < std::min(x0 + kAdaptiveTile, tiles.width) && left < 0; ++x) {
-                    int& c = per_pixel[static_cast<std::size_t>(y) * tiles.width + x];
-                    if (c > 0) {
-                        --c;
-                        ++left;
-                    }
-                }
-        }
-    }
-    return per_pixel;
+            w[static_cast<std::size_t>(y) * tiles.width + x] = weights[(x + y) & 1][static_cast<std::size_t>(tiles.of_pixel(x, y))];
+    return w;
 }
-
-}  // namespace
 
 }  // namespace sweeptrace

@@ -1,22 +1,30 @@
 #pragma once
-// Adaptive sampling (issue 34 item 2, after Tungsten's renderer): a uniform pilot, then rounds
-// that each hand out a fixed number of samples, more to the 8x8 tiles whose mean is estimated
-// to be further from the truth. Everything here is a pure function of the image so far, computed
-// on one thread in a fixed order, so the allocation (and so the image) is the same for any
-// thread count; only how many rounds fit in a --time budget depends on the clock.
+// Adaptive sampling (issue 34 item 2, after Tungsten's renderer): a uniform pilot, then per-pixel
+// sample counts from the pilot's estimated error, more to the noisier 8x8 tiles. The allocation is
+// a pure function of the pilot, computed once on one thread in a fixed order, so every farm part
+// recomputes it from the same 16 passes and knows its own samples without the rest of the image
+// (renderer.cpp, docs/equal-time-interiors.md): the image is the same for any thread count and any
+// split into parts; only how many passes fit in a --time budget depends on the clock.
+//
+// The schedule: after the pilot, a render of "nominal" spp N gives pixel p
+// adaptive_count(w_p, N - 16) more samples, its indices 16, 17, ... of its own sequence, where w_p
+// is its tile's weight (mean 1 over the image). Since the count only grows with the budget, the
+// samples of the nominal range [A, B) are, per pixel, those between the counts at A and at B: a
+// farm part's whole definition.
 //
 // Why each constant:
 // - kAdaptiveTile 8: an 8x8 tile after the pilot holds 64 x 16 samples, enough that one firefly
 //   moves its estimate rather than dominating it (Tungsten uses 4x4; 4x4 was not measured here).
 // - kAdaptivePilotSpp 16: Tungsten's; below it a tile's variance is mostly noise itself.
-// - kAdaptiveRoundSpp 8: small rounds re-estimate often and waste little of a --time budget
-//   (the round in flight when it runs out is dropped whole, see renderer.cpp).
+// - kAdaptiveRoundSpp 8: the nominal spp of one pass after the pilot: small passes waste little of
+//   a --time budget (the pass in flight when it runs out is dropped whole, see renderer.cpp).
 // - kAdaptiveCapPercentile 0.95: a tile's error counts at most as the 95th percentile's, so a
-//   few tiles with fireflies cannot take the whole round (Tungsten's threshold).
-// - kAdaptiveUniformShare 1/8: that share of every round goes to all pixels alike, so a tile
-//   whose pilot saw nothing (a dark corner lit by a rare path) still converges, and the
+//   few tiles with fireflies cannot take the samples (Tungsten's threshold).
+// - kAdaptiveUniformShare 1/8: that share of the samples after the pilot goes to all pixels alike,
+//   so a tile whose pilot saw nothing (a dark corner lit by a rare path) still converges, and the
 //   allocation's dependence on the samples (the source of adaptive sampling's small bias) stays
 //   bounded.
+#include <cmath>
 #include <cstdint>
 #include <vector>
 
@@ -26,14 +34,14 @@
 
 namespace sweeptrace {
 
-// What a tile's error is, and so where samples go:
-// - Relative (Tungsten's): the relative variance of the tile's mean; each round in proportion to
+// What a tile's error is, and so where samples go (both measured on the pilot, where every pixel
+// has the same count):
+// - Relative (Tungsten's): the relative variance of the tile's mean; samples in proportion to
 //   it. Equalises the error relative to brightness, what a tone-mapped picture shows, and so
 //   favours dark tiles.
 // - Mse: minimum mean squared error of the linear image. For a fixed total, sum_p sigma_p^2 / n_p
 //   is least with n_p in proportion to sigma_p (each pixel's per-sample standard deviation), so
-//   each round fills the tiles whose counts are furthest below that share of all the samples
-//   spent so far and in this round.
+//   samples go in proportion to the tile's sigma.
 enum class AdaptiveError { Relative, Mse };
 
 inline constexpr int kAdaptiveTile = 8;
@@ -51,32 +59,28 @@ struct AdaptiveTiles {
     int pixels_in(int tile) const;
 };
 
-// Per tile, the relative variance of its mean radiance: the mean over its pixels of each pixel
-// mean's estimated variance (the unbiased sample variance from the pixel's own count, / count,
-// averaged over channels), divided by the square of the tile's mean radiance plus a floor of
-// (1% of the image's mean)^2, so a black tile's variance is not divided by zero. Pixels with
-// fewer than 2 samples count as variance 0. `counts` is samples per pixel.
-std::vector<double> adaptive_tile_errors(const AdaptiveTiles& tiles, const std::vector<PixelSum>& sums,
-                                         const std::vector<glm::dvec3>& sum_sq, const std::vector<int>& counts);
+// Each tile's weight from its error: kAdaptiveUniformShare + (1 - kAdaptiveUniformShare) x the
+// error capped at the kAdaptiveCapPercentile-th percentile / the image's mean capped error, so
+// the pixel-weighted mean weight is 1. All-zero errors give every tile weight 1 (uniform).
+std::vector<double> adaptive_tile_weights(const AdaptiveTiles& tiles, const std::vector<double>& errors);
 
-// Per tile, the per-sample standard deviation: the square root of the mean over its pixels of the
-// unbiased sample variance (averaged over channels). Pixels with fewer than 2 samples count as 0.
-std::vector<double> adaptive_tile_deviations(const AdaptiveTiles& tiles, const std::vector<PixelSum>& sums,
-                                             const std::vector<glm::dvec3>& sum_sq, const std::vector<int>& counts);
+// The weight of every pixel, row-major: what the schedule reads, from the pilot's per-pixel sums
+// alone (every pixel holding `pilot_spp` samples), by `error`'s rule (adaptive_sampling.cpp,
+// tile_errors, states the two errors; each tile's error is the mean over its 3x3 tiles, a steadier
+// estimate where the noise is fireflies). Cross-fitted on a checkerboard: the pixels with x + y even
+// get their tile's weight from the odd pixels alone (each tile's error, the percentile cap, the
+// mean, the relative rule's floor), and the odd ones from the even ones. So a pixel's count never
+// depends on its own samples, and its mean over them is exactly unbiased (a pixel's samples are
+// independent of every other pixel's: their own random streams). A tile with no pixel of the
+// other colour (a 1x1 corner tile) has error 0: the uniform share.
+std::vector<double> adaptive_pixel_weights(const AdaptiveTiles& tiles, AdaptiveError error, const std::vector<PixelSum>& sums,
+                                           const std::vector<glm::dvec3>& sum_sq, int pilot_spp);
 
-// Samples per pixel for the next round, `budget` in all (exactly, when budget >= 0): a share
-// kAdaptiveUniformShare spread evenly, the rest in proportion to each tile's error capped at the
-// kAdaptiveCapPercentile-th percentile. Pixels of one tile get the same count, except that the
-// rounding's leftover samples go one per pixel to the tiles with the largest fractional parts
-// (in tile then pixel order), so the total is exact. All-zero errors give a uniform round.
-std::vector<int> adaptive_round(const AdaptiveTiles& tiles, const std::vector<double>& errors, std::int64_t budget);
-
-// AdaptiveError::Mse's round: the uniform share as above; the rest in proportion to each tile's
-// shortfall below its share of all samples after the round, sigma_t (capped at the percentile) /
-// the image's mean sigma x (samples so far + budget) / pixels, per pixel, against the tile's
-// mean count so far. `counts` is samples per pixel so far. Same exact total and rounding as
-// adaptive_round.
-std::vector<int> adaptive_round_mse(const AdaptiveTiles& tiles, const std::vector<double>& deviations,
-                                    const std::vector<int>& counts, std::int64_t budget);
+// Samples after the pilot of a pixel of weight w at a nominal budget of `t` spp beyond it:
+// round(t x w), never fewer at a larger t. Over the image the mean is t to within 1/2 (the
+// weights' mean is 1), so a render of nominal spp N holds N samples per pixel on average, +-1/2.
+inline std::int64_t adaptive_count(double weight, std::int64_t t) {
+    return static_cast<std::int64_t>(std::floor(static_cast<double>(t) * weight + 0.5));
+}
 
 }  // namespace sweeptrace

@@ -79,17 +79,22 @@ public:
             allow.emplace(tbb::global_control::max_allowed_parallelism, static_cast<std::size_t>(opt_.threads));
         tbb::task_arena arena(threads);
         arena.execute([this] {
-            // Adaptive: the pilot is the uniform render's first passes, then the rounds.
-            run_passes(opt_.adaptive ? std::min(opt_.spp, kAdaptivePilotSpp) : opt_.spp);
-            if (opt_.adaptive) run_rounds();
+            if (opt_.adaptive) run_adaptive();
+            else run_passes(opt_.first_sample, opt_.spp, opt_.first_sample);
         });
     }
 
-    void run_passes(int passes) {
+    // Passes of one sample per pixel, sample indices first .. first + passes - 1; returns how many
+    // completed. The result keeps those from index keep_from on (completed_spp_ counts them): all
+    // of them, but in an adaptive part whose range starts inside the pilot (run_adaptive), whose
+    // own passes go to kept_sum_ as well.
+    int run_passes(int first, int passes, int keep_from) {
         const int tiles = tiles_x_ * tiles_y_;
+        int done = 0;
         for (int s = 0; s < passes; ++s) {
+            const int sample = first + s;
             if (stopped(s)) break;
-            if (vcm_) light_pass(tiles, opt_.first_sample + s);
+            if (vcm_) light_pass(tiles, sample);
             std::atomic<bool> abandoned{false};
             tbb::parallel_for(tbb::blocked_range<int>(0, tiles, 1), [&](const tbb::blocked_range<int>& r) {
                 for (int t = r.begin(); t < r.end(); ++t) {
@@ -97,7 +102,7 @@ public:
                         abandoned.store(true, std::memory_order_relaxed);
                         return;
                     }
-                    render_tile(t, opt_.first_sample + s);
+                    render_tile(t, sample);
                     tiles_done_.fetch_add(1, std::memory_order_relaxed);
                 }
             });
@@ -107,37 +112,61 @@ public:
             }
             if (!tile_splats_.empty()) add_splats();
             if (opt_.guiding && guide_.training()) learn(s + 1);
-            accumulate_pass();
+            accumulate_pass(!kept_sum_.empty() && sample >= keep_from);
             if (opt_.forensics != nullptr) opt_.forensics->end_pass();
-            completed_spp_.store(s + 1, std::memory_order_release);
+            done = s + 1;
+            completed_spp_.store(std::max(0, sample + 1 - keep_from), std::memory_order_release);
             samples_done_.fetch_add(static_cast<std::int64_t>(sum_.size()), std::memory_order_relaxed);
         }
+        return done;
     }
 
-    // Adaptive rounds after the pilot (adaptive_sampling.hpp). Each round's allocation is computed
-    // on this thread from the sums of the rounds before, so it does not depend on the threads;
-    // the round is rendered row-parallel, each pixel's new samples in index order from its count
-    // on, straight after its earlier ones (sum and sum of squares continued from the pixel's own,
-    // so they are the very numbers a uniform render of n_p samples gives). A round cut short by
-    // the time budget or a cancel is dropped whole: every pixel keeps its count from the rounds
-    // before, never one that depends on which tiles a thread had reached.
-    void run_rounds() {
-        counts_.assign(sum_.size(), completed_spp_.load());
-        if (stopped(1) || completed_spp_.load() < std::min(opt_.spp, kAdaptivePilotSpp)) return;
-        const AdaptiveTiles tiles(width_, height_);
-        const std::int64_t pixels = static_cast<std::int64_t>(sum_.size());
-        const std::int64_t target = static_cast<std::int64_t>(opt_.spp) * pixels;
-        std::int64_t done = static_cast<std::int64_t>(completed_spp_.load()) * pixels;
+    // Adaptive sampling (adaptive_sampling.hpp) of the nominal range [A, B) = [first_sample,
+    // first_sample + spp) (a whole render: [0, spp)): the pilot's passes in [A, B) as the uniform
+    // render's; past the pilot, each pixel's samples between its counts at A and at B. Those
+    // need the weights, so a range reaching past the pilot renders all of the pilot first (a farm
+    // part pays those 16 passes of the image again) and keeps only its own passes of it. The
+    // weights come from the pilot's sums, the same in every part, computed on this thread.
+    // After the pilot, passes of kAdaptiveRoundSpp nominal spp (at multiples of it past the pilot,
+    // so a --time render stops where a --spp render of its completed_spp does), rendered
+    // row-parallel, each pixel's new samples in index order straight after its earlier ones (sum
+    // and sum of squares continued from the pixel's own, so they are the very numbers a uniform
+    // render of n_p samples gives). A pass cut short by the time budget or a cancel is dropped
+    // whole: every pixel keeps its count from the passes before.
+    void run_adaptive() {
+        const int a = opt_.first_sample, b = opt_.first_sample + opt_.spp;
+        if (b <= kAdaptivePilotSpp) {  // the pilot alone: the uniform render's passes
+            run_passes(a, opt_.spp, a);
+            return;
+        }
+        if (a > 0 && a < kAdaptivePilotSpp) {
+            kept_sum_.assign(sum_.size(), PixelSum{});
+            kept_sq_.assign(sum_.size(), glm::dvec3(0.0));
+        }
+        const bool pilot_done = run_passes(0, kAdaptivePilotSpp, a) == kAdaptivePilotSpp;
+        if (pilot_done)
+            weights_ = adaptive_pixel_weights(AdaptiveTiles(width_, height_), opt_.adaptive_error, sum_, sum_sq_, kAdaptivePilotSpp);
+        if (a > 0) {  // from here on the sums are the part's own: its passes of the pilot, or none
+            if (kept_sum_.empty()) {
+                std::fill(sum_.begin(), sum_.end(), PixelSum{});
+                std::fill(sum_sq_.begin(), sum_sq_.end(), glm::dvec3(0.0));
+            } else {
+                sum_.swap(kept_sum_);
+                sum_sq_.swap(kept_sq_);
+                kept_sum_ = {};
+                kept_sq_ = {};
+            }
+        }
+        if (!pilot_done) return;  // a uniform image of the pilot passes finished
+        counts_.assign(sum_.size(), std::max(0, kAdaptivePilotSpp - a));
         round_sum_.resize(sum_.size());
         round_sq_.resize(sum_.size());
-        while (done < target && !stopped(1)) {
-            const std::int64_t budget = std::min(target - done, kAdaptiveRoundSpp * pixels);
-            const std::vector<int> more =
-                opt_.adaptive_error == AdaptiveError::Relative
-                    ? adaptive_round(tiles, adaptive_tile_errors(tiles, sum_, sum_sq_, counts_), budget)
-                    : adaptive_round_mse(tiles, adaptive_tile_deviations(tiles, sum_, sum_sq_, counts_), counts_, budget);
-            // Tasks of one image row each, not 16x16 tiles: a round's counts are uneven, and a
-            // thread left waiting on one heavy tile at the round's end burns the CPU budget.
+        const std::int64_t t_end = b - kAdaptivePilotSpp;
+        for (std::int64_t t = std::max(a, kAdaptivePilotSpp) - kAdaptivePilotSpp; t < t_end;) {
+            const std::int64_t next = std::min(t_end, (t / kAdaptiveRoundSpp + 1) * kAdaptiveRoundSpp);
+            if (stopped(1)) break;
+            // Tasks of one image row each, not 16x16 tiles: a pass's counts are uneven, and a
+            // thread left waiting on one heavy tile at the pass's end burns the CPU budget.
             std::atomic<bool> abandoned{false};
             tbb::parallel_for(tbb::blocked_range<int>(0, height_, 1), [&](const tbb::blocked_range<int>& r) {
                 for (int y = r.begin(); y < r.end(); ++y) {
@@ -145,21 +174,19 @@ public:
                         abandoned.store(true, std::memory_order_relaxed);
                         return;
                     }
-                    render_round_row(y, more);
+                    render_round_row(y, t, next);
                 }
             });
             if (abandoned.load()) break;
-            std::int64_t added = 0;
             for (std::size_t i = 0; i < sum_.size(); ++i) {
-                if (more[i] == 0) continue;
+                const auto more = static_cast<int>(adaptive_count(weights_[i], next) - adaptive_count(weights_[i], t));
+                if (more == 0) continue;
                 sum_[i] = round_sum_[i];
                 sum_sq_[i] = round_sq_[i];
-                counts_[i] += more[i];
-                added += more[i];
+                counts_[i] += more;
             }
-            done += added;
-            completed_spp_.store(static_cast<int>(done / pixels), std::memory_order_release);
-            if (added == 0) break;
+            t = next;
+            completed_spp_.store(static_cast<int>(kAdaptivePilotSpp + t - a), std::memory_order_release);
         }
     }
 
@@ -168,9 +195,12 @@ public:
     RenderProgress progress() const {
         const double total = static_cast<double>(tiles_x_) * tiles_y_ * opt_.spp;
         RenderProgress p;
-        // Adaptive rounds are counted in samples (their tiles hold different counts).
+        // Adaptive passes are counted in samples (their tiles hold different counts); a part
+        // reaching past the pilot renders the pilot's passes before its range too.
+        const int a = opt_.first_sample, b = opt_.first_sample + opt_.spp;
+        const double work = static_cast<double>(opt_.spp) + (b > kAdaptivePilotSpp ? std::min(a, kAdaptivePilotSpp) : 0);
         const double done = opt_.adaptive ? static_cast<double>(samples_done_.load(std::memory_order_relaxed)) /
-                                                (static_cast<double>(sum_.size()) * opt_.spp)
+                                                (static_cast<double>(sum_.size()) * work)
                                           : static_cast<double>(tiles_done_.load(std::memory_order_relaxed)) / total;
         p.fraction = std::max(budget_.fraction(), std::min(1.0, done));
         p.completed_spp = completed_spp_.load(std::memory_order_acquire);
@@ -214,7 +244,8 @@ public:
 private:
     // Adds the finished pass to the sums. Fixed point (partial_sum.hpp), so the sum of any split
     // into sample ranges is the same integer, and so the same image.
-    void accumulate_pass() {
+    // `kept`: also to kept_sum_ (an adaptive part's own passes of the pilot, run_adaptive).
+    void accumulate_pass(bool kept) {
         tbb::parallel_for(tbb::blocked_range<std::size_t>(0, sum_.size(), 4096),
                           [&](const tbb::blocked_range<std::size_t>& r) {
                               std::uint64_t clamped = 0;
@@ -224,6 +255,10 @@ private:
                                   clamped += c ? 1 : 0;
                                   const glm::dvec3 v(pass_[i]);
                                   sum_sq_[i] += v * v;
+                                  if (kept) {
+                                      add_sample(kept_sum_[i], pass_[i], c);
+                                      kept_sq_[i] += v * v;
+                                  }
                               }
                               if (clamped != 0) clamped_.fetch_add(clamped, std::memory_order_relaxed);
                           });
@@ -338,18 +373,20 @@ private:
         return l;
     }
 
-    // An adaptive round's samples for one image row: pixel p's samples counts_[p] .. +more[p]-1,
-    // added to copies of its sums in that order (committed by run_rounds if the round completes).
-    void render_round_row(int y, const std::vector<int>& more) {
+    // An adaptive pass's samples for one image row, the nominal budget past the pilot going from t0
+    // to t1: pixel p's samples 16 + adaptive_count(w_p, t0) .. 16 + adaptive_count(w_p, t1) - 1,
+    // added to copies of its sums in that order (committed by run_adaptive if the pass completes).
+    void render_round_row(int y, std::int64_t t0, std::int64_t t1) {
         std::uint64_t rays = 0, nonfinite = 0, clamped = 0;
         std::int64_t samples = 0;
         for (int x = 0; x < width_; ++x) {
             const std::size_t pixel = static_cast<std::size_t>(y) * width_ + x;
-            if (more[pixel] == 0) continue;
+            const std::int64_t lo = adaptive_count(weights_[pixel], t0), hi = adaptive_count(weights_[pixel], t1);
+            if (hi == lo) continue;
             PixelSum sum = sum_[pixel];
             glm::dvec3 sq = sum_sq_[pixel];
-            for (int k = 0; k < more[pixel]; ++k) {
-                const glm::vec3 l = sample_pixel(x, y, counts_[pixel] + k, rays, nonfinite, nullptr, nullptr, nullptr);
+            for (std::int64_t k = lo; k < hi; ++k) {
+                const glm::vec3 l = sample_pixel(x, y, static_cast<int>(kAdaptivePilotSpp + k), rays, nonfinite, nullptr, nullptr, nullptr);
                 bool c = false;
                 add_sample(sum, l, c);
                 clamped += c ? 1 : 0;
@@ -358,7 +395,7 @@ private:
             }
             round_sum_[pixel] = sum;
             round_sq_[pixel] = sq;
-            samples += more[pixel];
+            samples += hi - lo;
         }
         rays_.fetch_add(rays, std::memory_order_relaxed);
         samples_done_.fetch_add(samples, std::memory_order_relaxed);
@@ -390,8 +427,11 @@ private:
     GuidingSdTree guide_;           // read during a pass, trained between passes
     std::vector<std::vector<GuideRecord>> tile_records_;  // the pass in flight's, per tile
     std::vector<int> counts_;              // adaptive: samples per pixel so far (empty: uniform)
-    std::vector<PixelSum> round_sum_;      // adaptive: the round in flight's sums, per pixel it samples
+    std::vector<double> weights_;          // adaptive: each pixel's weight from the pilot
+    std::vector<PixelSum> round_sum_;      // adaptive: the pass in flight's sums, per pixel it samples
     std::vector<glm::dvec3> round_sq_;
+    std::vector<PixelSum> kept_sum_;       // adaptive part starting inside the pilot: its own pilot passes
+    std::vector<glm::dvec3> kept_sq_;
     std::atomic<int> completed_spp_{0};
     std::atomic<std::int64_t> tiles_done_{0}, samples_done_{0};
     std::atomic<std::uint64_t> rays_{0}, nonfinite_{0}, clamped_{0};
@@ -420,9 +460,8 @@ RenderResult render_with_planted_defect(const Scene& scene, const Accel& accel, 
     if (options.guiding && options.integrator != IntegratorKind::Path)
         throw std::invalid_argument("render: path guiding is the path integrator's");
     if (!(options.time_budget >= 0.0)) throw std::invalid_argument("render: time_budget must be >= 0 seconds");
-    if (options.adaptive && (options.integrator != IntegratorKind::Path || options.guiding || options.forensics != nullptr ||
-                             options.first_sample != 0))
-        throw std::invalid_argument("render: adaptive sampling is the path integrator's, without guiding, forensics or a first_sample");
+    if (options.adaptive && (options.integrator != IntegratorKind::Path || options.guiding || options.forensics != nullptr))
+        throw std::invalid_argument("render: adaptive sampling is the path integrator's, without guiding or forensics");
 
     const auto start = std::chrono::steady_clock::now();
     PassRenderer renderer(scene, accel, options, defect);

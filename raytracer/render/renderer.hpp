@@ -52,12 +52,14 @@ struct RenderOptions {
     // there by path type, per 16x16 tile; the image is the same bit for bit.
     PathForensics* forensics = nullptr;
     // Adaptive sampling (adaptive_sampling.hpp): a uniform pilot of kAdaptivePilotSpp passes, then
-    // rounds that give noisier 8x8 tiles more samples, until spp x pixels samples (or the time
-    // budget) are spent; pixel p gets samples 0..n_p-1 of its own sequence. Path integrator only,
-    // without guiding, forensics or first_sample (a farm part cannot know the rounds' allocation
-    // without the whole image of the rounds before). spp <= the pilot: the uniform render exactly.
+    // per-pixel counts from the pilot's error, more to noisier 8x8 tiles: pixel p gets samples
+    // 0..n_p-1 of its own sequence, n_p = 16 + adaptive_count(w_p, spp - 16), the mean of n_p
+    // within 1/2 of spp. Path integrator only, without guiding or forensics. first_sample and spp
+    // then name the nominal range [first_sample, first_sample + spp) of a farm part: the pilot's
+    // passes in it, and past the pilot each pixel's samples between its counts at either end (the
+    // part renders the whole pilot for its weights). spp <= the pilot: the uniform render exactly.
     bool adaptive = false;
-    AdaptiveError adaptive_error = AdaptiveError::Mse;  // where a round's samples go (adaptive_sampling.hpp)
+    AdaptiveError adaptive_error = AdaptiveError::Mse;  // where the samples after the pilot go (adaptive_sampling.hpp)
     const std::atomic<bool>* cancel = nullptr;  // set (e.g. by SIGINT) to stop early
     // Seconds (0 = none) after which the pass in flight is dropped and the render ends; the first
     // pass always completes. Counted on budget_clock from the start of render().
@@ -73,7 +75,9 @@ struct RenderStats {
     std::uint64_t rays = 0;     // every ray traced (camera, bounce, shadow)
     bool cancelled = false;      // stopped by `cancel`
     bool budget_spent = false;   // stopped by the time budget before reaching spp
-    int completed_spp = 0;      // samples per pixel in the returned image (adaptive: the mean, rounded down)
+    // Samples per pixel in the returned image. Adaptive: the nominal spp reached from first_sample
+    // (the image is a render with that spp's; pixel_samples has each pixel's own count).
+    int completed_spp = 0;
     // Samples whose radiance came out NaN or infinite, counted and replaced by black so one bad
     // path cannot poison a pixel; non-zero means a bug worth reporting.
     std::uint64_t nonfinite_samples = 0;
@@ -107,7 +111,7 @@ struct RenderResult {
 // Throws std::invalid_argument for a film smaller than 1x1, spp < 1, max_depth < 1, threads < 0,
 // Sampling::LightTracing with the path integrator, any sampling but NeeMis with vcm, guiding with bdpt or vcm,
 // first_sample < 0 or first_sample + spp beyond INT_MAX, time_budget < 0, adaptive with bdpt, vcm,
-// guiding, forensics or first_sample > 0.
+// guiding or forensics.
 RenderResult render(const Scene& scene, const Accel& accel, const RenderOptions& options);
 
 }  // namespace sweeptrace

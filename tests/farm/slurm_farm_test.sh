@@ -3,7 +3,8 @@
 # local-cluster.sh: munged, slurmctld, slurmd, all in a temp dir), submits tools/slurm/farm.sh's
 # job array for a small scene in 5 uneven tasks, waits (bounded), checks the merged image is
 # the one-machine render byte for byte; then deletes one part and re-submits: only that range is
-# rendered again, the others are verified and kept, and the image is the same again. The
+# rendered again, the others are verified and kept, and the image is the same again; then an
+# adaptive render (--adaptive on) in 3 tasks, the same byte for byte as one machine's. The
 # daemons are stopped on every exit path. The daemons not starting is a failure, with their logs.
 #   slurm_farm_test.sh SOURCE_DIR SWEEPTRACE_BINARY
 set -euo pipefail
@@ -48,10 +49,10 @@ scene="$src/scenes/cornell-box.json"
 size=(--width 40 --height 40)
 spp=13  # 5 tasks: [0,2) [2,5) [5,7) [7,10) [10,13)
 
-# Waits for the merge job of the farm in $tmp/farm to leave the queue, 90 s at most.
+# Waits for the merge job of the farm in $1 (default $tmp/farm) to leave the queue, 90 s at most.
 wait_for_merge() {
     local array merge state
-    read -r array merge < "$tmp/farm/jobs"
+    read -r array merge < "${1:-$tmp/farm}/jobs"
     for _ in $(seq 450); do
         state=$(scontrol -o show job "$merge" 2>/dev/null | sed -n 's/.*JobState=\([A-Z_]*\).*/\1/p')
         case "$state" in
@@ -90,3 +91,13 @@ kept=$(grep -l "already a verified part of this render, kept" "$tmp"/farm/logs/p
 grep -q "kept" "$tmp/farm/logs/part-2.log" && { echo "slurm test: the lost part was not rendered again" >&2; exit 1; }
 cmp "$tmp/one.png" "$tmp/farm/final.png" || { echo "slurm test: re-run image differs" >&2; exit 1; }
 say "re-run rendered only the lost range, image identical again"
+
+# Adaptive sampling: each task renders the pilot again for the allocation, and the parts carry
+# each pixel's count; 3 tasks, the first ending inside the pilot: [0,9) [9,18) [18,28).
+bash "$src/tools/slurm/farm.sh" --spp 28 --tasks 3 --dir "$tmp/farm-adaptive" --sweeptrace "$bin" \
+    "$scene" "$tmp/farm-adaptive/final.png" -- "${size[@]}" --adaptive on
+wait_for_merge "$tmp/farm-adaptive"
+"$bin" render "$scene" "${size[@]}" --spp 28 --adaptive on --quiet -o "$tmp/one-adaptive.png"
+cmp "$tmp/one-adaptive.png" "$tmp/farm-adaptive/final.png" ||
+    { echo "slurm test: adaptive farm image differs from the one-machine render" >&2; exit 1; }
+say "adaptive farm image (3 tasks) = one-machine adaptive render, byte for byte"

@@ -14,6 +14,7 @@
 #include "raytracer/image/partial_image.hpp"
 #include "raytracer/input_error.hpp"
 #include "raytracer/render/renderer.hpp"
+#include "farm_test_identity.hpp"
 #include "render_test_scenes.hpp"
 
 namespace fs = std::filesystem;
@@ -23,19 +24,7 @@ namespace {
 
 constexpr int kSpp = 12;
 
-RenderIdentity identity() {
-    RenderIdentity id;
-    id.scene_hash = "0123456789abcdef";
-    id.width = 37;
-    id.height = 21;
-    id.seed = 42;
-    id.max_depth = 8;
-    id.accel = "bvh";
-    id.integrator = "vcm";
-    id.version = "test";
-    id.spp = kSpp;
-    return id;
-}
+RenderIdentity identity() { return test::farm_test_identity(37, 21, 42, 8, "vcm", kSpp); }
 
 PartialImage render_part(const Scene& s, const Accel& accel, int begin, int end, int threads) {
     RenderOptions o;
@@ -171,9 +160,47 @@ TEST_CASE("farm: a part file keeps every bit of its sums and its identity, and r
     // A plain image is not a part.
     write_image(p.mean(), dir / "plain.exr");
     CHECK_THROWS_WITH(read_partial(dir / "plain.exr"), Catch::Contains("not a sweeptrace part"));
+
+    // A part of format 1 (before adaptive parts; its header's version string patched back, the
+    // header being uncompressed) is refused by its version, saying what to do.
+    const std::string key = std::string("sweeptrace.part") + '\0' + "string" + '\0';
+    std::string old_format;
+    {
+        std::ifstream in(dir / "p.exr", std::ios::binary);
+        old_format.assign(std::istreambuf_iterator<char>(in), {});
+    }
+    const std::size_t at = old_format.find(key);
+    REQUIRE(at != std::string::npos);
+    REQUIRE(old_format[at + key.size() + 4] == '2');  // after the 4-byte length
+    old_format[at + key.size() + 4] = '1';
+    std::ofstream(dir / "format1.exr", std::ios::binary) << old_format;
+    CHECK_THROWS_WITH(read_partial_header(dir / "format1.exr"),
+                      Catch::Contains("part format 1, this program reads 2 (render the part again with this program)"));
+
+    // An adaptive part keeps each pixel's count, and its mean is over that count.
+    PartialImage a = part(3, 7);
+    a.id.adaptive = "relative";
+    a.counts.assign(a.sums.size(), 0);
+    for (std::size_t i = 0; i < a.sums.size(); ++i) {
+        a.counts[i] = static_cast<int>(i % 5);  // 0: a pixel this short range gave no sample
+        a.sums[i].rgb[0] = static_cast<SumInt>(3 * a.counts[i]) << kSumFractionBits;
+    }
+    write_partial(a, dir / "a.exr");
+    const PartialImage a_back = read_partial(dir / "a.exr");
+    CHECK(a_back.id == a.id);
+    CHECK(a_back.counts == a.counts);
+    CHECK(a_back.sums == a.sums);
+    CHECK(a_back.mean().pixels[4].x == 3.0f);
+    CHECK(a_back.mean().pixels[5].x == 0.0f);
+    a.counts.clear();  // an adaptive part must say its counts
+    CHECK_THROWS_WITH(write_partial(a, dir / "b.exr"), Catch::Contains("needs a count per pixel"));
 }
 
 TEST_CASE("farm: the merge names a different render, an overlap and a gap", "[farm]") {
+    PartialImage adaptive = part(4, 12);
+    adaptive.id.adaptive = "on";
+    CHECK(merge_error({part(0, 4), adaptive}, {"a.exr", "b.exr"}) ==
+          "'b.exr' is not a part of the same render as 'a.exr': adaptive sampling 'off' vs 'on'");
     PartialImage other = part(4, 12);
     other.id.max_depth = 5;
     CHECK(merge_error({part(0, 4), other}, {"a.exr", "b.exr"}) ==
