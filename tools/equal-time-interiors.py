@@ -105,9 +105,19 @@ def fireflies(args, builds, extras):
             run_render(cmd)
         return read_pfm(out + ".pfm"), read_pfm(out + "-var.pfm")
 
-    ref = fr(args.new, 1001, ref_spp, os.path.join(args.work, f"classroom-fireflies-ref-{w}x{h}-{ref_spp}"), args.ref_args)
+    if args.firefly_ref_factor > 0:
+        ref = fr(args.new, 1001, ref_spp, os.path.join(args.work, f"classroom-fireflies-ref-{w}x{h}-{ref_spp}"), args.ref_args)
+        ref_text = f"{ref_spp} spp (seed 1001, `{args.ref_args}`)"
+    else:
+        # The equal-time table's own classroom reference (same size), with its --variance.
+        base = os.path.join(args.work, f"classroom-new-ref-{args.ref_factor * args.time:g}s")
+        if (w, h) != (args.width, args.height) or not os.path.exists(base + "-var.pfm"):
+            return [f"Firefly check skipped: --firefly-ref-factor 0 needs the table's classroom reference at "
+                    f"{w}x{h} with its variance ({base}-var.pfm).\n"]
+        ref = (read_pfm(base + ".pfm"), read_pfm(base + "-var.pfm"))
+        ref_text = f"the table's classroom reference, {open(base + '.pfm.spp').read().strip()} spp (seed 1001, `{args.ref_args}`)"
     lines = [f"\n## Firefly check: classroom at {w}x{h}, {spp} spp, independent sampler\n\n",
-             f"Reference: {ref_spp} spp (seed 1001, `{args.ref_args}`). A block fails when the difference of its mean "
+             f"Reference: {ref_text}. A block fails when the difference of its mean "
              f"from the reference's, in any channel, is more than 5 standard errors (both renders' `--variance`).\n\n",
              "| column | render arguments | 8x8 blocks beyond 5 sigma | blocks | largest z |\n|---|---|---|---|---|\n"]
     for build, binary in builds:
@@ -152,7 +162,9 @@ def main():
     ap.add_argument("--title", default="main at 644dcf9 against this branch", help="what old and new are, for the heading")
     ap.add_argument("--fireflies", action="store_true", help="add the firefly check on classroom (see above)")
     ap.add_argument("--firefly-spp", type=int, default=1024)
-    ap.add_argument("--firefly-ref-factor", type=float, default=8.0)
+    ap.add_argument("--firefly-ref-factor", type=float, default=8.0,
+                    help="the firefly reference's spp / --firefly-spp; 0: use the table's classroom reference "
+                         "(same size; it needs --variance, which references rendered by this script have)")
     ap.add_argument("--firefly-size", default="320x180", help="WxH of the firefly check's renders")
     ap.add_argument("--work", default="equal-time-interiors", help="folder for the renders (kept; references reused)")
     ap.add_argument("--out", default=os.path.join(REPO, "docs", "equal-time-interiors.md"))
