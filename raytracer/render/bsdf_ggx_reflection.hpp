@@ -77,7 +77,7 @@ bool sample(const Material& m, const ShadingContext& ctx, float u1, float u2, Bs
         const float d = beckmann_d(h, a);
         const float lo = beckmann_lambda(wo, a), li = beckmann_lambda(wl, a);
         // f cos / pdf = F G2 wo.h / (wo.z h.z): D cancels.
-        out = BsdfSample{wi, fresnel(wo_h) * (wo_h / (wo.z * h.z * (1.0f + lo + li))), d * h.z / (4.0f * wo_h), false};
+        out = BsdfSample{wi, fresnel(wo_h) * (wo_h / (wo.z * h.z * (1.0f + lo + li))), lobe_pdf(m, wo, h, d, lo), false};
         return out.pdf > 0.0f;
     }
     const glm::vec3 h = sample_ggx_vndf(wo, a, u1, u2);
@@ -88,7 +88,7 @@ bool sample(const Material& m, const ShadingContext& ctx, float u1, float u2, Bs
     const float lo = ggx_lambda(wo, a), li = ggx_lambda(wl, a);
     // f cos / pdf = F G2 / G1(wo): D and the Jacobian cancel.
     const float g_ratio = (1.0f + lo) / (1.0f + lo + li);
-    out = BsdfSample{wi, fresnel(wo_h) * g_ratio, ggx_d(h, a) / (4.0f * wo.z * (1.0f + lo)), false};
+    out = BsdfSample{wi, fresnel(wo_h) * g_ratio, lobe_pdf(m, wo, h, ggx_d(h, a), lo), false};
     return out.pdf > 0.0f;
 }
 
