@@ -43,6 +43,8 @@ import os
 import re
 import sys
 
+from self_check import compare_with_expected
+
 STAGES = ["cli", "accuracy", "render", "accel", "scene", "geometry"]  # top to bottom
 LEAVES = ["image", "input_error.hpp", "load_budget.hpp"]
 
@@ -157,17 +159,7 @@ def main():
     found = violations(args.root)
 
     if args.expect:
-        with open(args.expect, encoding="utf-8") as f:
-            expected = {line.strip() for line in f if line.strip() and not line.startswith("#")}
-        got = {f"{p}:{n} {rule}" for p, n, rule, _, _ in found}
-        for line in sorted(expected - got):
-            print(f"self-check: planted violation not reported: {line}")
-        for line in sorted(got - expected):
-            print(f"self-check: reported but not planted: {line}")
-        if expected != got:
-            return 1
-        print(f"self-check: all {len(expected)} planted violations reported, nothing else")
-        return 0
+        return compare_with_expected(args.expect, {f"{p}:{n} {rule}" for p, n, rule, _, _ in found}, "violation")
 
     used = set()
     failures = 0
