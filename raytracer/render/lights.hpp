@@ -41,9 +41,9 @@
 //   radiance L = E / (pi sin^2 alpha), so the irradiance on a surface facing it is E whatever
 //   the diameter; BSDF-sampled rays that escape into the cone find it too (escaped_radiance),
 //   weighted by MIS against the same cone density.
-// - An emitting background (render/background_light.hpp: an environment map, a constant colour
-//   or the sky, each with an optional portal) is one more light at infinity, last; sampled as
-//   BackgroundLight draws it from the shading point, found by escaped rays, MIS between the two.
+// - An emitting background (render/background_light.hpp: an environment map, or a colour or the
+//   sky with a portal) is one more light at infinity, last (scene_lights.cpp says why not without);
+//   sampled as BackgroundLight draws it from the shading point, found by escaped rays, MIS weighted.
 #include <cstdint>
 #include <memory>
 #include <string>

@@ -8,7 +8,7 @@
 //   - BSDF sampling: the next vertex, if emissive, contributes weighted against the density with
 //     which NEE from the previous vertex would have sampled it.
 // Delta lobes (mirror, glass) take no NEE and give the BSDF-sampled ray full weight; the camera
-// ray, and escaped rays when the background does not emit (a black or empty one), too. Delta lights (point, spot,
+// ray, and escaped rays when the background is no light (scene_lights.cpp), too. Delta lights (point, spot,
 // a directional light without a diameter) come only from NEE, at full weight; a sun with an
 // angular diameter and an emitting background (render/background_light.hpp) are found by escaped
 // rays too (LightSet::escaped_radiance, MIS weighted). Sampling::BsdfOnly turns NEE
