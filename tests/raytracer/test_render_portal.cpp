@@ -177,7 +177,7 @@ TEST_CASE("background light: every kind's density integrates to 1 and is the one
     }
 }
 
-TEST_CASE("background light: a map is a light; a colour or the sky only with a portal; a black one never",
+TEST_CASE("background light: a map is a light, a colour or the sky only with a portal, a black one never",
           "[render][background]") {
     Scene scene;
     scene.background.kind = Background::Kind::Constant;
