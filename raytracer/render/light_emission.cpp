@@ -36,7 +36,7 @@ std::uint32_t LightSet::light_of_sample(float u_select) const {
 float LightSet::light_selection(std::uint32_t light) const {
     if (light < lights_.size()) return lights_[light].probability;
     const std::size_t k = light - lights_.size();
-    return k < scene_lights_.size() ? scene_lights_[k].probability : env_probability_;
+    return k < scene_lights_.size() ? scene_lights_[k].probability : background_probability_;
 }
 
 bool LightSet::light_is_delta_position(std::uint32_t light) const {
@@ -59,15 +59,15 @@ bool LightSet::light_is_found_at_infinity(std::uint32_t light) const {
 
 glm::vec3 LightSet::radiance_at_infinity(std::uint32_t light, const glm::vec3& dir) const {
     const std::size_t k = light - lights_.size();
-    if (k >= scene_lights_.size()) return env_->radiance(dir);
+    if (k >= scene_lights_.size()) return background_->radiance(dir);
     if (scene_lights_[k].sun < 0) return glm::vec3(0.0f);
     const Sun& sun = suns_[static_cast<std::size_t>(scene_lights_[k].sun)];
     return glm::dot(dir, sun.to_light) >= sun.cos_max ? sun.radiance : glm::vec3(0.0f);
 }
 
-float LightSet::nee_density_of_light(std::uint32_t light, const glm::vec3& to_light) const {
+float LightSet::nee_density_of_light(std::uint32_t light, const glm::vec3& p, const glm::vec3& to_light) const {
     const std::size_t k = light - lights_.size();
-    if (k >= scene_lights_.size()) return env_probability_ * env_->pdf(to_light);
+    if (k >= scene_lights_.size()) return background_probability_ * background_->pdf(p, to_light);
     const NonSurfaceLight& l = scene_lights_[k];
     if (l.sun < 0) return l.probability;  // delta: the selection alone, like sample()'s pdf
     const Sun& sun = suns_[static_cast<std::size_t>(l.sun)];
@@ -88,7 +88,10 @@ LightSet::EmissionDensity LightSet::emission_density(std::uint32_t light, const 
     }
     const std::size_t k = light - lights_.size();
     if (light_is_at_infinity(light)) {
-        d.pos = nee_density_of_light(light, -dir);
+        // Emission's direction density: for a background with a portal, not next event
+        // estimation's (which depends on the shading point), so it is asked for on its own.
+        d.pos = k >= scene_lights_.size() ? background_probability_ * background_->emission_pdf(-dir)
+                                              : nee_density_of_light(light, glm::vec3(0.0f), -dir);
         d.dir = 1.0f / (kPi * bounds_radius_ * bounds_radius_);
         return d;
     }
@@ -110,11 +113,11 @@ bool LightSet::sample_emission(float u_select, float u_part, float u1, float u2,
     if (out.light >= lights_.size()) {
         const std::size_t k = out.light - lights_.size();
         if (k < scene_lights_.size()) return emit_scene_light(scene_lights_[k], u1, u2, u3, u4, out);
-        // The environment: a direction toward it by its texel distribution, travelling back.
+        // The background: a direction toward it as its emission draws it, travelling back.
         glm::vec3 to_light(0.0f);
         float pdf = 0.0f;
-        if (!env_->sample(u3, u4, to_light, pdf, out.le)) return false;
-        out.selection = env_probability_;
+        if (!background_->sample_emission(u3, u4, to_light, pdf, out.le)) return false;
+        out.selection = background_probability_;
         out.at_infinity = true;
         out.dir = -to_light;
         out.normal = out.dir;

@@ -124,7 +124,7 @@ LightSet::LightSet(const Scene& scene, PlantedDefect defect)
         if (k < lights_.size()) {
             lights_[k].probability = probability;
         } else if (k == lights_.size() + scene_lights_.size()) {
-            env_probability_ = probability;
+            background_probability_ = probability;
         } else {
             NonSurfaceLight& l = scene_lights_[k - lights_.size()];
             l.probability = probability;
@@ -159,7 +159,7 @@ std::int32_t LightSet::escaped_light(const glm::vec3& dir) const {
         if (sun >= 0 && glm::dot(dir, suns_[static_cast<std::size_t>(sun)].to_light) >= suns_[static_cast<std::size_t>(sun)].cos_max)
             return static_cast<std::int32_t>(lights_.size() + k);
     }
-    return env_ ? static_cast<std::int32_t>(lights_.size() + scene_lights_.size()) : -1;
+    return background_ ? static_cast<std::int32_t>(lights_.size() + scene_lights_.size()) : -1;
 }
 
 std::string LightSet::light_name(std::int32_t light) const {
@@ -169,7 +169,8 @@ std::string LightSet::light_name(std::int32_t light) const {
         const std::string& name = scene_->objects[lights_[k].object].name;
         return name.empty() ? "object " + std::to_string(lights_[k].object) : name;
     }
-    if (k == lights_.size() + scene_lights_.size()) return env_ ? "environment" : "?";
+    if (k == lights_.size() + scene_lights_.size())
+        return !background_ ? "?" : scene_->background.kind == Background::Kind::Environment ? "environment" : "sky";
     const std::string& name = scene_lights_[k - lights_.size()].light->name;
     return name.empty() ? "light " + std::to_string(k - lights_.size()) : name;
 }
@@ -257,7 +258,7 @@ bool LightSet::sample(const glm::vec3& p, std::uint32_t p_object, float u_select
     if (index >= lights_.size()) {  // one test on the emissive objects' path
         const std::size_t k = index - lights_.size();
         return k < scene_lights_.size() ? sample_scene_light(scene_lights_[k], p, u1, u2, out)
-                                        : sample_environment(p, u1, u2, out);
+                                        : sample_background(p, u1, u2, out);
     }
     const Light& l = lights_[index];
     if (l.shape.strategy == Strategy::SphereCone) {

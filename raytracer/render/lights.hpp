@@ -41,8 +41,9 @@
 //   radiance L = E / (pi sin^2 alpha), so the irradiance on a surface facing it is E whatever
 //   the diameter; BSDF-sampled rays that escape into the cone find it too (escaped_radiance),
 //   weighted by MIS against the same cone density.
-// - An environment background (render/environment_light.hpp) is one more light at infinity,
-//   last; sampled by its texel distribution, found by escaped rays, MIS between the two.
+// - An emitting background (render/background_light.hpp: an environment map, or a colour or the
+//   sky with a portal) is one more light at infinity, last (scene_lights.cpp says why not without);
+//   sampled as BackgroundLight draws it from the shading point, found by escaped rays, MIS weighted.
 #include <cstdint>
 #include <memory>
 #include <string>
@@ -54,7 +55,7 @@
 #include "collision/bounds3.hpp"
 #include "raytracer/geometry/shapes/shape_light.hpp"
 #include "raytracer/geometry/surface_hit.hpp"
-#include "raytracer/render/environment_light.hpp"
+#include "raytracer/render/background_light.hpp"
 #include "raytracer/render/planted_defect.hpp"
 #include "raytracer/scene/scene.hpp"
 
@@ -146,15 +147,16 @@ public:
 
     // True when some light sits at infinity with a disc of directions (a sun): rays that escape
     // the scene must then ask escaped_radiance.
-    bool has_distant() const { return !suns_.empty() || env_ != nullptr; }
-    // True when the background is an environment map sampled as a light: escaped_radiance then
-    // returns its radiance (MIS weighted) and the integrator must not add it again.
-    bool background_is_light() const { return env_ != nullptr; }
-    // Radiance of the suns and of an environment light along unit direction `dir` of a ray that escaped the scene, each
-    // weighted by MIS against its cone density when `bsdf_pdf` > 0 (the solid-angle density the
-    // BSDF sampled `dir` with); `bsdf_pdf` <= 0 gives full weight (camera rays, delta bounces,
+    bool has_distant() const { return !suns_.empty() || background_ != nullptr; }
+    // True when the background emits and is sampled as a light: escaped_radiance then returns its
+    // radiance (MIS weighted) and the integrator must not add it again.
+    bool background_is_light() const { return background_ != nullptr; }
+    // Radiance of the suns and of the background light along unit direction `dir` of a ray that
+    // left point `from` and escaped the scene, each weighted by MIS against next event
+    // estimation's density from `from` when `bsdf_pdf` > 0 (the solid-angle density the BSDF
+    // sampled `dir` with); `bsdf_pdf` <= 0 gives full weight (camera rays, delta bounces,
     // BSDF-only sampling).
-    glm::vec3 escaped_radiance(const glm::vec3& dir, float bsdf_pdf) const;
+    glm::vec3 escaped_radiance(const glm::vec3& from, const glm::vec3& dir, float bsdf_pdf) const;
 
     // --- Emission sampling, for light tracing and bidirectional path tracing
     // (render/light_emission.cpp). The light is chosen with the probabilities sample() uses.
@@ -178,7 +180,8 @@ public:
     // The densities sample_emission draws with, for a light's point and direction: selection x
     // area density of a surface point with outward normal `normal` (selection alone for a point
     // light; selection x the solid-angle density of the direction for a light at infinity, pbrt's
-    // convention), and the solid-angle density of emitting along `dir` from there (the disc's
+    // convention: emission's, which for a background with a portal is not next event
+    // estimation's), and the solid-angle density of emitting along `dir` from there (the disc's
     // area density for a light at infinity; 1 for a delta direction).
     struct EmissionDensity {
         float pos = 0.0f, dir = 0.0f;
@@ -188,9 +191,10 @@ public:
     // included) emits along `dir` from its point (normal, primitive: of that point).
     glm::vec3 emission_toward(std::uint32_t light, const glm::vec3& point, const glm::vec3& normal,
                               std::uint32_t primitive, const glm::vec3& dir) const;
-    // Next event estimation's density for a light at infinity or a point / spot / directional light
-    // (selection x the direction's solid-angle density; selection alone for delta lights).
-    float nee_density_of_light(std::uint32_t light, const glm::vec3& to_light) const;
+    // Next event estimation's density from point `p` for a light at infinity or a point / spot /
+    // directional light (selection x the direction's solid-angle density; selection alone for
+    // delta lights). Only a background with a portal depends on `p`.
+    float nee_density_of_light(std::uint32_t light, const glm::vec3& p, const glm::vec3& to_light) const;
 
 private:
     struct Light {
@@ -223,7 +227,7 @@ private:
     };
     void add_scene_lights(const Scene& scene, std::vector<float>& weights);
     bool sample_scene_light(const NonSurfaceLight& l, const glm::vec3& p, float u1, float u2, LightSample& out) const;
-    bool sample_environment(const glm::vec3& p, float u1, float u2, LightSample& out) const;
+    bool sample_background(const glm::vec3& p, float u1, float u2, LightSample& out) const;
 
     const Scene* scene_ = nullptr;
     float normal_sign_ = 1.0f;                  // -1 under PlantedDefect::FlippedNormals
@@ -232,12 +236,12 @@ private:
     std::vector<std::int32_t> light_of_object_; // object index -> light index or -1
     std::vector<NonSurfaceLight> scene_lights_; // after lights_ in cdf_
     std::vector<Sun> suns_;
-    std::shared_ptr<const EnvironmentLight> env_;  // the background, when it is a map that emits
+    std::shared_ptr<const BackgroundLight> background_;  // the background, when it emits
     // The sphere around the scene's bounds, set when a light sits at infinity (emission sampling).
     glm::vec3 bounds_centre_{0.0f};
     float bounds_radius_ = 1.0f;
     bool emit_scene_light(const NonSurfaceLight& l, float u1, float u2, float u3, float u4, LightEmission& out) const;
-    float env_probability_ = 0.0f;                 // it is the last entry of cdf_
+    float background_probability_ = 0.0f;          // it is the last entry of cdf_
 };
 
 // Every object's world box together (object_world_bounds; empty for a scene without objects): the

@@ -24,6 +24,7 @@
 #include "raytracer/scene/load_filter.hpp"
 #include "raytracer/scene/load_lights.hpp"
 #include "raytracer/scene/load_motion.hpp"
+#include "raytracer/scene/load_portal.hpp"
 #include "raytracer/scene/load_texture.hpp"
 #include "raytracer/scene/named_metals.hpp"
 #include "raytracer/scene/obj_materials.hpp"
@@ -107,7 +108,7 @@ Film read_film(const Node& node) {
 }
 
 Background read_background(const Node& node) {
-    node.require_object({"color", "sky", "environment"});
+    node.require_object({"color", "sky", "environment", "portal"});
     Background background;
     const bool color = node.has("color"), sky = node.has("sky"), env = node.has("environment");
     if (int(color) + int(sky) + int(env) != 1) node.fail("give exactly one of \"color\", \"sky\" or \"environment\"");
@@ -123,6 +124,7 @@ Background read_background(const Node& node) {
         background.horizon = s.at("horizon").vec3_at_least(0.0f);
         background.zenith = s.at("zenith").vec3_at_least(0.0f);
     }
+    if (auto portal = node.find("portal")) read_portal(*portal, background);
     return background;
 }
 

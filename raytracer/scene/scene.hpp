@@ -1,6 +1,7 @@
 #pragma once
 // A validated scene, as the JSON loader produces it. Everything here has passed the loader's
 // checks: finite numbers, positive sizes, valid indices.
+#include <array>
 #include <cstdint>
 #include <filesystem>
 #include <memory>
@@ -105,6 +106,11 @@ struct Background {
     glm::mat3 turn{1.0f};  // map frame -> world, a rotation
     bool mirror = false;
     float scale = 1.0f;
+    // Any kind: a window rectangle (corners in order round its edge) through which the
+    // background lights the scene; it guides next event estimation only, the radiance is the
+    // same without it (render/portal.hpp).
+    bool has_portal = false;
+    std::array<glm::vec3, 4> portal{};
 };
 
 // A colour that varies over a surface with its uv coordinates (render/texture.hpp evaluates it;

@@ -81,6 +81,7 @@ GOLDEN_TEST("showcase", showcase)
 GOLDEN_TEST("spheres-field", spheres_field)
 GOLDEN_TEST("motion", motion)
 GOLDEN_TEST("caustic", caustic)  // rendered by bdpt, its film.integrator
+GOLDEN_TEST("sky-window", sky_window)
 
 // A scene added to scenes/ without a golden would go untested: every top-level scenes/*.json
 // needs its goldens.txt line, its golden and variance files, and both image tests registered.

@@ -93,7 +93,7 @@ TEST_CASE("light selection: lights at infinity share a fixed part by irradiance,
                 // the map's, lit behind it, by its own.
                 const double b = ls.pdf, p_env = expected[3] * env.pdf(ls.wi);
                 const double want = 0.5 * luminance(ls.radiance) + luminance(env.radiance(ls.wi)) * b * b / (b * b + p_env * p_env);
-                REQUIRE(luminance(lights.escaped_radiance(ls.wi, ls.pdf)) == Approx(want).epsilon(1e-3));
+                REQUIRE(luminance(lights.escaped_radiance(p, ls.wi, ls.pdf)) == Approx(want).epsilon(1e-3));
             } else {
                 SurfaceHit h;
                 h.object = ls.light == 0 ? dim : bright;

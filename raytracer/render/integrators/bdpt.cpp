@@ -244,7 +244,8 @@ void BdptIntegrator::light_walk(float time, PixelSampler& sampler, std::uint64_t
             // Next event estimation's density of the light point from here, for strategy s = 1.
             PathVertex& l0 = sp.light.front();
             if (l0.at_infinity || l0.delta_position) {
-                l0.pdf_nee = l0.at_infinity ? l0.pdf_fwd : em.selection;
+                // At infinity: NEE's density from v, not emission's (they differ under a portal).
+                l0.pdf_nee = l0.at_infinity ? lights_.nee_density_of_light(l0.light, v.point(), -em.dir) : em.selection;
             } else {
                 l0.pdf_nee = area_density(lights_.pdf(v.point(), v.hit.object, l0.hit), v.point(), l0);
             }
@@ -322,7 +323,8 @@ glm::vec3 BdptIntegrator::escaped_radiance(const Subpaths& sp, const glm::vec3& 
         const glm::vec3 le = lights_.radiance_at_infinity(light, dir);
         if (!(luminance(le) > 0.0f)) continue;
         const LightSet::EmissionDensity d = lights_.emission_density(light, -dir, -dir);
-        m.fwd[0] = m.nee0 = d.pos;
+        m.fwd[0] = d.pos;
+        m.nee0 = lights_.nee_density_of_light(light, x1.point(), dir);  // emission's and NEE's differ under a portal
         if (k >= 2) m.fwd[1] = d.dir * std::abs(glm::dot(x1.hit.normal, dir));
         sum += beta * le * weight(m, 0);
     }

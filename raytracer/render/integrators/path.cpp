@@ -9,19 +9,12 @@
 #include "raytracer/render/bsdf.hpp"
 #include "raytracer/render/guiding_path_recorder.hpp"
 #include "raytracer/render/guiding_sampler.hpp"
-#include "raytracer/render/environment_light.hpp"
+#include "raytracer/render/background_light.hpp"
 #include "raytracer/render/radiance_clamp.hpp"
 #include "raytracer/render/sampling.hpp"
 #include "raytracer/render/texture.hpp"
 
 namespace sweeptrace {
-
-glm::vec3 background_radiance(const Background& bg, const glm::vec3& dir) {
-    if (bg.kind == Background::Kind::Constant) return bg.color;
-    if (bg.kind == Background::Kind::Environment) return environment_radiance(bg, dir);
-    const float t = std::clamp(dir.y, 0.0f, 1.0f);
-    return (1.0f - t) * bg.horizon + t * bg.zenith;
-}
 
 PathIntegrator::PathIntegrator(const Scene& scene, const Accel& accel, const LightSet& lights, int max_depth,
                                Sampling sampling, PlantedDefect defect, RoulettePolicy roulette)
@@ -78,7 +71,7 @@ glm::vec3 PathIntegrator::radiance(collision::Ray ray, PixelSampler& sampler, st
                 result += tally_found(tally, limit.found(beta * background_radiance(scene_.background, ray.dir), depth),
                                       PathKey::kBackground);
             if (lights_.has_distant())
-                result += tally_found(tally, limit.found(beta * lights_.escaped_radiance(ray.dir, nee && !full_weight ? prev_pdf : 0.0f), depth),
+                result += tally_found(tally, limit.found(beta * lights_.escaped_radiance(prev_point, ray.dir, nee && !full_weight ? prev_pdf : 0.0f), depth),
                                       tally ? lights_.escaped_light(ray.dir) : -1);
             break;
         }

@@ -8,9 +8,10 @@
 //   - BSDF sampling: the next vertex, if emissive, contributes weighted against the density with
 //     which NEE from the previous vertex would have sampled it.
 // Delta lobes (mirror, glass) take no NEE and give the BSDF-sampled ray full weight; the camera
-// ray and escaped rays (the background is not a sampled light) too. Delta lights (point, spot,
+// ray, and escaped rays when the background is no light (scene_lights.cpp), too. Delta lights (point, spot,
 // a directional light without a diameter) come only from NEE, at full weight; a sun with an
-// angular diameter is found by escaped rays too (LightSet::escaped_radiance, MIS weighted). Sampling::BsdfOnly turns NEE
+// angular diameter and an emitting background (render/background_light.hpp) are found by escaped
+// rays too (LightSet::escaped_radiance, MIS weighted). Sampling::BsdfOnly turns NEE
 // off and gives every emitter hit full weight: an independent estimator of the same integral.
 //
 // Depth: max_depth counts path vertices after the camera, the emitting vertex included, so
@@ -38,10 +39,6 @@
 #include "raytracer/scene/scene.hpp"
 
 namespace sweeptrace {
-
-// Radiance of the background seen along unit direction `dir`. Sky: horizon below the horizon,
-// blended linearly to the zenith by dir.y above it.
-glm::vec3 background_radiance(const Background& bg, const glm::vec3& dir);
 
 class PathIntegrator {
 public:

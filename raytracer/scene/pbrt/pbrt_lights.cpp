@@ -21,6 +21,7 @@
 #include <cstdio>
 #include <limits>
 #include <string>
+#include <vector>
 
 #include <glm/geometric.hpp>
 #include <glm/matrix.hpp>
@@ -53,11 +54,32 @@ void add_background(WorldContext& w, const Where& at, const glm::dvec3& radiance
     }
 }
 
-void infinite(WorldContext& w, const LightRecord& l, const std::string& what, double scale) {
+// pbrt-v4's "portal", four points in the light's space, as our background's "portal" in the
+// world (render/portal.hpp; the loader checks it is a rectangle, as pbrt-v4 does). It only guides
+// next event estimation; pbrt-v4 also darkens the sky behind the portal's plane, which we do not.
+void add_portal(WorldContext& w, const LightRecord& l, const std::string& what) {
     const ParamList& p = l.statement.params;
     Diagnostics& d = w.diag;
     const Where& at = l.statement.where;
-    p.find("portal");  // portals guide sampling only: the image is the same without
+    if (!p.has("portal")) return;
+    const std::vector<double> v = p.get_floats("portal", d);
+    if (v.size() != 12) d.fail(at, what + ": \"portal\" must be 4 points (12 numbers), got " + std::to_string(v.size()) + " numbers");
+    if (!w.doc.contains("background") || w.doc["background"].is_null()) return;  // the light was dropped
+    json& bg = w.doc["background"];
+    if (bg.contains("portal")) {
+        d.warn(at, "two portals", what + ": a second portal is not supported (the first is kept)");
+        return;
+    }
+    json corners = json::array();
+    for (std::size_t i = 0; i < 4; ++i)
+        corners.push_back(vec(glm::dvec3(l.ctm * glm::dvec4(v[3 * i], v[3 * i + 1], v[3 * i + 2], 1.0))));
+    bg["portal"] = corners;
+}
+
+void infinite_background(WorldContext& w, const LightRecord& l, const std::string& what, double scale) {
+    const ParamList& p = l.statement.params;
+    Diagnostics& d = w.diag;
+    const Where& at = l.statement.where;
     const double illuminance = p.get_float("illuminance", -1.0, d);
     std::string file = p.get_string("filename", "", d);
     // pbrt-v3 named the map "mapname" and let "L" multiply it (pbrt-v4's --upgrade renames the
@@ -138,6 +160,11 @@ void infinite(WorldContext& w, const LightRecord& l, const std::string& what, do
     if (mirror) env["mirror"] = true;
     if (scale != 1.0) env["scale"] = scale;
     w.doc["background"] = {{"environment", env}};
+}
+
+void infinite(WorldContext& w, const LightRecord& l, const std::string& what, double scale) {
+    infinite_background(w, l, what, scale);
+    add_portal(w, l, what);
 }
 
 // A light's value is a product of pbrt parameters; each may be a float while the product is not.
