@@ -49,7 +49,7 @@ TEST_CASE("pbrt Integrator \"bdpt\" becomes film.integrator bdpt with its maxdep
 }
 
 TEST_CASE("pbrt Integrator \"sppm\" becomes film.integrator vcm with its radius and maxdepth, without a warning",
-          "[pbrt][vcm][!shouldfail]") {
+          "[pbrt][vcm]") {
     const TempDir dir;
     const auto c = convert_text(dir, "Integrator \"sppm\" \"integer maxdepth\" 4 \"float radius\" 0.05\nWorldBegin\n");
     CHECK(c.warnings.empty());

@@ -40,15 +40,11 @@ AttributeEnd
 }  // namespace
 
 TEST_CASE("vcm: a pbrt sppm scene without a radius converges to the path tracer's image, not a blur of it",
-          "[vcm][pbrt][convergence][!shouldfail]") {
+          "[vcm][pbrt][convergence]") {
     const test::TempDir dir;
     Scene scene = load_scene(dir.write("room.pbrt", kSppmRoom));
     REQUIRE(scene.film.integrator == IntegratorKind::Vcm);
     scene.film.clamp_indirect = 0.0f;
     const auto accel = make_accel(AccelKind::Bvh, scene);
-    const RenderResult path = render_as(scene, *accel, IntegratorKind::Path, 512, 1);
-    const RenderResult vcm = render_as(scene, *accel, IntegratorKind::Vcm, 256, 2);
-    const BlockTestResult t = against_path(path, vcm, 4);
-    INFO(t.summary());
-    CHECK(t.pass());
+    check_agrees_with_path(scene, *accel, IntegratorKind::Vcm, 512, 256, 4);
 }
