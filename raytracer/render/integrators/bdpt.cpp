@@ -35,7 +35,7 @@ float shading_correction(const SurfaceHit& hit, const glm::vec3& wo, const glm::
 // The textured material of a surface vertex, stored in it (the hit's shading normal may change).
 void set_material(const Scene& scene, PathVertex& v) {
     v.material = scene.objects[v.hit.object].material;
-    const Material& base = scene.materials[v.material];
+    const MaterialParameters& base = scene.materials[v.material];
     v.has_textured = reads_texture(base);
     if (v.has_textured) v.textured = textured_material(scene, base, v.hit);
 }
@@ -170,7 +170,7 @@ void BdptIntegrator::camera_walk(float x, float y, const glm::vec2& lens, float 
         v.pdf_fwd = area_density(pdf, sp.cam.back().point(), v);
         sp.cam.push_back(std::move(v));
         const PathVertex& at = sp.cam.back();
-        const Material& mat = at.mat(scene_);
+        const MaterialParameters& mat = at.mat(scene_);
         if (depth >= max_depth_ || !scatters(mat)) return;
         const ShadingContext ctx = make_shading_context(at.hit, at.wo);
         const float b0 = sampler.get1d(camera_slot(depth, sample_dim::kBsdfLobe));
@@ -249,7 +249,7 @@ void BdptIntegrator::light_walk(float time, PixelSampler& sampler, std::uint64_t
                 l0.pdf_nee = area_density(lights_.pdf(v.point(), v.hit.object, l0.hit), v.point(), l0);
             }
         }
-        const Material& mat = v.mat(scene_);
+        const MaterialParameters& mat = v.mat(scene_);
         if (!scatters(mat)) return;  // an absorber: every connection through it is zero
         sp.light.push_back(std::move(v));
         PathVertex& at = sp.light.back();
@@ -399,7 +399,7 @@ glm::vec3 BdptIntegrator::next_event(Subpaths& sp, int j, float time, PixelSampl
 glm::vec3 BdptIntegrator::connect(Subpaths& sp, int s, int t, float time, std::uint64_t& rays) const {
     const PathVertex& y = sp.light[static_cast<std::size_t>(s - 1)];
     const PathVertex& z = sp.cam[static_cast<std::size_t>(t - 1)];
-    const Material& my = y.mat(scene_);
+    const MaterialParameters& my = y.mat(scene_);
     if (is_delta(my)) return glm::vec3(0.0f);
     glm::vec3 w = z.point() - y.point();
     const float d2 = glm::dot(w, w);

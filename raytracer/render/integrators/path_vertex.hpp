@@ -35,9 +35,9 @@ struct PathVertex {
     // Surface: the material, textured at the hit when it reads a texture (`textured` then holds it).
     std::uint32_t material = 0;
     bool has_textured = false;
-    Material textured;
+    MaterialParameters textured;
 
-    const Material& mat(const Scene& scene) const { return has_textured ? textured : scene.materials[material]; }
+    const MaterialParameters& mat(const Scene& scene) const { return has_textured ? textured : scene.materials[material]; }
     // A point with a surface around it (its area density converts by a cosine).
     bool on_surface() const { return kind == Kind::Surface || (kind == Kind::Light && !delta_position && !at_infinity); }
     const glm::vec3& point() const { return hit.point; }

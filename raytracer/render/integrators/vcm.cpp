@@ -92,7 +92,7 @@ glm::vec3 VcmIntegrator::sample(std::size_t pixel, float x, float y, const glm::
     glm::vec3 l = bdpt_.camera_subpath(x, y, lens, time, sampler, rays, paths_[pixel], cam);
     if (!(eta_ > 0.0f)) return l;
     for (int j = 1; j < static_cast<int>(cam.size()) && j < max_depth_; ++j) {
-        const Material& mat = cam[static_cast<std::size_t>(j)].mat(scene_);
+        const MaterialParameters& mat = cam[static_cast<std::size_t>(j)].mat(scene_);
         if (scatters(mat) && !is_delta(mat)) l += merge(cam, j);
     }
     return l;
@@ -103,7 +103,7 @@ glm::vec3 VcmIntegrator::sample(std::size_t pixel, float x, float y, const glm::
 // geometric area), by the kernel 1 / (pi r^2) and 1 / N for the N light subpaths, so 1 / eta.
 glm::vec3 VcmIntegrator::merge(const std::vector<PathVertex>& cam, int j) const {
     const PathVertex& z = cam[static_cast<std::size_t>(j)];
-    const Material& mat = z.mat(scene_);
+    const MaterialParameters& mat = z.mat(scene_);
     const glm::vec3 r(radius_);
     const glm::ivec3 lo = grid_.cell_of(z.point() - r), hi = grid_.cell_of(z.point() + r);
     const float r2 = radius_ * radius_;
