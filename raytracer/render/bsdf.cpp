@@ -15,7 +15,7 @@ ShadingContext make_shading_context(const SurfaceHit& hit, const glm::vec3& wo) 
     return ctx;
 }
 
-bool is_delta(const Material& m) {
+bool is_delta(const MaterialParameters& m) {
     return m.type == Material::Type::Dielectric || m.type == Material::Type::ThinDielectric ||
            ((m.type == Material::Type::Metal || m.type == Material::Type::Conductor) && m.roughness == 0.0f) ||
            (m.type == Material::Type::RoughDielectric && rough_dielectric_is_smooth(m));
@@ -48,12 +48,12 @@ float max3(const glm::vec3& v) { return std::max(v.x, std::max(v.y, v.z)); }
 // Diffuse: the probability of sampling the transmitted lobe, in proportion to the two lobes'
 // largest channels; exactly 0 for an opaque surface, whose sampling (and random stream) is then
 // the plain Lambertian's.
-float diffuse_transmit_probability(const Material& m) {
+float diffuse_transmit_probability(const MaterialParameters& m) {
     const float t = max3(m.transmittance);
     return t > 0.0f ? t / (t + max3(m.albedo)) : 0.0f;
 }
 
-bool sample_smooth_dielectric(const Material& m, const ShadingContext& ctx, float u0, BsdfSample& out) {
+bool sample_smooth_dielectric(const MaterialParameters& m, const ShadingContext& ctx, float u0, BsdfSample& out) {
     const glm::vec3& wo = ctx.wo_local;
     if (wo.z <= 0.0f) return false;
     // eta = n_transmitted / n_incident: entering from the front means going into the medium.
@@ -76,7 +76,7 @@ bool sample_smooth_dielectric(const Material& m, const ShadingContext& ctx, floa
 
 }  // namespace
 
-BsdfEval eval_bsdf(const Material& m, const ShadingContext& ctx, const glm::vec3& wi) {
+BsdfEval eval_bsdf(const MaterialParameters& m, const ShadingContext& ctx, const glm::vec3& wi) {
     BsdfEval e;
     switch (m.type) {
         case Material::Type::Diffuse: {
@@ -108,7 +108,7 @@ BsdfEval eval_bsdf(const Material& m, const ShadingContext& ctx, const glm::vec3
     return e;
 }
 
-bool sample_bsdf(const Material& m, const ShadingContext& ctx, float u0, float u1, float u2, BsdfSample& out) {
+bool sample_bsdf(const MaterialParameters& m, const ShadingContext& ctx, float u0, float u1, float u2, BsdfSample& out) {
     switch (m.type) {
         case Material::Type::Diffuse: {
             const float pt = diffuse_transmit_probability(m);
@@ -146,14 +146,14 @@ bool sample_bsdf(const Material& m, const ShadingContext& ctx, float u0, float u
     return false;
 }
 
-BsdfEvalBoth eval_bsdf_both(const Material& m, const SurfaceHit& hit, const glm::vec3& wo, const glm::vec3& wi) {
+BsdfEvalBoth eval_bsdf_both(const MaterialParameters& m, const SurfaceHit& hit, const glm::vec3& wo, const glm::vec3& wi) {
     const BsdfEval e = eval_bsdf(m, make_shading_context(hit, wo), wi);
     BsdfEvalBoth both{e.f_cos, e.pdf, 0.0f};
     if (e.pdf > 0.0f) both.pdf_wo = eval_bsdf(m, make_shading_context(hit, wi), wo).pdf;
     return both;
 }
 
-float importance_refraction_scale(const Material& m, const ShadingContext& ctx, const glm::vec3& wi) {
+float importance_refraction_scale(const MaterialParameters& m, const ShadingContext& ctx, const glm::vec3& wi) {
     if (m.type != Material::Type::Dielectric && m.type != Material::Type::RoughDielectric) return 1.0f;
     if (glm::dot(wi, ctx.ng) >= 0.0f) return 1.0f;  // reflected
     const float eta = ctx.front ? m.ior : 1.0f / m.ior;

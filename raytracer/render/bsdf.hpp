@@ -84,15 +84,15 @@ struct BsdfSample {
 };
 
 // True when the material scatters only into isolated directions (no light sampling possible).
-bool is_delta(const Material& m);
+bool is_delta(const MaterialParameters& m);
 // False for materials that absorb everything (the path ends there).
-inline bool scatters(const Material& m) { return m.type != Material::Type::Emissive; }
+inline bool scatters(const MaterialParameters& m) { return m.type != Material::Type::Emissive; }
 
 // Zero (and pdf 0) for delta lobes and for wi that the material cannot scatter into.
-BsdfEval eval_bsdf(const Material& m, const ShadingContext& ctx, const glm::vec3& wi);
+BsdfEval eval_bsdf(const MaterialParameters& m, const ShadingContext& ctx, const glm::vec3& wi);
 
 // Returns false when no direction was produced (absorbed, or the sample fell below the surface).
-bool sample_bsdf(const Material& m, const ShadingContext& ctx, float u0, float u1, float u2, BsdfSample& out);
+bool sample_bsdf(const MaterialParameters& m, const ShadingContext& ctx, float u0, float u1, float u2, BsdfSample& out);
 
 // Both directions' densities at a path vertex, for bidirectional methods whose MIS weights ask
 // how likely each neighbour was to be sampled from the other side: f |cos theta_i| (the shading
@@ -103,17 +103,17 @@ struct BsdfEvalBoth {
     float pdf_wi = 0.0f;
     float pdf_wo = 0.0f;
 };
-BsdfEvalBoth eval_bsdf_both(const Material& m, const SurfaceHit& hit, const glm::vec3& wo, const glm::vec3& wi);
+BsdfEvalBoth eval_bsdf_both(const MaterialParameters& m, const SurfaceHit& hit, const glm::vec3& wo, const glm::vec3& wi);
 
 // Transporting importance (a light subpath: wo toward the light, wi toward the camera side), a
 // refraction carries power, not radiance: the 1/eta^2 that eval_bsdf / sample_bsdf give a
 // transmission from wo's side is undone by this factor (eta^2; 1 for reflection and for
 // materials that do not bend light; pbrt-v4's TransportMode::Importance).
-float importance_refraction_scale(const Material& m, const ShadingContext& ctx, const glm::vec3& wi);
+float importance_refraction_scale(const MaterialParameters& m, const ShadingContext& ctx, const glm::vec3& wi);
 
 // Radiance the material emits from a point with outward geometric normal `n` toward `w`
 // (unit, pointing away from the surface). Front side only unless Material::two_sided_emission.
-inline glm::vec3 emitted_radiance(const Material& m, const glm::vec3& n, const glm::vec3& w) {
+inline glm::vec3 emitted_radiance(const MaterialParameters& m, const glm::vec3& n, const glm::vec3& w) {
     const float c = glm::dot(n, w);
     return (c > 0.0f || (m.two_sided_emission && c < 0.0f)) ? m.emission : glm::vec3(0.0f);
 }
@@ -139,22 +139,22 @@ glm::vec3 fresnel_conductor(float cos_i, const glm::vec3& eta, const glm::vec3& 
 // nothing is absorbed, so with albedo 1 the weights sum to exactly 1 at every angle. Two-sided,
 // delta in both lobes.
 float thin_dielectric_reflectance(float cos_i, float ior);
-bool sample_thin_dielectric(const Material& m, const ShadingContext& ctx, float u0, BsdfSample& out);
+bool sample_thin_dielectric(const MaterialParameters& m, const ShadingContext& ctx, float u0, BsdfSample& out);
 
 // A rough dielectric of roughness 0 is the smooth one; so is one of ior 1, an index-matched
 // interface that bends nothing (every microfacet passes light straight on: a delta lobe, where
 // the microfacet transmission's Jacobian would divide by zero).
-inline bool rough_dielectric_is_smooth(const Material& m) { return m.roughness == 0.0f || m.ior == 1.0f; }
+inline bool rough_dielectric_is_smooth(const MaterialParameters& m) { return m.roughness == 0.0f || m.ior == 1.0f; }
 
 // The conductor, the rough dielectric (not smooth, above) and the coated diffuse; eval_bsdf /
 // sample_bsdf dispatch here.
-BsdfEval eval_conductor(const Material& m, const ShadingContext& ctx, const glm::vec3& wi);
-bool sample_conductor(const Material& m, const ShadingContext& ctx, float u1, float u2, BsdfSample& out);
-BsdfEval eval_rough_dielectric(const Material& m, const ShadingContext& ctx, const glm::vec3& wi);
-bool sample_rough_dielectric(const Material& m, const ShadingContext& ctx, float u0, float u1, float u2,
+BsdfEval eval_conductor(const MaterialParameters& m, const ShadingContext& ctx, const glm::vec3& wi);
+bool sample_conductor(const MaterialParameters& m, const ShadingContext& ctx, float u1, float u2, BsdfSample& out);
+BsdfEval eval_rough_dielectric(const MaterialParameters& m, const ShadingContext& ctx, const glm::vec3& wi);
+bool sample_rough_dielectric(const MaterialParameters& m, const ShadingContext& ctx, float u0, float u1, float u2,
                              BsdfSample& out);
-BsdfEval eval_coated_diffuse(const Material& m, const ShadingContext& ctx, const glm::vec3& wi);
-bool sample_coated_diffuse(const Material& m, const ShadingContext& ctx, float u0, float u1, float u2,
+BsdfEval eval_coated_diffuse(const MaterialParameters& m, const ShadingContext& ctx, const glm::vec3& wi);
+bool sample_coated_diffuse(const MaterialParameters& m, const ShadingContext& ctx, float u0, float u1, float u2,
                            BsdfSample& out);
 // Fext above: the cosine-weighted hemispherical mean of fresnel_dielectric(mu, eta), eta >= 1.
 float fresnel_diffuse_reflectance(float eta);

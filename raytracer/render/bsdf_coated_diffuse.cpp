@@ -45,14 +45,14 @@ struct CoatedTerms {
     float p_specular = 1.0f;    // probability of sampling the coat's lobe
 };
 
-float coat_reflectance(const Material& m, float cos_theta) {
+float coat_reflectance(const MaterialParameters& m, float cos_theta) {
     const float mu = std::clamp(cos_theta, 0.0f, 1.0f);
     if (m.roughness > 0.0f) return coat_albedo(m.ior, m.roughness, mu).albedo;
     float cos_t = 0.0f;
     return fresnel_dielectric(mu, m.ior, cos_t);
 }
 
-CoatedTerms coated_terms(const Material& m, float cos_o) {
+CoatedTerms coated_terms(const MaterialParameters& m, float cos_o) {
     CoatedTerms c;
     const float eta = m.ior;
     c.e_o = coat_reflectance(m, cos_o);
@@ -73,7 +73,7 @@ bool reflects(const ShadingContext& ctx, const glm::vec3& wl, const glm::vec3& w
 }
 
 // The rough coat's GGX reflection: f cos and the visible-normal density of sampling wl.
-BsdfEval rough_coat_lobe(const Material& m, const glm::vec3& wo, const glm::vec3& wl) {
+BsdfEval rough_coat_lobe(const MaterialParameters& m, const glm::vec3& wo, const glm::vec3& wl) {
     BsdfEval e;
     const glm::vec3 h = glm::normalize(wo + wl);
     const float wo_h = glm::dot(wo, h);
@@ -89,7 +89,7 @@ BsdfEval rough_coat_lobe(const Material& m, const glm::vec3& wo, const glm::vec3
 
 }  // namespace
 
-BsdfEval eval_coated_diffuse(const Material& m, const ShadingContext& ctx, const glm::vec3& wi) {
+BsdfEval eval_coated_diffuse(const MaterialParameters& m, const ShadingContext& ctx, const glm::vec3& wi) {
     BsdfEval e;
     const glm::vec3 wl = ctx.frame.to_local(wi);
     if (!reflects(ctx, wl, wi)) return e;
@@ -105,7 +105,7 @@ BsdfEval eval_coated_diffuse(const Material& m, const ShadingContext& ctx, const
     return e;
 }
 
-bool sample_coated_diffuse(const Material& m, const ShadingContext& ctx, float u0, float u1, float u2,
+bool sample_coated_diffuse(const MaterialParameters& m, const ShadingContext& ctx, float u0, float u1, float u2,
                            BsdfSample& out) {
     const glm::vec3& wo = ctx.wo_local;
     if (wo.z <= 0.0f) return false;

@@ -53,11 +53,11 @@ glm::vec3 fresnel_conductor(float cos_i, const glm::vec3& eta, const glm::vec3& 
             fresnel_conductor(cos_i, eta.z, k.z)};
 }
 
-BsdfEval eval_conductor(const Material& m, const ShadingContext& ctx, const glm::vec3& wi) {
+BsdfEval eval_conductor(const MaterialParameters& m, const ShadingContext& ctx, const glm::vec3& wi) {
     return ggx_reflection::eval(m, ctx, wi, [&](float cos_d) { return m.albedo * fresnel_conductor(cos_d, m.eta, m.k); });
 }
 
-bool sample_conductor(const Material& m, const ShadingContext& ctx, float u1, float u2, BsdfSample& out) {
+bool sample_conductor(const MaterialParameters& m, const ShadingContext& ctx, float u1, float u2, BsdfSample& out) {
     return ggx_reflection::sample(m, ctx, u1, u2, out,
                                   [&](float cos_d) { return m.albedo * fresnel_conductor(cos_d, m.eta, m.k); });
 }

@@ -17,17 +17,17 @@
 
 namespace sweeptrace::ggx_reflection {
 
-inline float alpha(const Material& m) { return std::max(m.roughness * m.roughness, kMinMetalAlpha); }
+inline float alpha(const MaterialParameters& m) { return std::max(m.roughness * m.roughness, kMinMetalAlpha); }
 
 // The conductor may choose Beckmann's distribution (Material::Microfacet); the metal is GGX.
-inline bool beckmann(const Material& m) { return m.microfacet == Material::Microfacet::Beckmann; }
-inline float lobe_d(const Material& m, const glm::vec3& h, float a) { return beckmann(m) ? beckmann_d(h, a) : ggx_d(h, a); }
-inline float lobe_lambda(const Material& m, const glm::vec3& w, float a) {
+inline bool beckmann(const MaterialParameters& m) { return m.microfacet == Material::Microfacet::Beckmann; }
+inline float lobe_d(const MaterialParameters& m, const glm::vec3& h, float a) { return beckmann(m) ? beckmann_d(h, a) : ggx_d(h, a); }
+inline float lobe_lambda(const MaterialParameters& m, const glm::vec3& w, float a) {
     return beckmann(m) ? beckmann_lambda(w, a) : ggx_lambda(w, a);
 }
 // The density of wi: GGX samples visible normals, D G1(wo) / (4 wo.z); Beckmann samples D(h) h.z,
 // and the reflection's Jacobian 1 / (4 wo.h) makes it D h.z / (4 wo.h).
-inline float lobe_pdf(const Material& m, const glm::vec3& wo, const glm::vec3& h, float d, float lambda_o) {
+inline float lobe_pdf(const MaterialParameters& m, const glm::vec3& wo, const glm::vec3& h, float d, float lambda_o) {
     if (!beckmann(m)) return d / (4.0f * wo.z * (1.0f + lambda_o));
     const float wo_h = glm::dot(wo, h);
     return wo_h > 0.0f ? d * h.z / (4.0f * wo_h) : 0.0f;
@@ -39,7 +39,7 @@ inline bool valid(const ShadingContext& ctx, const glm::vec3& wi_local, const gl
 }
 
 template <class Fresnel>
-BsdfEval eval(const Material& m, const ShadingContext& ctx, const glm::vec3& wi, Fresnel fresnel) {
+BsdfEval eval(const MaterialParameters& m, const ShadingContext& ctx, const glm::vec3& wi, Fresnel fresnel) {
     BsdfEval e;
     if (m.roughness == 0.0f) return e;
     const glm::vec3 wl = ctx.frame.to_local(wi);
@@ -56,7 +56,7 @@ BsdfEval eval(const Material& m, const ShadingContext& ctx, const glm::vec3& wi,
 }
 
 template <class Fresnel>
-bool sample(const Material& m, const ShadingContext& ctx, float u1, float u2, BsdfSample& out, Fresnel fresnel) {
+bool sample(const MaterialParameters& m, const ShadingContext& ctx, float u1, float u2, BsdfSample& out, Fresnel fresnel) {
     const glm::vec3& wo = ctx.wo_local;
     if (wo.z <= 0.0f) return false;
     if (m.roughness == 0.0f) {

@@ -21,10 +21,10 @@ namespace sweeptrace {
 
 namespace {
 
-float rough_dielectric_alpha(const Material& m) { return std::max(m.roughness * m.roughness, kMinMetalAlpha); }
+float rough_dielectric_alpha(const MaterialParameters& m) { return std::max(m.roughness * m.roughness, kMinMetalAlpha); }
 
 // n(wi side) / n(wo side) for a transmitted wi: wo in front (outside) means wi inside the medium.
-float relative_eta(const Material& m, const ShadingContext& ctx) { return ctx.front ? m.ior : 1.0f / m.ior; }
+float relative_eta(const MaterialParameters& m, const ShadingContext& ctx) { return ctx.front ? m.ior : 1.0f / m.ior; }
 
 // Refraction of wo about the microfacet normal h (wo.h > 0); false on total internal reflection.
 bool refract_about(const glm::vec3& wo, const glm::vec3& h, float eta, glm::vec3& wi) {
@@ -68,7 +68,7 @@ RoughLobe rough_lobe(const glm::vec3& wo, const glm::vec3& wi, const glm::vec3& 
 
 }  // namespace
 
-BsdfEval eval_rough_dielectric(const Material& m, const ShadingContext& ctx, const glm::vec3& wi) {
+BsdfEval eval_rough_dielectric(const MaterialParameters& m, const ShadingContext& ctx, const glm::vec3& wi) {
     BsdfEval e;
     const glm::vec3& wo = ctx.wo_local;
     if (wo.z <= 0.0f) return e;
@@ -88,7 +88,7 @@ BsdfEval eval_rough_dielectric(const Material& m, const ShadingContext& ctx, con
     return e;
 }
 
-bool sample_rough_dielectric(const Material& m, const ShadingContext& ctx, float u0, float u1, float u2,
+bool sample_rough_dielectric(const MaterialParameters& m, const ShadingContext& ctx, float u0, float u1, float u2,
                              BsdfSample& out) {
     const glm::vec3& wo = ctx.wo_local;
     if (wo.z <= 0.0f) return false;

@@ -15,7 +15,7 @@ float thin_dielectric_reflectance(float cos_i, float ior) {
     return r + t * t * r / (1.0f - r * r);
 }
 
-bool sample_thin_dielectric(const Material& m, const ShadingContext& ctx, float u0, BsdfSample& out) {
+bool sample_thin_dielectric(const MaterialParameters& m, const ShadingContext& ctx, float u0, BsdfSample& out) {
     const glm::vec3& wo = ctx.wo_local;
     if (wo.z <= 0.0f) return false;
     // The same sheet from either side: entering from the front or the back is the same ior.

@@ -2,7 +2,7 @@
 
 namespace sweeptrace {
 
-bool sample_guided(const Material& m, const ShadingContext& ctx, const DirectionalQuadtree& guide, float u_select,
+bool sample_guided(const MaterialParameters& m, const ShadingContext& ctx, const DirectionalQuadtree& guide, float u_select,
                    float u0, float u1, float u2, BsdfSample& out, float& bsdf_pdf) {
     glm::vec3 wi;
     float guide_pdf = -1.0f;  // the guide's density of wi, when its descent gave it

@@ -20,7 +20,7 @@ namespace sweeptrace {
 
 inline constexpr float kBsdfFraction = 0.5f;
 
-inline bool is_guided(const Material& m) { return m.type == Material::Type::Diffuse; }
+inline bool is_guided(const MaterialParameters& m) { return m.type == Material::Type::Diffuse; }
 
 // The mixture density for wi given the BSDF's density there.
 inline float guided_pdf(const DirectionalQuadtree& guide, float bsdf_pdf, const glm::vec3& wi) {
@@ -30,7 +30,7 @@ inline float guided_pdf(const DirectionalQuadtree& guide, float bsdf_pdf, const 
 // Draws from the mixture: u_select picks the strategy, (u0, u1, u2) feed it. Returns false when
 // no direction was produced or the BSDF is zero there (the guide may point below the surface).
 // `bsdf_pdf` gets the BSDF's own density of the direction (out.pdf is the mixture's).
-bool sample_guided(const Material& m, const ShadingContext& ctx, const DirectionalQuadtree& guide, float u_select,
+bool sample_guided(const MaterialParameters& m, const ShadingContext& ctx, const DirectionalQuadtree& guide, float u_select,
                    float u0, float u1, float u2, BsdfSample& out, float& bsdf_pdf);
 
 }  // namespace sweeptrace

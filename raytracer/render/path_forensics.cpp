@@ -56,7 +56,7 @@ std::string number(double v) {
 
 }  // namespace
 
-PathTally::Kind PathTally::kind_of(const Material& m, bool delta_lobe) {
+PathTally::Kind PathTally::kind_of(const MaterialParameters& m, bool delta_lobe) {
     if (delta_lobe) return Specular;
     return m.type == Material::Type::Diffuse ? Diffuse : Glossy;
 }

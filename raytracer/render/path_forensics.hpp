@@ -66,7 +66,7 @@ struct PathMoments {
 class PathTally {
 public:
     enum Kind : std::uint8_t { Diffuse = 1, Glossy = 2, Specular = 3 };
-    static Kind kind_of(const Material& m, bool delta_lobe);
+    static Kind kind_of(const MaterialParameters& m, bool delta_lobe);
 
     void begin() {
         key_ = PathKey{};

@@ -7,9 +7,9 @@
 namespace sweeptrace {
 
 // BdptDropsNee: bidirectional path tracing leaves next event estimation out of its MIS sums
-// (integrators/bdpt_mis.hpp), so its weights sum to more than 1 and the image is too bright.
+// (integrators/bidir_mis.hpp), so its weights sum to more than 1 and the image is too bright.
 // VcmDropsMerges: vertex connection and merging leaves the merges out of its connection
-// strategies' MIS sums (integrators/vcm_mis.hpp): paths both find are counted up to twice.
+// strategies' MIS sums (integrators/bidir_mis.hpp): paths both find are counted up to twice.
 enum class PlantedDefect { None, FlippedNormals, NoRayOffset, BdptDropsNee, VcmDropsMerges };
 
 // render() with `defect` planted in the light sampler and the integrator.

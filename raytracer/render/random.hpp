@@ -19,8 +19,11 @@ inline std::uint64_t mix64(std::uint64_t x) {
 class Rng {
 public:
     Rng() = default;  // a placeholder stream; assign a real one before use
-    Rng(std::uint64_t seed, std::uint64_t pixel, std::uint64_t sample) {
-        const std::uint64_t h = mix64(mix64(mix64(seed) ^ pixel) ^ sample);
+    // `stream` 0 is the camera sample's own stream; another value a second stream of the same
+    // (seed, pixel, sample), independent of it (vcm's light subpaths: sampler.hpp).
+    Rng(std::uint64_t seed, std::uint64_t pixel, std::uint64_t sample, std::uint64_t stream = 0) {
+        std::uint64_t h = mix64(mix64(mix64(seed) ^ pixel) ^ sample);
+        if (stream != 0) h = mix64(h ^ mix64(stream));
         inc_ = (mix64(h ^ 0x5851f42d4c957f2dull) << 1u) | 1u;  // odd: a valid PCG stream selector
         state_ = 0;
         next_u32();

@@ -299,8 +299,13 @@ private:
                 for (int y = y0; y < y1; ++y)
                     for (int x = x0; x < x1; ++x) {
                         const std::size_t pixel = static_cast<std::size_t>(y) * width_ + x;
-                        PixelSampler sampler(opt_.sampler, opt_.seed, pixel, static_cast<std::uint64_t>(sample));
-                        vcm_->trace_light(pixel, sample_time(sampler), sampler, rays, splats);
+                        // The camera sample's shutter time (its subpath sees the scene then), the
+                        // light subpath's numbers from a stream of their own.
+                        PixelSampler camera(opt_.sampler, opt_.seed, pixel, static_cast<std::uint64_t>(sample));
+                        const float time = start_camera_sample(camera).time;
+                        PixelSampler light(opt_.sampler, opt_.seed, pixel, static_cast<std::uint64_t>(sample),
+                                           SamplerStream::LightSubpath);
+                        vcm_->trace_light(pixel, time, light, rays, splats);
                     }
                 rays_.fetch_add(rays, std::memory_order_relaxed);
             }
@@ -308,10 +313,20 @@ private:
         vcm_->build_grid();
     }
 
-    // The sample's shutter time, drawn only with a shutter, so still scenes take exactly the
-    // numbers they did.
-    float sample_time(PixelSampler& sampler) const {
-        return camera_.has_shutter() ? camera_.shutter_fraction(sampler.get1d(sample_dim::kTime)) : 0.0f;
+    // A camera sample's first numbers, in the order they are drawn: the film position's offset in
+    // the pixel (from the pixel filter), the lens point and the shutter time, drawn only with a
+    // shutter, so still scenes take exactly the numbers they did.
+    struct CameraStart {
+        FilmOffset film;
+        glm::vec2 lens;
+        float time;
+    };
+    CameraStart start_camera_sample(PixelSampler& sampler) const {
+        const glm::vec2 u_film = sampler.get2d(sample_dim::kFilm);
+        const FilmOffset film = camera_.film_offset(u_film.x, u_film.y);
+        const glm::vec2 lens = sampler.get2d(sample_dim::kLens);
+        const float time = camera_.has_shutter() ? camera_.shutter_fraction(sampler.get1d(sample_dim::kTime)) : 0.0f;
+        return {film, lens, time};
     }
 
     // Training on the pass just finished: tiles merged in tile order, so the guide the next pass
@@ -356,12 +371,9 @@ private:
                            std::vector<GuideRecord>* records, std::vector<Splat>* splats, PathTally* tally) {
         const std::size_t pixel = static_cast<std::size_t>(y) * width_ + x;
         PixelSampler sampler(opt_.sampler, opt_.seed, pixel, static_cast<std::uint64_t>(sample));
-        const glm::vec2 u_film = sampler.get2d(sample_dim::kFilm);
-        const FilmOffset film = camera_.film_offset(u_film.x, u_film.y);  // from the pixel filter
-        const glm::vec2 lens = sampler.get2d(sample_dim::kLens);
+        const auto [film, lens, time] = start_camera_sample(sampler);
         const float fx = static_cast<float>(x) + film.dx;
         const float fy = static_cast<float>(y) + film.dy;
-        const float time = sample_time(sampler);
         glm::vec3 l = film.weight * limited(vcm_                 ? vcm_->sample(pixel, fx, fy, lens, time, sampler, rays)
                                             : splats != nullptr ? bdpt_.sample(fx, fy, lens, time, sampler, rays, *splats)
                                                                 : integrator_.radiance(camera_.generate(fx, fy, lens.x, lens.y),

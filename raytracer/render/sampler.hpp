@@ -15,6 +15,13 @@
 // CPU time of whole renders.
 // SamplerKind::Independent: the per-sample PCG32 stream of random.hpp, consumed in call order
 // (dimensions ignored): exactly the renderer's samples before the Sobol sampler existed.
+// Two streams per (seed, pixel, sample): the camera sample's, and vcm's light subpath's
+// (SamplerStream::LightSubpath), which vcm traces in a pass of its own and then joins to the camera
+// subpath. The Sobol sampler keeps them apart by dimension (bdpt.cpp gives the camera subpath the
+// odd bounce slots and the light subpath the even ones), so its light stream is the camera's, and
+// bdpt, which draws both subpaths in one call, consumes one stream; the independent sampler
+// ignores dimensions, so with one stream vcm's camera subpath replayed the numbers of the light
+// subpath it joins (test_render_vcm_streams.cpp).
 #include <cstdint>
 
 #include <glm/vec2.hpp>
@@ -51,14 +58,17 @@ inline constexpr int bounce(int b, int slot) { return kCameraDims + b * kBounceD
 static_assert(kTime < kFilm && kTime < kLens && kTime < bounce(0, 0), "the time slot lies outside the camera's and bounces' ranges");
 }  // namespace sample_dim
 
+enum class SamplerStream : std::uint8_t { Camera = 0, LightSubpath = 1 };
+
 class PixelSampler {
 public:
-    PixelSampler(SamplerKind kind, std::uint64_t seed, std::uint64_t pixel, std::uint64_t sample)
+    PixelSampler(SamplerKind kind, std::uint64_t seed, std::uint64_t pixel, std::uint64_t sample,
+                 SamplerStream stream = SamplerStream::Camera)
         : kind_(kind),
           key_(mix64(mix64(seed ^ 0x243f6a8885a308d3ull) ^ pixel)),
           sample_(sample),
           reversed_sample_(reverse_bits32(static_cast<std::uint32_t>(sample))) {
-        if (kind == SamplerKind::Independent) rng_ = Rng(seed, pixel, sample);
+        if (kind == SamplerKind::Independent) rng_ = Rng(seed, pixel, sample, static_cast<std::uint64_t>(stream));
     }
 
     // Uniform in [0, 1).

@@ -77,8 +77,8 @@ glm::vec2 hit_uv(const Scene& scene, const SurfaceHit& hit) {
     });
 }
 
-Material textured_material(const Scene& scene, const Material& base, SurfaceHit& hit) {
-    Material m = base;
+MaterialParameters textured_material(const Scene& scene, const MaterialParameters& base, SurfaceHit& hit) {
+    MaterialParameters m = base;  // the parameters alone: no name to copy
     const glm::vec2 uv = hit_uv(scene, hit);
     if (base.albedo_texture >= 0) m.albedo = eval_texture(texture(scene, base.albedo_texture), uv);
     if (base.roughness_texture >= 0) {
@@ -98,7 +98,7 @@ Material textured_material(const Scene& scene, const Material& base, SurfaceHit&
     return m;
 }
 
-glm::vec3 textured_emission(const Scene& scene, const Material& m, const SurfaceHit& at) {
+glm::vec3 textured_emission(const Scene& scene, const MaterialParameters& m, const SurfaceHit& at) {
     return eval_texture(texture(scene, m.emission_texture), hit_uv(scene, at));
 }
 

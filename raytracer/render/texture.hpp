@@ -30,10 +30,10 @@ glm::vec2 hit_uv(const Scene& scene, const SurfaceHit& hit);
 // `base` with its textured parameters evaluated at `hit` (the caller's copy; only called for
 // materials that read a texture). A normal map, then a bump map, also replace hit.shading_normal
 // (render/shading_frame.hpp).
-Material textured_material(const Scene& scene, const Material& base, SurfaceHit& hit);
+MaterialParameters textured_material(const Scene& scene, const MaterialParameters& base, SurfaceHit& hit);
 
 // What a material with an emission texture emits at a point a light sample drew (`at`: its world
 // point, object and primitive), toward the side `emitted_radiance` already accepted.
-glm::vec3 textured_emission(const Scene& scene, const Material& m, const SurfaceHit& at);
+glm::vec3 textured_emission(const Scene& scene, const MaterialParameters& m, const SurfaceHit& at);
 
 }  // namespace sweeptrace

@@ -139,7 +139,9 @@ struct Texture {
     float min_value = 0.0f, max_value = 1.0f;
 };
 
-struct Material {
+// What a surface does with light: every parameter the BSDF, emission and textures read. A hit's
+// textured copy (render/texture.hpp) is one of these, so the hot paths copy no name.
+struct MaterialParameters {
     enum class Type { Diffuse, Metal, Dielectric, Emissive, ThinDielectric, RoughDielectric, CoatedDiffuse, Conductor };
     // RoughDielectric reads roughness, ior and albedo (the transmission tint) like Metal and
     // Dielectric; CoatedDiffuse reads albedo (the base under the coating), ior and roughness (the
@@ -167,7 +169,6 @@ struct Material {
     // side the outward geometric normal points to: outside of closed shapes, edge_u x edge_v for
     // quads, the disk's normal, (b - a) x (c - a) for triangles and mesh faces.
     bool two_sided_emission = false;
-    std::string name;
     // Textures on the other parameters (indices into Scene::textures, or -1), evaluated at each
     // hit by render/texture.hpp. With emission_texture, `emission` holds the texture's mean (the
     // light's selection weight; each hit and light sample reads the texture itself).
@@ -181,8 +182,13 @@ struct Material {
     float bump_scale = 1.0f;
 };
 
+// A scene's material: its parameters and its name (for messages and statistics).
+struct Material : MaterialParameters {
+    std::string name;
+};
+
 // Whether any parameter of `m` is read from a texture (the renderer then evaluates them per hit).
-inline bool reads_texture(const Material& m) {
+inline bool reads_texture(const MaterialParameters& m) {
     return m.albedo_texture >= 0 || m.roughness_texture >= 0 || m.emission_texture >= 0 || m.normal_texture >= 0 ||
            m.bump_texture >= 0;
 }

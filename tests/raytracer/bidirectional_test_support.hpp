@@ -28,9 +28,11 @@ inline Scene shipped(const char* name, int width, int height) {
 
 inline RenderResult render_as(const Scene& scene, const Accel& accel, IntegratorKind integrator, int spp,
                               std::uint64_t seed, PlantedDefect defect = PlantedDefect::None, int threads = 0,
-                              int first_sample = 0, Sampling sampling = Sampling::NeeMis) {
+                              int first_sample = 0, Sampling sampling = Sampling::NeeMis,
+                              SamplerKind sampler = SamplerKind::Sobol) {
     RenderOptions o;
     o.integrator = integrator;
+    o.sampler = sampler;
     o.spp = spp;
     o.first_sample = first_sample;
     o.max_depth = scene.film.max_depth;
@@ -50,6 +52,18 @@ inline BlockTestResult against_path(const RenderResult& path, const RenderResult
     options.reference_noise_ratio = 1.0;
     options.null_variance = &path.variance;
     return block_test(path.image, r.image, r.variance, options);
+}
+
+// `integrator` at `spp` (seed 2) against the path tracer at `path_spp` (seed 1), block z-test: it
+// must pass.
+inline void check_agrees_with_path(const Scene& scene, const Accel& accel, IntegratorKind integrator, int path_spp,
+                                   int spp, int block, SamplerKind sampler = SamplerKind::Sobol) {
+    const RenderResult path = render_as(scene, accel, IntegratorKind::Path, path_spp, 1);
+    const RenderResult r = render_as(scene, accel, integrator, spp, 2, PlantedDefect::None, 0, 0, Sampling::NeeMis, sampler);
+    const BlockTestResult t = against_path(path, r, block);
+    INFO(t.summary());
+    CHECK(t.pass());
+    CHECK(r.stats.nonfinite_samples == 0);
 }
 
 // default.json at 24x14, depth 5, with every kind of light at once: its sphere, a point, a spot,

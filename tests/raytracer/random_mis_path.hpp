@@ -6,7 +6,7 @@
 #include <cmath>
 #include <random>
 
-#include "raytracer/render/integrators/bdpt_mis.hpp"
+#include "raytracer/render/integrators/bidir_mis.hpp"
 
 namespace sweeptrace::testing {
 
@@ -16,18 +16,18 @@ inline MisPath random_mis_path(std::mt19937& rng) {
     MisPath p;
     p.k = 1 + static_cast<int>(unit(rng) * 8.0f);
     const auto size = static_cast<std::size_t>(p.k + 1);
-    p.fwd.resize(size);
-    p.rev.resize(size);
+    p.from_light.resize(size);
+    p.from_camera.resize(size);
     p.delta.assign(size, 0);
     for (std::size_t i = 0; i < size; ++i) {
-        p.fwd[i] = std::pow(10.0f, decade(rng));
-        p.rev[i] = std::pow(10.0f, decade(rng));
+        p.from_light[i] = std::pow(10.0f, decade(rng));
+        p.from_camera[i] = std::pow(10.0f, decade(rng));
     }
     for (int i = 1; i < p.k; ++i)
         if (unit(rng) < 0.25f) {
             p.delta[static_cast<std::size_t>(i)] = 1;
-            p.fwd[static_cast<std::size_t>(i + 1)] = 0.0f;
-            p.rev[static_cast<std::size_t>(i - 1)] = 0.0f;
+            p.from_light[static_cast<std::size_t>(i + 1)] = 0.0f;
+            p.from_camera[static_cast<std::size_t>(i - 1)] = 0.0f;
         }
     p.nee0 = std::pow(10.0f, decade(rng));
     p.light_hittable = unit(rng) < 0.7f;

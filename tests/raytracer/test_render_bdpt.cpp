@@ -16,7 +16,7 @@
 #include "convergence_harness.hpp"
 #include "random_mis_path.hpp"
 #include "raytracer/render/camera.hpp"
-#include "raytracer/render/integrators/bdpt_mis.hpp"
+#include "raytracer/render/integrators/bidir_mis.hpp"
 #include "raytracer/render/lights.hpp"
 #include "raytracer/render/planted_defect.hpp"
 #include "raytracer/scene/load_scene.hpp"
@@ -130,18 +130,18 @@ TEST_CASE("bdpt: MIS weights sum to 1 over the strategies of random paths, and a
         double sum = 0.0, planted = 0.0;
         int possible = 0;
         for (int s = 0; s <= p.k; ++s) {
-            const float w = bdpt_mis_weight(p, s);
+            const float w = mis_weight(p, s, false, 0.0f);
             REQUIRE(w >= 0.0f);
             REQUIRE(w <= 1.0f);
             possible += w > 0.0f ? 1 : 0;
             sum += w;
-            planted += bdpt_mis_weight(p, s, true);
+            planted += mis_weight(p, s, false, 0.0f, MisDefect::DropNee);
         }
         INFO("path " << n << ", k " << p.k);
         if (possible == 0) continue;  // every strategy blocked by delta vertices: no estimator at all
         ++tested;
         CHECK(sum == Approx(1.0).epsilon(1e-5));
-        if (possible >= 2 && bdpt_mis_weight(p, 1) > 1e-3f) planted_over += planted > 1.0 + 1e-4 ? 1 : 0;
+        if (possible >= 2 && mis_weight(p, 1, false, 0.0f) > 1e-3f) planted_over += planted > 1.0 + 1e-4 ? 1 : 0;
     }
     CHECK(tested > 1000);
     CHECK(planted_over > 200);

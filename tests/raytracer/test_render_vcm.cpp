@@ -12,7 +12,7 @@
 #include "convergence_harness.hpp"
 #include "random_mis_path.hpp"
 #include "raytracer/render/integrators/vcm.hpp"
-#include "raytracer/render/integrators/vcm_mis.hpp"
+#include "raytracer/render/integrators/bidir_mis.hpp"
 #include "raytracer/render/planted_defect.hpp"
 
 using namespace sweeptrace;
@@ -57,17 +57,15 @@ TEST_CASE("vcm: MIS weights sum to 1 over connections and merges of random paths
         int possible = 0;
         for (int s = 0; s <= p.k; ++s) {
             for (const bool merge : {false, true}) {
-                const float w = vcm_mis_weight(p, s, merge, eta);
+                const float w = mis_weight(p, s, merge, eta);
                 REQUIRE(w >= 0.0f);
                 REQUIRE(w <= 1.0f + 1e-6f);
                 possible += w > 0.0f ? 1 : 0;
                 sum += w;
                 if (merge) merges += w;
-                planted += vcm_mis_weight(p, s, merge, eta, true);
+                planted += mis_weight(p, s, merge, eta, MisDefect::DropMerges);
             }
-            // Without merging, the weights are bdpt's.
-            CHECK(vcm_mis_weight(p, s, false, 0.0f) == Approx(bdpt_mis_weight(p, s)).epsilon(1e-5));
-            CHECK(vcm_mis_weight(p, s, true, 0.0f) == 0.0f);
+            CHECK(mis_weight(p, s, true, 0.0f) == 0.0f);  // without merging, no merge has weight
         }
         INFO("path " << n << ", k " << p.k << ", eta " << eta);
         if (possible == 0) continue;

@@ -6,8 +6,8 @@
 #include <glm/geometric.hpp>
 
 #include "raytracer/render/bsdf.hpp"
+#include "raytracer/render/integrators/bidir_mis.hpp"
 #include "raytracer/render/integrators/path.hpp"
-#include "raytracer/render/integrators/vcm_mis.hpp"
 #include "raytracer/render/sampling.hpp"
 #include "raytracer/render/texture.hpp"
 
@@ -35,23 +35,9 @@ float shading_correction(const SurfaceHit& hit, const glm::vec3& wo, const glm::
 // The textured material of a surface vertex, stored in it (the hit's shading normal may change).
 void set_material(const Scene& scene, PathVertex& v) {
     v.material = scene.objects[v.hit.object].material;
-    const Material& base = scene.materials[v.material];
+    const MaterialParameters& base = scene.materials[v.material];
     v.has_textured = reads_texture(base);
     if (v.has_textured) v.textured = textured_material(scene, base, v.hit);
-}
-
-// The densities of a path made of the camera subpath alone, x_i = cam[k - i] for i >= first (s = 0).
-void camera_only(MisPath& m, const std::vector<PathVertex>& cam, int k, int first) {
-    m.k = k;
-    m.fwd.assign(static_cast<std::size_t>(k + 1), 0.0f);
-    m.rev.assign(static_cast<std::size_t>(k + 1), 0.0f);
-    m.delta.assign(static_cast<std::size_t>(k + 1), 0);
-    for (int i = first; i <= k; ++i) {
-        const PathVertex& v = cam[static_cast<std::size_t>(k - i)];
-        m.fwd[static_cast<std::size_t>(i)] = v.pdf_rev;
-        m.rev[static_cast<std::size_t>(i)] = v.pdf_fwd;
-        m.delta[static_cast<std::size_t>(i)] = v.delta;
-    }
 }
 
 }  // namespace
@@ -59,6 +45,7 @@ void camera_only(MisPath& m, const std::vector<PathVertex>& cam, int k, int firs
 struct BdptIntegrator::Subpaths {
     std::vector<PathVertex> cam, light;
     MisPath mis;
+    float merge_eta = 0.0f;  // the merging density the weights count (vcm's, per iteration), 0 for bdpt
 };
 
 BdptIntegrator::BdptIntegrator(const Scene& scene, const Accel& accel, const LightSet& lights,
@@ -85,10 +72,12 @@ bool BdptIntegrator::blocked(const collision::Ray& ray, float time) const {
     return moving_ ? accel_.occluded(ray, time) : accel_.occluded(ray);
 }
 
-float BdptIntegrator::weight(const MisPath& path, int s) const {
+float BdptIntegrator::weight(const MisPath& path, int s, float merge_eta) const {
     if (light_tracing_only_) return 1.0f;
-    if (merge_eta_ > 0.0f) return vcm_mis_weight(path, s, false, merge_eta_, defect_ == PlantedDefect::VcmDropsMerges);
-    return bdpt_mis_weight(path, s, defect_ == PlantedDefect::BdptDropsNee);
+    const MisDefect defect = defect_ == PlantedDefect::BdptDropsNee     ? MisDefect::DropNee
+                             : defect_ == PlantedDefect::VcmDropsMerges ? MisDefect::DropMerges
+                                                                        : MisDefect::None;
+    return mis_weight(path, s, false, merge_eta, defect);
 }
 
 glm::vec3 BdptIntegrator::sample(float x, float y, const glm::vec2& lens, float time, PixelSampler& sampler,
@@ -101,6 +90,7 @@ glm::vec3 BdptIntegrator::sample(float x, float y, const glm::vec2& lens, float 
             light_to_camera(sp, s, time, sampler, rays, splats);
         return l;
     }
+    sp.merge_eta = 0.0f;
     camera_walk(x, y, lens, time, sampler, rays, sp, l);
     light_walk(time, sampler, rays, sp);
     l += connections(sp, time, sampler, rays);
@@ -123,9 +113,10 @@ glm::vec3 BdptIntegrator::connections(Subpaths& sp, float time, PixelSampler& sa
     return l;
 }
 
-void BdptIntegrator::light_subpath(float time, PixelSampler& sampler, std::uint64_t& rays, std::vector<PathVertex>& light,
-                                   std::vector<Splat>& splats) const {
+void BdptIntegrator::light_subpath(float time, PixelSampler& sampler, std::uint64_t& rays, float merge_eta,
+                                   std::vector<PathVertex>& light, std::vector<Splat>& splats) const {
     thread_local Subpaths sp;
+    sp.merge_eta = merge_eta;
     light_walk(time, sampler, rays, sp);
     const int nl = static_cast<int>(sp.light.size());
     for (int s = 1; s <= nl && s <= max_depth_; ++s) light_to_camera(sp, s, time, sampler, rays, splats);
@@ -133,9 +124,10 @@ void BdptIntegrator::light_subpath(float time, PixelSampler& sampler, std::uint6
 }
 
 glm::vec3 BdptIntegrator::camera_subpath(float x, float y, const glm::vec2& lens, float time, PixelSampler& sampler,
-                                         std::uint64_t& rays, const std::vector<PathVertex>& light,
+                                         std::uint64_t& rays, const std::vector<PathVertex>& light, float merge_eta,
                                          std::vector<PathVertex>& cam) const {
     thread_local Subpaths sp;
+    sp.merge_eta = merge_eta;
     glm::vec3 l(0.0f);
     camera_walk(x, y, lens, time, sampler, rays, sp, l);
     sp.light.assign(light.begin(), light.end());
@@ -167,10 +159,10 @@ void BdptIntegrator::camera_walk(float x, float y, const glm::vec2& lens, float 
         v.wo = -ray.dir;
         v.beta = beta;
         set_material(scene_, v);
-        v.pdf_fwd = area_density(pdf, sp.cam.back().point(), v);
+        v.pdf_own = area_density(pdf, sp.cam.back().point(), v);
         sp.cam.push_back(std::move(v));
         const PathVertex& at = sp.cam.back();
-        const Material& mat = at.mat(scene_);
+        const MaterialParameters& mat = at.mat(scene_);
         if (depth >= max_depth_ || !scatters(mat)) return;
         const ShadingContext ctx = make_shading_context(at.hit, at.wo);
         const float b0 = sampler.get1d(camera_slot(depth, sample_dim::kBsdfLobe));
@@ -179,7 +171,7 @@ void BdptIntegrator::camera_walk(float x, float y, const glm::vec2& lens, float 
         if (!sample_bsdf(mat, ctx, b0, b.x, b.y, bs)) return;
         const float rev = bs.delta ? 0.0f : eval_bsdf(mat, make_shading_context(at.hit, bs.wi), at.wo).pdf;
         PathVertex& prev = sp.cam[static_cast<std::size_t>(depth - 1)];
-        if (depth >= 2) prev.pdf_rev = area_density(rev, at.point(), prev);
+        if (depth >= 2) prev.pdf_other = area_density(rev, at.point(), prev);
         sp.cam.back().delta = bs.delta;
         pdf = bs.delta ? 0.0f : bs.pdf;
         beta *= bs.weight;
@@ -215,7 +207,7 @@ void BdptIntegrator::light_walk(float time, PixelSampler& sampler, std::uint64_t
     v0.delta_position = em.delta_position;
     v0.delta_direction = em.delta_direction;
     v0.beta = glm::vec3(1.0f / (em.selection * em.pdf_pos));
-    v0.pdf_fwd = em.selection * (em.at_infinity ? em.pdf_dir : em.pdf_pos);
+    v0.pdf_own = em.selection * (em.at_infinity ? em.pdf_dir : em.pdf_pos);
     sp.light.push_back(v0);
     const float cos0 = v0.on_surface() ? std::abs(glm::dot(em.normal, em.dir)) : 1.0f;
     glm::vec3 beta = em.le * (cos0 / (em.selection * em.pdf_pos * em.pdf_dir));
@@ -239,7 +231,7 @@ void BdptIntegrator::light_walk(float time, PixelSampler& sampler, std::uint64_t
         v.beta = beta;
         set_material(scene_, v);
         PathVertex& prev = sp.light.back();
-        v.pdf_fwd = prev.at_infinity ? em.pdf_pos * std::abs(glm::dot(v.hit.normal, ray.dir)) : area_density(pdf, prev.point(), v);
+        v.pdf_own = prev.at_infinity ? em.pdf_pos * std::abs(glm::dot(v.hit.normal, ray.dir)) : area_density(pdf, prev.point(), v);
         if (b == 1) {
             // Next event estimation's density of the light point from here, for strategy s = 1.
             PathVertex& l0 = sp.light.front();
@@ -250,7 +242,7 @@ void BdptIntegrator::light_walk(float time, PixelSampler& sampler, std::uint64_t
                 l0.pdf_nee = area_density(lights_.pdf(v.point(), v.hit.object, l0.hit), v.point(), l0);
             }
         }
-        const Material& mat = v.mat(scene_);
+        const MaterialParameters& mat = v.mat(scene_);
         if (!scatters(mat)) return;  // an absorber: every connection through it is zero
         sp.light.push_back(std::move(v));
         PathVertex& at = sp.light.back();
@@ -263,7 +255,7 @@ void BdptIntegrator::light_walk(float time, PixelSampler& sampler, std::uint64_t
         beta *= bs.weight * (importance_refraction_scale(at.mat(scene_), ctx, bs.wi) * shading_correction(at.hit, at.wo, bs.wi));
         const float rev = bs.delta ? 0.0f : eval_bsdf(at.mat(scene_), make_shading_context(at.hit, bs.wi), at.wo).pdf;
         PathVertex& before = sp.light[static_cast<std::size_t>(b - 1)];
-        before.pdf_rev = area_density(rev, at.point(), before);
+        before.pdf_other = area_density(rev, at.point(), before);
         at.delta = bs.delta;
         pdf = bs.delta ? 0.0f : bs.pdf;
         // Roulette on the throughput relative to the first segment's (light subpaths carry power).
@@ -279,31 +271,8 @@ void BdptIntegrator::light_walk(float time, PixelSampler& sampler, std::uint64_t
 // The densities of the path light[0..s) + cam[t-1..0], in light order, as the subpaths sampled
 // them; the connection's own entries are the caller's to set.
 void BdptIntegrator::gather(Subpaths& sp, int s, int t) const {
-    MisPath& m = sp.mis;
-    m.k = s + t - 1;
-    const auto n = static_cast<std::size_t>(m.k + 1);
-    m.fwd.assign(n, 0.0f);
-    m.rev.assign(n, 0.0f);
-    m.delta.assign(n, 0);
-    for (int i = 0; i < s; ++i) {
-        const PathVertex& v = sp.light[static_cast<std::size_t>(i)];
-        m.fwd[static_cast<std::size_t>(i)] = v.pdf_fwd;
-        m.rev[static_cast<std::size_t>(i)] = v.pdf_rev;
-        m.delta[static_cast<std::size_t>(i)] = v.delta;
-    }
-    for (int i = s; i <= m.k; ++i) {
-        const PathVertex& v = sp.cam[static_cast<std::size_t>(m.k - i)];
-        m.fwd[static_cast<std::size_t>(i)] = v.pdf_rev;
-        m.rev[static_cast<std::size_t>(i)] = v.pdf_fwd;
-        m.delta[static_cast<std::size_t>(i)] = v.delta;
-    }
-    if (s >= 1) {
-        const PathVertex& l0 = sp.light.front();
-        m.nee0 = l0.pdf_nee;
-        m.light_hittable = !l0.delta_position && !l0.delta_direction &&
-                           (!l0.at_infinity || lights_.light_is_found_at_infinity(l0.light));
-        m.light_to_camera = !l0.at_infinity;
-    }
+    gather_mis_path(sp.mis, s + t - 1, std::span<const PathVertex>(sp.light).first(static_cast<std::size_t>(s)),
+                    std::span<const PathVertex>(sp.cam).first(static_cast<std::size_t>(t)), lights_);
 }
 
 // s = 0 at infinity: the camera subpath escaped along `dir` from its last vertex, sampled with
@@ -315,18 +284,18 @@ glm::vec3 BdptIntegrator::escaped_radiance(const Subpaths& sp, const glm::vec3& 
     if (infinite_lights_.empty()) return sum;
     const int k = static_cast<int>(sp.cam.size());  // the light is x_0, cam.back() is x_1
     MisPath m;
-    camera_only(m, sp.cam, k, 1);
-    m.rev[0] = pdf;
+    gather_mis_path(m, k, {}, sp.cam, lights_);  // x_1 .. x_k; x_0, the light, is set below
+    m.from_camera[0] = pdf;
     m.light_to_camera = false;
     const PathVertex& x1 = sp.cam.back();
     for (const std::uint32_t light : infinite_lights_) {
         const glm::vec3 le = lights_.radiance_at_infinity(light, dir);
         if (!(luminance(le) > 0.0f)) continue;
         const LightSet::EmissionDensity d = lights_.emission_density(light, -dir, -dir);
-        m.fwd[0] = d.pos;
+        m.from_light[0] = d.pos;
         m.nee0 = lights_.nee_density_of_light(light, x1.point(), dir);  // emission's and NEE's differ under a portal
-        if (k >= 2) m.fwd[1] = d.dir * std::abs(glm::dot(x1.hit.normal, dir));
-        sum += beta * le * weight(m, 0);
+        if (k >= 2) m.from_light[1] = d.dir * std::abs(glm::dot(x1.hit.normal, dir));
+        sum += beta * le * weight(m, 0, sp.merge_eta);
     }
     return sum;
 }
@@ -338,22 +307,22 @@ glm::vec3 BdptIntegrator::emitter_hit(Subpaths& sp, int j) const {
     if (le == glm::vec3(0.0f)) return le;
     if (!lights_.is_light(z.hit.object)) return z.beta * le;  // no light sampling finds it
     MisPath& m = sp.mis;
-    camera_only(m, sp.cam, j, 0);
+    gather_mis_path(m, j, {}, std::span<const PathVertex>(sp.cam).first(static_cast<std::size_t>(j + 1)), lights_);
     m.delta[0] = 0;
     const auto light = static_cast<std::uint32_t>(lights_.light_of_object(z.hit.object));  // an emitter: is_light
     const LightSet::EmissionDensity d = lights_.emission_density(light, z.hit.normal, z.wo);
-    m.fwd[0] = d.pos;
+    m.from_light[0] = d.pos;
     m.nee0 = d.pos;
     if (j >= 2) {
         const PathVertex& x1 = sp.cam[static_cast<std::size_t>(j - 1)];
-        m.fwd[1] = area_density(d.dir, z.point(), x1);
+        m.from_light[1] = area_density(d.dir, z.point(), x1);
         PathVertex as_light = z;
         as_light.kind = PathVertex::Kind::Light;
         m.nee0 = area_density(lights_.pdf(x1.point(), x1.hit.object, z.hit), x1.point(), as_light);
     }
     m.light_hittable = true;
     m.light_to_camera = true;
-    return z.beta * le * weight(m, 0);
+    return z.beta * le * weight(m, 0, sp.merge_eta);
 }
 
 // s = 1: next event estimation from cam[j], as the path tracer draws it.
@@ -382,9 +351,9 @@ glm::vec3 BdptIntegrator::next_event(Subpaths& sp, int j, float time, PixelSampl
     x0.delta_position = lights_.light_is_delta_position(light);
     x0.delta_direction = ls.delta && ls.at_infinity;
     const LightSet::EmissionDensity d = lights_.emission_density(light, ls.normal, -ls.wi);
-    x0.pdf_fwd = d.pos;
+    x0.pdf_own = d.pos;
     x0.pdf_nee = ls.at_infinity || x0.delta_position ? ls.pdf : area_density(ls.pdf, z.point(), x0);
-    x0.pdf_rev = area_density(e.pdf_wi, z.point(), x0);
+    x0.pdf_other = area_density(e.pdf_wi, z.point(), x0);
     sp.light.resize(std::max<std::size_t>(sp.light.size(), 1));
     const PathVertex saved = sp.light.front();
     sp.light.front() = x0;
@@ -392,16 +361,16 @@ glm::vec3 BdptIntegrator::next_event(Subpaths& sp, int j, float time, PixelSampl
     sp.light.front() = saved;
     MisPath& m = sp.mis;
     m.delta[1] = 0;
-    m.fwd[1] = ls.at_infinity ? d.dir * std::abs(glm::dot(z.hit.normal, ls.wi)) : area_density(d.dir, ls.point, z);
-    if (j >= 2) m.fwd[2] = area_density(e.pdf_wo, z.point(), sp.cam[static_cast<std::size_t>(j - 1)]);
-    return c * weight(m, 1);
+    m.from_light[1] = ls.at_infinity ? d.dir * std::abs(glm::dot(z.hit.normal, ls.wi)) : area_density(d.dir, ls.point, z);
+    if (j >= 2) m.from_light[2] = area_density(e.pdf_wo, z.point(), sp.cam[static_cast<std::size_t>(j - 1)]);
+    return c * weight(m, 1, sp.merge_eta);
 }
 
 // s >= 2, t >= 2: light[s-1] joined to cam[t-1] by a shadow ray.
 glm::vec3 BdptIntegrator::connect(Subpaths& sp, int s, int t, float time, std::uint64_t& rays) const {
     const PathVertex& y = sp.light[static_cast<std::size_t>(s - 1)];
     const PathVertex& z = sp.cam[static_cast<std::size_t>(t - 1)];
-    const Material& my = y.mat(scene_);
+    const MaterialParameters& my = y.mat(scene_);
     if (is_delta(my)) return glm::vec3(0.0f);
     glm::vec3 w = z.point() - y.point();
     const float d2 = glm::dot(w, w);
@@ -421,11 +390,11 @@ glm::vec3 BdptIntegrator::connect(Subpaths& sp, int s, int t, float time, std::u
     MisPath& m = sp.mis;
     const auto at = [](int i) { return static_cast<std::size_t>(i); };
     m.delta[at(s - 1)] = m.delta[at(s)] = 0;
-    m.rev[at(s - 1)] = area_density(ez.pdf_wi, z.point(), y);
-    m.rev[at(s - 2)] = area_density(ey.pdf_wo, y.point(), sp.light[at(s - 2)]);
-    m.fwd[at(s)] = area_density(ey.pdf_wi, y.point(), z);
-    if (t >= 3) m.fwd[at(s + 1)] = area_density(ez.pdf_wo, z.point(), sp.cam[at(t - 2)]);
-    return c * weight(m, s);
+    m.from_camera[at(s - 1)] = area_density(ez.pdf_wi, z.point(), y);
+    m.from_camera[at(s - 2)] = area_density(ey.pdf_wo, y.point(), sp.light[at(s - 2)]);
+    m.from_light[at(s)] = area_density(ey.pdf_wi, y.point(), z);
+    if (t >= 3) m.from_light[at(s + 1)] = area_density(ez.pdf_wo, z.point(), sp.cam[at(t - 2)]);
+    return c * weight(m, s, sp.merge_eta);
 }
 
 // t = 1: light[s-1] joined to a point on the lens, splatted to the pixels it lands on.
@@ -481,9 +450,9 @@ void BdptIntegrator::light_to_camera(Subpaths& sp, int s, float time, PixelSampl
     MisPath& m = sp.mis;
     const auto at = [](int i) { return static_cast<std::size_t>(i); };
     m.delta[at(s - 1)] = 0;
-    m.rev[at(s - 1)] = area_density(camera_.direction_pdf(cos_theta), lens, y);
-    if (s >= 2) m.rev[at(s - 2)] = area_density(ey.pdf_wo, y.point(), sp.light[at(s - 2)]);
-    const glm::vec3 value = c * weight(m, s);
+    m.from_camera[at(s - 1)] = area_density(camera_.direction_pdf(cos_theta), lens, y);
+    if (s >= 2) m.from_camera[at(s - 2)] = area_density(ey.pdf_wo, y.point(), sp.light[at(s - 2)]);
+    const glm::vec3 value = c * weight(m, s, sp.merge_eta);
     // The pixels whose filter reaches the film point, each by its normalised filter weight.
     const PixelFilter& filter = camera_.filter();
     const int x0 = std::max(0, static_cast<int>(std::ceil(fx - filter_radius_ - 0.5f)));

@@ -9,7 +9,7 @@
 //          pixel it projects to: a splat, returned to the renderer, which adds the splats of a
 //          pass in a fixed order (render/renderer.cpp) so the image is the same at any thread
 //          count and any farm split.
-// Weighted by the power heuristic over all strategies (bdpt_mis.hpp); delta lobes and delta
+// Weighted by the power heuristic over all strategies (bidir_mis.hpp); delta lobes and delta
 // lights as pbrt does. Both subpaths see the scene at the camera sample's time. Light subpath
 // throughputs carry power: refraction's 1/eta^2 is undone there (importance_refraction_scale)
 // and shading normals get pbrt's adjoint correction |wo.ns||wi.ng| / (|wo.ng||wi.ns|).
@@ -25,7 +25,7 @@
 
 #include "raytracer/accel/accel.hpp"
 #include "raytracer/render/camera.hpp"
-#include "raytracer/render/integrators/bdpt_mis.hpp"
+#include "raytracer/render/integrators/bidir_mis.hpp"
 #include "raytracer/render/integrators/path_vertex.hpp"
 #include "raytracer/render/lights.hpp"
 #include "raytracer/render/planted_defect.hpp"
@@ -53,17 +53,16 @@ public:
     glm::vec3 sample(float x, float y, const glm::vec2& lens, float time, PixelSampler& sampler, std::uint64_t& rays,
                      std::vector<Splat>& splats) const;
 
-    // The two halves of sample(), drawing the same numbers, for vcm.cpp, which traces every light
-    // subpath of an iteration before any camera subpath: the light subpath (into `light`) with its
-    // t = 1 splats, and the camera subpath (into `cam`) joined to a given light subpath by every
-    // strategy with t >= 2, returning what sample() returns.
-    void light_subpath(float time, PixelSampler& sampler, std::uint64_t& rays, std::vector<PathVertex>& light,
-                       std::vector<Splat>& splats) const;
+    // The two halves of sample() for vcm.cpp, which traces every light subpath of an iteration
+    // before any camera subpath: the light subpath (into `light`) with its t = 1 splats, and the
+    // camera subpath (into `cam`) joined to a given light subpath by every strategy with t >= 2,
+    // returning what sample() returns. `merge_eta` (bidir_mis.hpp: eta = pi r^2 N) > 0 puts the
+    // merges into every strategy's weight, the light subpath's splats' too; 0 gives bdpt's.
+    void light_subpath(float time, PixelSampler& sampler, std::uint64_t& rays, float merge_eta,
+                       std::vector<PathVertex>& light, std::vector<Splat>& splats) const;
     glm::vec3 camera_subpath(float x, float y, const glm::vec2& lens, float time, PixelSampler& sampler,
-                             std::uint64_t& rays, const std::vector<PathVertex>& light, std::vector<PathVertex>& cam) const;
-    // VCM's merging density eta = pi r^2 N (vcm_mis.hpp): > 0 puts the merges into every strategy's
-    // weight; 0 (the default) gives bdpt's. Set between passes, never during one.
-    void set_merge_density(float eta) { merge_eta_ = eta; }
+                             std::uint64_t& rays, const std::vector<PathVertex>& light, float merge_eta,
+                             std::vector<PathVertex>& cam) const;
 
 private:
     struct Subpaths;
@@ -80,7 +79,7 @@ private:
     // Fills sp.mis with the densities of the path made of light[0..s) and cam[0..t) (t >= 1).
     void gather(Subpaths& sp, int s, int t) const;
     bool blocked(const collision::Ray& ray, float time) const;
-    float weight(const MisPath& path, int s) const;
+    float weight(const MisPath& path, int s, float merge_eta) const;
 
     const Scene& scene_;
     const Accel& accel_;
@@ -90,7 +89,6 @@ private:
     PlantedDefect defect_;
     RoulettePolicy roulette_;
     bool light_tracing_only_;  // Sampling::LightTracing: t = 1 alone, at full weight
-    float merge_eta_ = 0.0f;
     bool moving_ = false;
     int width_, height_;
     float filter_radius_;

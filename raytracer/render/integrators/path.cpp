@@ -79,9 +79,9 @@ glm::vec3 PathIntegrator::radiance(collision::Ray ray, PixelSampler& sampler, st
             hit.normal = -hit.normal;
             hit.shading_normal = -hit.shading_normal;
         }
-        const Material& base = scene_.materials[scene_.objects[hit.object].material];
-        std::optional<Material> textured;  // only for materials that read a texture (render/texture.hpp)
-        const Material& mat = !reads_texture(base) ? base : textured.emplace(textured_material(scene_, base, hit));
+        const MaterialParameters& base = scene_.materials[scene_.objects[hit.object].material];
+        std::optional<MaterialParameters> textured;  // only for materials that read a texture (render/texture.hpp)
+        const MaterialParameters& mat = !reads_texture(base) ? base : textured.emplace(textured_material(scene_, base, hit));
         const glm::vec3 wo = -ray.dir;
 
         const glm::vec3 le = emitted_radiance(mat, hit.normal, wo);

@@ -1,9 +1,10 @@
 #pragma once
 // One vertex of a camera or light subpath (bidirectional methods: bdpt.cpp), with the two
 // densities the MIS weights of every connection strategy are built from (Veach 1997, §10.2;
-// pbrt-v4's Vertex): pdf_fwd, the density with which the subpath that holds the vertex sampled
-// it from its predecessor, and pdf_rev, the density with which the other direction would have
-// sampled it from its successor. Both are per unit area at the vertex (per unit solid angle for a
+// pbrt-v4's Vertex): pdf_own, the density with which the subpath that holds the vertex sampled
+// it from its predecessor, and pdf_other, the density with which the other subpath's direction
+// would have sampled it from its successor. Which of them is light-to-camera depends on the
+// subpath: bidir_mis.hpp's gather_mis_path alone turns them into the path's order. Both are per unit area at the vertex (per unit solid angle for a
 // light at infinity, whose "position" is its direction), and 0 where a delta lobe decided.
 #include <cstdint>
 
@@ -24,7 +25,7 @@ struct PathVertex {
     SurfaceHit hit;
     glm::vec3 wo{0.0f};    // Surface: unit, toward the previous vertex of its own subpath
     glm::vec3 beta{1.0f};  // the subpath's throughput up to and including this vertex's arrival
-    float pdf_fwd = 0.0f, pdf_rev = 0.0f;
+    float pdf_own = 0.0f, pdf_other = 0.0f;
     // Light vertex of a light subpath: next event estimation's density of it from the subpath's
     // second vertex (per unit area; selection alone for a point; per solid angle at infinity).
     float pdf_nee = 0.0f;
@@ -35,9 +36,9 @@ struct PathVertex {
     // Surface: the material, textured at the hit when it reads a texture (`textured` then holds it).
     std::uint32_t material = 0;
     bool has_textured = false;
-    Material textured;
+    MaterialParameters textured;
 
-    const Material& mat(const Scene& scene) const { return has_textured ? textured : scene.materials[material]; }
+    const MaterialParameters& mat(const Scene& scene) const { return has_textured ? textured : scene.materials[material]; }
     // A point with a surface around it (its area density converts by a cosine).
     bool on_surface() const { return kind == Kind::Surface || (kind == Kind::Light && !delta_position && !at_infinity); }
     const glm::vec3& point() const { return hit.point; }

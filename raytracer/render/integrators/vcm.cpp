@@ -2,22 +2,36 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <span>
 #include <vector>
 
 #include <glm/geometric.hpp>
 
 #include "raytracer/render/bsdf.hpp"
-#include "raytracer/render/integrators/vcm_mis.hpp"
+#include "raytracer/render/integrators/bidir_mis.hpp"
 #include "raytracer/render/lights.hpp"
 #include "raytracer/render/sampling.hpp"
 
 namespace sweeptrace {
 
 VcmIntegrator::VcmIntegrator(const Scene& scene, const Accel& accel, const CameraModel& camera, const LightSet& lights,
-                             BdptIntegrator& bdpt, int max_depth)
+                             const BdptIntegrator& bdpt, int max_depth)
     : scene_(scene), lights_(lights), bdpt_(bdpt), max_depth_(max_depth), r1_(first_radius(scene, accel, camera)) {
     for (const Object& o : scene.objects) merging_ = merging_ && !(scene.camera.shutter && o.motion.moving());
     paths_.resize(static_cast<std::size_t>(scene.film.width) * static_cast<std::size_t>(scene.film.height));
+    // The radii the schedule may take. Below the rounding of the scene's largest coordinate no
+    // two points can be told apart (and a grid cell index, |p| / 2r, stays below 2^22); above the
+    // scene's size every photon is in range already. Both also keep eta = pi r^2 N a normal,
+    // finite float for this N.
+    const collision::Bounds3 world = scene_world_bounds(scene);
+    float extent = world.empty() ? 1.0f : std::max({glm::length(world.lo), glm::length(world.hi), glm::length(world.hi - world.lo)});
+    if (!std::isfinite(extent) || !(extent > 0.0f)) extent = 1.0f;
+    const double n = static_cast<double>(paths_.size());
+    const double eta_lo = std::sqrt(double(std::numeric_limits<float>::min()) / (kPi * n));
+    const double eta_hi = std::sqrt(double(std::numeric_limits<float>::max()) / (kPi * n));
+    r_min_ = static_cast<float>(std::max(double(extent) * std::numeric_limits<float>::epsilon(), 2.0 * eta_lo));
+    r_max_ = static_cast<float>(std::max(double(r_min_), std::min(double(extent), 0.5 * eta_hi)));
 }
 
 float VcmIntegrator::median_pixel_footprint(const Scene& scene, const Accel& accel, const CameraModel& camera) {
@@ -56,105 +70,89 @@ float VcmIntegrator::first_radius(const Scene& scene, const Accel& accel, const 
 }
 
 float VcmIntegrator::radius(int iteration) const {
-    return r1_ * std::pow(static_cast<float>(iteration) + 1.0f, 0.5f * (kAlpha - 1.0f));
+    const double r = double(r1_) * std::pow(double(iteration) + 1.0, 0.5 * (double(kAlpha) - 1.0));
+    return static_cast<float>(std::clamp(r, double(r_min_), double(r_max_)));
+}
+
+float VcmIntegrator::merge_density(int iteration) const {
+    const double r = radius(iteration);
+    return static_cast<float>(kPi * r * r * static_cast<double>(paths_.size()));
 }
 
 void VcmIntegrator::begin_iteration(int iteration) {
     radius_ = radius(iteration);
-    eta_ = merging_ ? kPi * radius_ * radius_ * static_cast<float>(paths_.size()) : 0.0f;
-    bdpt_.set_merge_density(eta_);
+    eta_ = merging_ ? merge_density(iteration) : 0.0f;
 }
 
 void VcmIntegrator::trace_light(std::size_t pixel, float time, PixelSampler& sampler, std::uint64_t& rays,
                                 std::vector<Splat>& splats) {
-    bdpt_.light_subpath(time, sampler, rays, paths_[pixel], splats);
+    bdpt_.light_subpath(time, sampler, rays, eta_, paths_[pixel], splats);
 }
 
 void VcmIntegrator::build_grid() {
     photons_.clear();
-    grid_ = collision::HashedGrid<>(2.0f * radius_);
-    if (!(eta_ > 0.0f)) return;
-    for (std::size_t p = 0; p < paths_.size(); ++p) {
-        const std::vector<PathVertex>& path = paths_[p];
-        for (std::size_t b = 1; b < path.size(); ++b) {
-            const PathVertex& v = path[b];
-            if (v.kind != PathVertex::Kind::Surface || is_delta(v.mat(scene_))) continue;
-            const auto id = static_cast<std::uint32_t>(photons_.size());
-            photons_.push_back({v.point(), static_cast<std::uint32_t>(p), static_cast<std::uint32_t>(b)});
-            grid_.insert(id, v.point(), v.point());
+    if (eta_ > 0.0f) {
+        for (std::size_t p = 0; p < paths_.size(); ++p) {
+            const std::vector<PathVertex>& path = paths_[p];
+            for (std::size_t b = 1; b < path.size(); ++b) {
+                const PathVertex& v = path[b];
+                if (v.kind != PathVertex::Kind::Surface || is_delta(v.mat(scene_))) continue;
+                photons_.push_back({v.point(), static_cast<std::uint32_t>(p), static_cast<std::uint32_t>(b)});
+            }
         }
     }
+    grid_.build(photons_, 2.0f * radius_);
 }
 
 glm::vec3 VcmIntegrator::sample(std::size_t pixel, float x, float y, const glm::vec2& lens, float time,
                                 PixelSampler& sampler, std::uint64_t& rays) const {
     thread_local std::vector<PathVertex> cam;
-    glm::vec3 l = bdpt_.camera_subpath(x, y, lens, time, sampler, rays, paths_[pixel], cam);
+    glm::vec3 l = bdpt_.camera_subpath(x, y, lens, time, sampler, rays, paths_[pixel], eta_, cam);
     if (!(eta_ > 0.0f)) return l;
     for (int j = 1; j < static_cast<int>(cam.size()) && j < max_depth_; ++j) {
-        const Material& mat = cam[static_cast<std::size_t>(j)].mat(scene_);
+        const MaterialParameters& mat = cam[static_cast<std::size_t>(j)].mat(scene_);
         if (scatters(mat) && !is_delta(mat)) l += merge(cam, j);
     }
     return l;
 }
 
-// Merging at cam[j] = x_s with every photon (light[s] of some pixel's subpath) within the radius:
-// the photon's power times the camera's f |wi.ns| / |wi.ng| (the photons carry power per unit
-// geometric area), by the kernel 1 / (pi r^2) and 1 / N for the N light subpaths, so 1 / eta.
+// Merging at cam[j] = x_s with every photon (light[s] of some pixel's subpath) within the radius
+// whose surface faces the same way: the photon's power times the camera's f |wi.ns| over the
+// photon's own |wi.ng| (its power is per unit of its surface's geometric area), by the kernel
+// 1 / (pi r^2) and 1 / N for the N light subpaths, so 1 / eta.
 glm::vec3 VcmIntegrator::merge(const std::vector<PathVertex>& cam, int j) const {
     const PathVertex& z = cam[static_cast<std::size_t>(j)];
-    const Material& mat = z.mat(scene_);
-    const glm::vec3 r(radius_);
-    const glm::ivec3 lo = grid_.cell_of(z.point() - r), hi = grid_.cell_of(z.point() + r);
+    const MaterialParameters& mat = z.mat(scene_);
     const float r2 = radius_ * radius_;
     thread_local MisPath m;
     glm::vec3 sum(0.0f);
-    for (int cz = lo.z; cz <= hi.z; ++cz)
-        for (int cy = lo.y; cy <= hi.y; ++cy)
-            for (int cx = lo.x; cx <= hi.x; ++cx)
-                for (const std::uint32_t id : grid_.cell(glm::ivec3(cx, cy, cz))) {
-                    const Photon& ph = photons_[id];
-                    const glm::vec3 d = ph.point - z.point();
-                    if (glm::dot(d, d) > r2) continue;
-                    const int s = static_cast<int>(ph.index), k = s + j;
-                    if (k > max_depth_) continue;
-                    const std::vector<PathVertex>& light = paths_[ph.pixel];
-                    const PathVertex& y = light[ph.index];
-                    const BsdfEvalBoth e = eval_bsdf_both(mat, z.hit, z.wo, y.wo);
-                    const float cos_g = std::abs(glm::dot(y.wo, z.hit.normal));
-                    if (!(e.pdf_wi > 0.0f) || !(cos_g > 0.0f)) continue;
-                    const glm::vec3 c = z.beta * e.f_cos * y.beta / cos_g;
-                    if (!(max_component(c) > 0.0f)) continue;
-                    // The path light[0..s] + cam[j-1..0], x_s the camera's vertex.
-                    m.k = k;
-                    const auto n = static_cast<std::size_t>(k + 1);
-                    m.fwd.assign(n, 0.0f);
-                    m.rev.assign(n, 0.0f);
-                    m.delta.assign(n, 0);
-                    for (int i = 0; i < s; ++i) {
-                        const PathVertex& v = light[static_cast<std::size_t>(i)];
-                        m.fwd[static_cast<std::size_t>(i)] = v.pdf_fwd;
-                        m.rev[static_cast<std::size_t>(i)] = v.pdf_rev;
-                        m.delta[static_cast<std::size_t>(i)] = v.delta;
-                    }
-                    for (int i = s; i <= k; ++i) {
-                        const PathVertex& v = cam[static_cast<std::size_t>(k - i)];
-                        m.fwd[static_cast<std::size_t>(i)] = v.pdf_rev;
-                        m.rev[static_cast<std::size_t>(i)] = v.pdf_fwd;
-                        m.delta[static_cast<std::size_t>(i)] = v.delta;
-                    }
-                    m.fwd[static_cast<std::size_t>(s)] = y.pdf_fwd;
-                    m.delta[static_cast<std::size_t>(s)] = 0;
-                    m.rev[static_cast<std::size_t>(s - 1)] =
-                        area_density(e.pdf_wi, z.point(), light[static_cast<std::size_t>(s - 1)]);
-                    if (j >= 2) m.fwd[static_cast<std::size_t>(s + 1)] = area_density(e.pdf_wo, z.point(), cam[static_cast<std::size_t>(j - 1)]);
-                    const PathVertex& l0 = light.front();
-                    m.nee0 = l0.pdf_nee;
-                    m.light_hittable = !l0.delta_position && !l0.delta_direction &&
-                                       (!l0.at_infinity || lights_.light_is_found_at_infinity(l0.light));
-                    m.light_to_camera = !l0.at_infinity;
-                    sum += c * vcm_mis_weight(m, s, true, eta_, false);
-                }
+    grid_.for_each_near(z.point(), radius_, [&](const Photon& ph) {
+        const glm::vec3 d = ph.point - z.point();
+        if (glm::dot(d, d) > r2) return;
+        const int s = static_cast<int>(ph.index), k = s + j;
+        if (k > max_depth_) return;
+        const std::vector<PathVertex>& light = paths_[ph.pixel];
+        const PathVertex& y = light[ph.index];
+        // Only a photon on a surface facing this one's way: light arriving at a wall is
+        // no sample of what arrives at the floor beside it (a leak around the corner).
+        if (!(glm::dot(y.hit.normal, z.hit.normal) > 0.0f)) return;
+        const BsdfEvalBoth e = eval_bsdf_both(mat, z.hit, z.wo, y.wo);
+        // The photon's power is per unit of its own surface's area: its own geometric
+        // cosine turns it back into radiance, the camera BSDF's shading cosine applies it.
+        const float cos_g = std::abs(glm::dot(y.wo, y.hit.normal));
+        if (!(e.pdf_wi > 0.0f) || !(cos_g > 0.0f)) return;
+        const glm::vec3 c = z.beta * e.f_cos * y.beta / cos_g;
+        if (!(max_component(c) > 0.0f)) return;
+        // The path light[0..s) + cam[j..0], x_s the camera's vertex.
+        const auto at = [](int i) { return static_cast<std::size_t>(i); };
+        gather_mis_path(m, k, std::span<const PathVertex>(light).first(at(s)),
+                        std::span<const PathVertex>(cam).first(at(j + 1)), lights_);
+        m.from_light[at(s)] = y.pdf_own;
+        m.delta[at(s)] = 0;
+        m.from_camera[at(s - 1)] = area_density(e.pdf_wi, z.point(), light[at(s - 1)]);
+        if (j >= 2) m.from_light[at(s + 1)] = area_density(e.pdf_wo, z.point(), cam[at(j - 1)]);
+        sum += c * mis_weight(m, s, true, eta_);
+    });
     return sum / eta_;
 }
 

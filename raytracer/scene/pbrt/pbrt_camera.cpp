@@ -181,12 +181,17 @@ void write_camera_and_film(WorldContext& w, std::string& film_filename) {
         if (s.type == "bdpt") film["integrator"] = "bdpt";
         if (s.type == "sppm") {
             film["integrator"] = "vcm";
-            // pbrt's initial search radius (default 1), our first iteration's; the photon count
-            // per iteration and the iteration count are the render's: one light subpath per pixel
-            // per sample (spp), which changes the noise, not the converged image.
-            const double radius = p.get_float("radius", 1.0, d);
-            if (radius > 0.0 && std::isfinite(radius)) film["vcm_radius"] = radius;
-            else d.warn(s.where, "sppm radius", what + ": \"radius\" " + std::to_string(radius) + " is not > 0: our default used");
+            // A stated initial search radius is our first iteration's. Without one, pbrt starts
+            // at 1 scene unit and shrinks it per pixel by the photons it collects, within a few
+            // iterations; our schedule, (i + 1)^((alpha - 1) / 2), would keep a 1 m blur for the
+            // whole render, so our pixel-footprint default (vcm.hpp) takes pbrt's place. The photon
+            // count per iteration and the iteration count are the render's: one light subpath per
+            // pixel per sample (spp), which changes the noise, not the converged image.
+            if (p.has("radius")) {
+                const double radius = p.get_float("radius", 1.0, d);
+                if (radius > 0.0 && std::isfinite(radius)) film["vcm_radius"] = radius;
+                else d.warn(s.where, "sppm radius", what + ": \"radius\" " + std::to_string(radius) + " is not > 0: our default used");
+            }
             p.find("photonsperiteration");
             p.find("iterations");
             p.find("seed");

@@ -1,0 +1,53 @@
+#include "raytracer/render/integrators/photon_grid.hpp"
+
+#include <algorithm>
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+#include "collision/hashed_grid.hpp"
+
+namespace sweeptrace {
+
+std::uint32_t PhotonGrid::slot_of(const glm::vec3& p) const {
+    const glm::ivec3 c = collision::cell_of(p, cell_size_);
+    return static_cast<std::uint32_t>(collision::CellHash{}(c) % (start_.size() - 1));
+}
+
+void PhotonGrid::build(std::vector<Photon>& photons, float cell_size) {
+    cell_size_ = double(cell_size);
+    const std::size_t n = photons.size();
+    start_.assign(n + 1, 0);
+    slot_.resize(n);
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 4096), [&](const tbb::blocked_range<std::size_t>& r) {
+        for (std::size_t i = r.begin(); i < r.end(); ++i) slot_[i] = slot_of(photons[i].point);
+    });
+    // Counting sort: counts, their running sum (start_[s] = where slot s ends, then begins), and
+    // a stable scatter.
+    for (std::size_t i = 0; i < n; ++i) ++start_[slot_[i] + 1];
+    for (std::size_t s = 1; s <= n; ++s) start_[s] += start_[s - 1];
+    photons_.resize(n);
+    std::vector<std::uint32_t>& next = slot_;  // reused: slot_[i] becomes photon i's place
+    for (std::size_t i = 0; i < n; ++i) next[i] = start_[slot_[i]]++;
+    for (std::size_t i = 0; i < n; ++i) photons_[next[i]] = photons[i];
+    // start_[s] now holds where slot s ends: shift back to where it begins.
+    for (std::size_t s = n; s > 0; --s) start_[s] = start_[s - 1];
+    if (n > 0) start_[0] = 0;
+    photons.clear();
+}
+
+int PhotonGrid::near_slots(const glm::vec3& p, float r, std::uint32_t* slots) const {
+    const glm::vec3 d(r);
+    const glm::ivec3 lo = collision::cell_of(p - d, cell_size_), hi = collision::cell_of(p + d, cell_size_);
+    int n = 0;
+    // Side >= 2 r: two cells per axis, three when p - r or p + r falls on a cell's face.
+    for (int z = lo.z; z <= hi.z && z - lo.z < 3; ++z)
+        for (int y = lo.y; y <= hi.y && y - lo.y < 3; ++y)
+            for (int x = lo.x; x <= hi.x && x - lo.x < 3; ++x) {
+                const auto s = static_cast<std::uint32_t>(collision::CellHash{}(glm::ivec3(x, y, z)) % (start_.size() - 1));
+                if (std::find(slots, slots + n, s) == slots + n) slots[n++] = s;
+            }
+    return n;
+}
+
+}  // namespace sweeptrace

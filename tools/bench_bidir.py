@@ -1,0 +1,88 @@
+#!/usr/bin/python3
+"""The bidirectional methods' cost, one build against another (issue 39's speed targets), each
+measurement run by both binaries alternately in one sitting, --repeat times, the least taken:
+  - vcm on scenes/caustic.json at 320x180: iterations (spp) per CPU second, one thread;
+  - vcm's peak memory (maximum resident set of the process) at 1920x1080, depth 8, one iteration;
+  - the path tracer's samples per CPU second on Bitterli's kitchen and classroom (textured), from
+    ../shared/bitterli beside the checkout;
+  - bdpt on scenes/cornell-box.json: samples per CPU second, one thread.
+CPU time is user + system of the child, so other work on a shared machine counts little; memory
+is GNU time's %M. Prints a markdown table (what, before, after, after / before).
+Usage: /usr/bin/python3 tools/bench_bidir.py BEFORE_BINARY AFTER_BINARY [--repeat 2] [--skip-memory]
+"""
+import argparse
+import os
+import re
+import subprocess
+import sys
+import tempfile
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+SHARED = os.path.join(os.path.dirname(ROOT), "shared")
+
+
+def run(cmd):
+    """CPU seconds and peak resident kilobytes of one run of cmd."""
+    r = subprocess.run(["/usr/bin/time", "-f", "TIME %U %S %M"] + cmd, check=True, stdout=subprocess.DEVNULL,
+                       stderr=subprocess.PIPE, text=True)
+    m = re.findall(r"TIME ([0-9.]+) ([0-9.]+) ([0-9]+)", r.stderr)[-1]
+    return float(m[0]) + float(m[1]), int(m[2])
+
+
+def best_of(binaries, args, repeat, key):
+    best = {}
+    for _ in range(repeat):
+        for name, exe in binaries:
+            v = key(run([exe] + args))
+            best[name] = min(best.get(name, v), v)
+    return best
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("before")
+    ap.add_argument("after")
+    ap.add_argument("--repeat", type=int, default=2)
+    ap.add_argument("--skip-memory", action="store_true")
+    a = ap.parse_args()
+    binaries = (("before", a.before), ("after", a.after))
+    out = os.path.join(tempfile.mkdtemp(), "bench.pfm")
+    common = ["--quiet", "-o", out]
+    print("| measurement | before | after | after / before |\n|---|---|---|---|")
+
+    def row(what, before, after):
+        print("| %s | %.4g | %.4g | %.3f |" % (what, before, after, after / before))
+        sys.stdout.flush()
+
+    caustic = os.path.join(ROOT, "scenes", "caustic.json")
+    spp = 8
+    t = best_of(binaries, ["render", caustic, "--integrator", "vcm", "--threads", "1", "--spp", str(spp), "--width",
+                           "320", "--height", "180"] + common, a.repeat, lambda r: r[0])
+    row("vcm caustic.json 320x180: iterations per CPU s", spp / t["before"], spp / t["after"])
+
+    if not a.skip_memory:
+        m = best_of(binaries, ["render", caustic, "--integrator", "vcm", "--spp", "1", "--max-depth", "8", "--width",
+                               "1920", "--height", "1080"] + common, 1, lambda r: r[1])
+        row("vcm caustic.json 1920x1080 depth 8: peak MB", m["before"] / 1024.0, m["after"] / 1024.0)
+
+    for scene in ("kitchen", "classroom"):
+        path = os.path.join(SHARED, "bitterli", scene, "scene-v4.pbrt")
+        if not os.path.exists(path):
+            print("| path %s: not found (%s) | | | |" % (scene, path))
+            continue
+        spp = 4
+        t = best_of(binaries, ["render", path, "--integrator", "path", "--threads", "1", "--spp", str(spp), "--width",
+                               "160", "--height", "90"] + common, a.repeat, lambda r: r[0])
+        row("path %s 160x90: samples per CPU s (x 1e3)" % scene, 160 * 90 * spp / t["before"] / 1e3,
+            160 * 90 * spp / t["after"] / 1e3)
+
+    cornell = os.path.join(ROOT, "scenes", "cornell-box.json")
+    spp = 8
+    t = best_of(binaries, ["render", cornell, "--integrator", "bdpt", "--threads", "1", "--spp", str(spp), "--width",
+                           "128", "--height", "128"] + common, a.repeat, lambda r: r[0])
+    row("bdpt cornell-box.json 128x128: samples per CPU s (x 1e3)", 128 * 128 * spp / t["before"] / 1e3,
+        128 * 128 * spp / t["after"] / 1e3)
+
+
+if __name__ == "__main__":
+    main()
