@@ -17,6 +17,7 @@
 // CameraModel::direction_pdf; the pixel filter's weights for splats are f(dx) f(dy) / (int f)^2,
 // what a camera sample of that pixel estimates.
 // Not done here: path guiding, film.clamp_indirect (the path tracer's firefly guard).
+#include <atomic>
 #include <cstdint>
 #include <vector>
 
@@ -64,6 +65,11 @@ public:
     // VCM's merging density eta = pi r^2 N (vcm_mis.hpp): > 0 puts the merges into every strategy's
     // weight; 0 (the default) gives bdpt's. Set between passes, never during one.
     void set_merge_density(float eta) { merge_eta_ = eta; }
+    // The render's cancel flag: once set, a sample's strategy loops stop where they are (at depth
+    // 1024 one sample joins ~10^6 vertex pairs, over a second), and the renderer drops the pass
+    // the cut samples belong to, so no cut sample reaches an image.
+    void set_cancel(const std::atomic<bool>* flag) { cancel_ = flag; }
+    bool cancelled() const { return cancel_ != nullptr && cancel_->load(std::memory_order_relaxed); }
 
 private:
     struct Subpaths;
@@ -90,6 +96,7 @@ private:
     PlantedDefect defect_;
     RoulettePolicy roulette_;
     bool light_tracing_only_;  // Sampling::LightTracing: t = 1 alone, at full weight
+    const std::atomic<bool>* cancel_ = nullptr;
     float merge_eta_ = 0.0f;
     bool moving_ = false;
     int width_, height_;

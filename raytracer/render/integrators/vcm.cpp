@@ -95,7 +95,7 @@ glm::vec3 VcmIntegrator::sample(std::size_t pixel, float x, float y, const glm::
     thread_local std::vector<PathVertex> cam;
     glm::vec3 l = bdpt_.camera_subpath(x, y, lens, time, sampler, rays, paths_[pixel], cam);
     if (!(eta_ > 0.0f)) return l;
-    for (int j = 1; j < static_cast<int>(cam.size()) && j < max_depth_; ++j) {
+    for (int j = 1; j < static_cast<int>(cam.size()) && j < max_depth_ && !bdpt_.cancelled(); ++j) {  // cut: pass dropped
         const Material& mat = cam[static_cast<std::size_t>(j)].mat(scene_);
         if (scatters(mat) && !is_delta(mat)) l += merge(cam, j);
     }
