@@ -91,12 +91,17 @@ void check_folder_outputs(const FolderArgs& args, const std::set<std::string>& g
         const fs::path dir(args.html);
         if (fs::exists(dir, ec) && !fs::is_directory(dir, ec))
             throw InputError("--html '" + args.html + "' " + file_kind_problem(dir) + ": the HTML report is a folder");
-        outputs.push_back({"--html", dir / "index.html"});
-        if (fs::is_directory(dir, ec))
+        if (!fs::is_directory(dir, ec)) {
+            const fs::path parent = fs::absolute(dir).parent_path();
+            if (!fs::is_directory(parent, ec))
+                throw InputError("--html '" + args.html + "': directory '" + parent.string() + "' does not exist");
+        } else {
+            outputs.push_back({"--html", dir / "index.html"});
             for (const std::string& name : golden) {
                 outputs.push_back({"--html page", dir / page_file(name)});
                 for (const char* panel : {"golden", "actual", "heatmap"}) outputs.push_back({"--html panel", dir / panel_file(name, panel)});
             }
+        }
     }
     std::vector<NamedFile> inputs;
     for (const auto& [role, folder] : {std::pair{"--golden image", args.golden}, std::pair{"--actual image", args.actual}})
