@@ -7,7 +7,6 @@
 #include <filesystem>
 #include <memory>
 #include <string>
-#include <system_error>
 
 #include "raytracer/cli/commands.hpp"
 #include "raytracer/cli/output_guard.hpp"
@@ -34,16 +33,12 @@ int run_convert(const ConvertArgs& a) {
     const std::filesystem::path plain = is_gzip_name(in) ? in.stem() : in.filename();
     const std::filesystem::path out = a.output.empty() ? std::filesystem::path(plain.stem().string() + ".json") : std::filesystem::path(a.output);
     if (out.extension() != ".json") throw InputError("output '" + out.string() + "': write the scene to a .json file");
-    const std::filesystem::path dir = out.parent_path();
-    std::error_code ec;
-    if (!dir.empty() && !std::filesystem::is_directory(dir, ec))
-        throw InputError("output '" + out.string() + "': directory '" + dir.string() + "' does not exist");
-    refuse_output_over_input(out, {{"scene", in}});
+    check_outputs({{"output", out}}, {{"scene", in}});
     const PbrtConversion c = convert_pbrt(in, out, a.strict, true);
     // Every file the conversion read (Includes, spectra, meshes, images), before anything is written.
-    std::vector<NamedInput> inputs;
+    std::vector<NamedFile> inputs;
     for (const std::filesystem::path& f : c.input_files) inputs.push_back({"scene's input", f});
-    refuse_output_over_input(out, inputs);
+    check_outputs({{"output", out}}, inputs);
     for (const std::string& w : c.warnings) std::fprintf(stderr, "sweeptrace: warning: %s\n", escape_control(w).c_str());
     write_text_file(out, c.json_text);
     if (!a.quiet)

@@ -26,16 +26,6 @@ struct DiffArgs {
     DiffSettings settings;
 };
 
-// An output that cannot be written is bad input, found before any work (nothing is created).
-void require_writable_parent(const std::string& path, const char* what) {
-    if (path.empty()) return;
-    const std::filesystem::path parent = std::filesystem::absolute(path).parent_path();
-    std::error_code ec;
-    if (!std::filesystem::is_directory(parent, ec))
-        throw InputError(std::string("cannot write ") + what + " '" + path + "': directory '" + parent.string() +
-                         "' does not exist");
-}
-
 int write_heatmap(const DiffArgs& args, const PairReport& r) {
     if (args.heatmap.empty()) return r.exit_code();
     try {
@@ -75,13 +65,10 @@ int run_diff(DiffArgs& args, const CLI::App& cmd) {
         return run_diff_folders(args.folder, args.settings);
     }
     if (args.a.empty() || args.b.empty()) throw InputError("diff needs two images A B (or --golden DIR --actual DIR)");
-    require_writable_parent(args.heatmap, "heatmap");
-    if (!args.heatmap.empty()) {
-        std::vector<NamedInput> inputs{{"image A", args.a}, {"image B", args.b}};
-        if (!args.variance_a.empty()) inputs.push_back({"--variance-a image", args.variance_a});
-        if (!args.variance_b.empty()) inputs.push_back({"--variance-b image", args.variance_b});
-        refuse_output_over_input(args.heatmap, inputs);
-    }
+    check_outputs({{"--heatmap", args.heatmap}}, {{"image A", args.a},
+                                                  {"image B", args.b},
+                                                  {"--variance-a image", args.variance_a},
+                                                  {"--variance-b image", args.variance_b}});
     const PairReport r = compare_pair({args.a, args.b, args.variance_a, args.variance_b}, args.settings);
     print_report(r, stdout);
     return write_heatmap(args, r);

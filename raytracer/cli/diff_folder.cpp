@@ -6,7 +6,10 @@
 #include <cstdio>
 #include <filesystem>
 #include <set>
+#include <utility>
+#include <vector>
 
+#include "raytracer/cli/output_guard.hpp"
 #include "raytracer/input_error.hpp"
 
 namespace sweeptrace {
@@ -78,21 +81,33 @@ int aggregate(const std::vector<FolderEntry>& entries) {
     return code;
 }
 
-void check_outputs(const FolderArgs& args) {
-    for (const std::string* p : {&args.json, &args.junit}) {
-        if (p->empty()) continue;
-        const fs::path parent = fs::absolute(*p).parent_path();
-        std::error_code ec;
-        if (!fs::is_directory(parent, ec))
-            throw InputError("cannot write '" + *p + "': directory '" + parent.string() + "' does not exist");
-    }
+// Every file folder mode writes, for the one output rule (output_guard.hpp): the reports and,
+// when the HTML folder exists already, each page and panel it would get (a new folder holds no
+// input); and every file it reads, the images and their variances.
+void check_folder_outputs(const FolderArgs& args, const std::set<std::string>& golden) {
+    std::vector<NamedFile> outputs{{"--json", args.json}, {"--junit", args.junit}};
     if (!args.html.empty()) {
-        const fs::path parent = fs::absolute(args.html).parent_path();
         std::error_code ec;
-        if (!fs::is_directory(parent, ec))
-            throw InputError("cannot write HTML report '" + args.html + "': directory '" + parent.string() +
-                             "' does not exist");
+        const fs::path dir(args.html);
+        if (fs::exists(dir, ec) && !fs::is_directory(dir, ec))
+            throw InputError("--html '" + args.html + "' " + file_kind_problem(dir) + ": the HTML report is a folder");
+        if (!fs::is_directory(dir, ec)) {
+            const fs::path parent = fs::absolute(dir).parent_path();
+            if (!fs::is_directory(parent, ec))
+                throw InputError("--html '" + args.html + "': directory '" + parent.string() + "' does not exist");
+        } else {
+            outputs.push_back({"--html", dir / "index.html"});
+            for (const std::string& name : golden) {
+                outputs.push_back({"--html page", dir / page_file(name)});
+                for (const char* panel : {"golden", "actual", "heatmap"}) outputs.push_back({"--html panel", dir / panel_file(name, panel)});
+            }
+        }
     }
+    std::vector<NamedFile> inputs;
+    for (const auto& [role, folder] : {std::pair{"--golden image", args.golden}, std::pair{"--actual image", args.actual}})
+        for (const auto& e : fs::directory_iterator(folder))
+            if (e.is_regular_file()) inputs.push_back({role, e.path()});
+    check_outputs(outputs, inputs);
 }
 
 }  // namespace
@@ -113,10 +128,10 @@ void add_folder_options(CLI::App* cmd, FolderArgs& a) {
 
 int run_diff_folders(const FolderArgs& args, const DiffSettings& settings) {
     if (args.golden.empty() || args.actual.empty()) throw InputError("folder mode needs both --golden DIR and --actual DIR");
-    check_outputs(args);
     const std::set<std::string> golden = image_names(args.golden, args.variance_suffix, "--golden");
     const std::set<std::string> actual = image_names(args.actual, args.variance_suffix, "--actual");
     if (golden.empty()) throw InputError("--golden '" + args.golden + "' holds no .png, .pfm or .exr images");
+    check_folder_outputs(args, golden);
     std::vector<FolderEntry> entries;
     for (const std::string& name : golden) {
         entries.push_back(compare_entry(name, args, settings));

@@ -29,6 +29,11 @@ struct FolderEntry {
 
 void add_folder_options(CLI::App* cmd, FolderArgs& args);
 
+// File names in the HTML report's folder for one image (the name keeps its extension so a.png and
+// a.exr cannot collide): its panels ("golden", "actual", "heatmap") and its page.
+inline std::string panel_file(const std::string& name, const char* panel) { return name + "." + panel + ".png"; }
+inline std::string page_file(const std::string& name) { return name + ".html"; }
+
 // Exit code: 2 if any pair could not be compared, else 1 if any failed, else 4 if any warned, else 0.
 int run_diff_folders(const FolderArgs& args, const DiffSettings& settings);
 

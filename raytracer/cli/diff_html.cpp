@@ -18,10 +18,6 @@ namespace {
 namespace fs = std::filesystem;
 
 
-// File names in the report directory for one image (the name keeps its extension so a.png and
-// a.exr cannot collide).
-std::string panel_file(const std::string& name, const char* panel) { return name + "." + panel + ".png"; }
-std::string page_file(const std::string& name) { return name + ".html"; }
 
 
 std::string replace_all(std::string s, const std::string& key, const std::string& value) {

@@ -46,14 +46,30 @@ MemoryEstimate estimate_render_memory(const Scene& scene, bool adaptive) {
     return e;
 }
 
+void check_memory_estimate(std::uint64_t bytes, std::optional<std::uint64_t> limit, const std::string& what,
+                           const std::string& detail) {
+    const std::optional<std::uint64_t> room = limit ? limit : available_memory();
+    if (!room || bytes <= *room) return;
+    throw InputError(what + " needs an estimated " + byte_text(bytes) + " (" + detail + "), more than the " +
+                     byte_text(*room) +
+                     (limit ? " that --max-memory allows" : " of memory available (--max-memory sets the limit)"));
+}
+
 void check_render_memory(const Scene& scene, std::optional<std::uint64_t> limit, bool adaptive) {
     const MemoryEstimate e = estimate_render_memory(scene, adaptive);
-    const std::optional<std::uint64_t> room = limit ? limit : available_memory();
-    if (!room || e.total() <= *room) return;
-    throw InputError(scene.source.string() + ": the render needs an estimated " + byte_text(e.total()) + " (film " +
-                     std::to_string(scene.film.width) + "x" + std::to_string(scene.film.height) + ": " +
-                     byte_text(e.film) + ", scene: " + byte_text(e.scene) + "), more than the " + byte_text(*room) +
-                     (limit ? " that --max-memory allows" : " of memory available (--max-memory sets the limit)"));
+    check_memory_estimate(e.total(), limit, scene.source.string() + ": the render",
+                          "film " + std::to_string(scene.film.width) + "x" + std::to_string(scene.film.height) + ": " +
+                              byte_text(e.film) + ", scene: " + byte_text(e.scene));
+}
+
+void check_merge_memory(int width, int height, bool adaptive, const std::string& part) {
+    const std::uint64_t pixels = std::uint64_t(width) * std::uint64_t(height);
+    const std::uint64_t counts = adaptive ? 3 * sizeof(int) : 0;  // the whole's, the part's words and its ints
+    const std::uint64_t per_pixel = 2 * sizeof(PixelSum) + 12 * sizeof(std::uint32_t) + counts + 2 * sizeof(glm::vec3) + 3;
+    const std::string size = std::to_string(width) + "x" + std::to_string(height);
+    std::optional<std::uint64_t> none;
+    check_memory_estimate(pixels * per_pixel, none, "'" + part + "': merging parts of " + size,
+                          std::to_string(per_pixel) + " bytes a pixel");
 }
 
 }  // namespace sweeptrace

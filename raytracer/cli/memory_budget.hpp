@@ -35,4 +35,15 @@ MemoryEstimate estimate_render_memory(const Scene& scene, bool adaptive = false)
 // available memory.
 void check_render_memory(const Scene& scene, std::optional<std::uint64_t> limit, bool adaptive = false);
 
+// `merge`: the parts' sums and counts for the whole image, one part being read (its 32-bit words,
+// sums and counts), the mean image and its display copy, per pixel of the parts' WxH. Throws
+// InputError naming `part` (the file that declared the size) when over the available memory.
+void check_merge_memory(int width, int height, bool adaptive, const std::string& part);
+
+// Throws InputError "<what> needs an estimated X (<detail>), more than the Y ..." when `bytes`
+// exceed `limit` or, without one, the available memory: the one refusal of the estimates above,
+// for a command's own estimate (reference-check's).
+void check_memory_estimate(std::uint64_t bytes, std::optional<std::uint64_t> limit, const std::string& what,
+                           const std::string& detail);
+
 }  // namespace sweeptrace

@@ -11,6 +11,8 @@
 #include <vector>
 
 #include "raytracer/cli/commands.hpp"
+#include "raytracer/cli/memory_budget.hpp"
+#include "raytracer/cli/output_guard.hpp"
 #include "raytracer/image/image.hpp"
 #include "raytracer/image/partial_image.hpp"
 #include "raytracer/input_error.hpp"
@@ -31,12 +33,18 @@ int run_merge(const MergeArgs& a) {
     std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
     if (ext != ".png" && ext != ".exr" && ext != ".pfm")
         throw InputError("output '" + a.output + "': unknown image extension '" + ext + "' (use .png, .pfm or .exr)");
+    std::vector<NamedFile> inputs;
+    for (const std::string& p : a.parts) inputs.push_back({"part", p});
+    check_outputs({{"output", a.output}}, inputs);
     // Headers first, so a wrong set of parts is refused before any sums are read; then one part's
-    // sums at a time, so memory stays two parts' worth however many there are.
+    // sums at a time, so memory stays two parts' worth however many there are (estimated from the
+    // size the headers declare before the first is read).
     std::vector<PartialImage> headers;
     headers.reserve(a.parts.size());
     for (const std::string& p : a.parts) headers.push_back(read_partial_header(p));
     const std::vector<std::size_t> order = check_partials(headers, a.parts);
+    const RenderIdentity& id = headers[order[0]].id;
+    check_merge_memory(id.width, id.height, id.adaptive != "off", a.parts[order[0]]);
     PartialImage whole;
     whole.id = headers[order[0]].id;
     for (std::size_t i : order) {

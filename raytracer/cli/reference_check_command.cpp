@@ -17,8 +17,6 @@
 #include <cstdlib>
 #include <ctime>
 #include <filesystem>
-#include <fstream>
-#include <iterator>
 #include <memory>
 #include <optional>
 #include <string>
@@ -28,6 +26,8 @@
 
 #include "raytracer/accel/accel.hpp"
 #include "raytracer/cli/commands.hpp"
+#include "raytracer/cli/memory_budget.hpp"
+#include "raytracer/cli/output_guard.hpp"
 #include "raytracer/cli/program_version.hpp"
 #include "raytracer/cli/report_text.hpp"
 #include "raytracer/image/image.hpp"
@@ -35,6 +35,7 @@
 #include "raytracer/input_error.hpp"
 #include "raytracer/render/renderer.hpp"
 #include "raytracer/scene/pbrt/pbrt_import.hpp"
+#include "raytracer/scene/text_file.hpp"
 #include "raytracer/scene/stand_in_mask.hpp"
 
 namespace sweeptrace {
@@ -73,6 +74,7 @@ struct SceneInput {
     fs::path scene, reference;
     int factor = 1;
     int max_depth = 0;  // 0: the scene's
+    std::vector<NamedFile> reads;  // every file its check reads: the scene and its inputs, the reference
 };
 
 struct SceneRow {
@@ -102,10 +104,6 @@ double process_cpu_seconds() {
     return double(ts.tv_sec) + 1e-9 * double(ts.tv_nsec);
 }
 
-std::string read_whole(const fs::path& p) {
-    std::ifstream in(p, std::ios::binary);
-    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
 
 // --max-depth "N" (every scene) or "NAME=N" (that scene; it wins over "N"): 0 when none applies.
 int depth_for(const std::vector<std::string>& settings, const std::string& scene) {
@@ -123,6 +121,66 @@ int depth_for(const std::vector<std::string>& settings, const std::string& scene
     return mine > 0 ? mine : all;
 }
 
+// --stand-in files, relative to the folder unless absolute.
+std::vector<fs::path> stand_in_paths(const ReferenceCheckArgs& a) {
+    std::vector<fs::path> named;
+    for (const std::string& s : a.stand_ins) named.push_back(fs::path(s).is_absolute() ? fs::path(s) : fs::path(a.folder) / s);
+    return named;
+}
+
+// A --scene name is a subfolder's name: "../elsewhere" or "a/b" would check a folder outside the
+// one given (and print and write under a name that is not a subfolder's).
+void require_subfolder_name(const std::string& n) {
+    if (n.empty() || n == "." || n == ".." || n.find('/') != std::string::npos)
+        throw InputError("reference-check: --scene '" + n + "': give the name of a subfolder of the folder, not a path");
+}
+
+// A reference another renderer made holds radiance: no negative value, and at least one pixel
+// of the downsampled reference made of finite source pixels only (the others are masked, and
+// with none left every mean ratio would be 0 / 0). Allocates nothing: it runs before the memory
+// estimate is known to fit.
+void check_reference(const SceneInput& s, const Image& ref) {
+    for (int y = 0; y < ref.height; ++y)
+        for (int x = 0; x < ref.width; ++x) {
+            const glm::vec3& p = ref.at(x, y);
+            if (p.x < 0.0f || p.y < 0.0f || p.z < 0.0f)
+                throw InputError("reference-check: scene '" + s.name + "': reference '" + s.reference.string() +
+                                 "': pixel (" + std::to_string(x) + ", " + std::to_string(y) +
+                                 ") is negative; a reference holds radiance, never below 0");
+        }
+    const auto finite = [](const glm::vec3& p) { return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z); };
+    const int f = s.factor;
+    for (int y = 0; y + f <= ref.height; y += f)
+        for (int x = 0; x + f <= ref.width; x += f) {
+            bool all = true;
+            for (int sy = y; sy < y + f && all; ++sy)
+                for (int sx = x; sx < x + f && all; ++sx) all = finite(ref.at(sx, sy));
+            if (all) return;
+        }
+    throw InputError("reference-check: scene '" + s.name + "': reference '" + s.reference.string() +
+                     "': no pixel at the render's size is made of finite source pixels (NaN and infinite ones are "
+                     "masked), so nothing could be compared");
+}
+
+// The memory of one scene's check, before anything is rendered: the render's own estimate (twice
+// with a stand-in mask, rendered while the image is kept) plus, per pixel, the batch images (K
+// vec3), their mean and variance (2 dvec3 and 2 vec3), the downsampled reference with its variance
+// and mask, and the comparison picture (three panels, float and 8-bit); per reference pixel, the
+// reference and its noise estimate (2 vec3).
+void check_refcheck_memory(const SceneInput& s, Scene scene, int ref_w, int ref_h, const ReferenceCheckArgs& a) {
+    scene.film.width = ref_w / s.factor;
+    scene.film.height = ref_h / s.factor;
+    if (s.max_depth > 0) scene.film.max_depth = s.max_depth;
+    const MemoryEstimate e = estimate_render_memory(scene);
+    const std::uint64_t px = std::uint64_t(scene.film.width) * std::uint64_t(scene.film.height);
+    const std::uint64_t per_px = std::uint64_t(a.batches) * 12 + 2 * 24 + 2 * 12 + 2 * 12 + 1 + 3 * (12 + 3);
+    const std::uint64_t total = e.total() + e.film + px * per_px + std::uint64_t(ref_w) * std::uint64_t(ref_h) * 24;
+    check_memory_estimate(total, std::nullopt, "reference-check: scene '" + s.name + "'",
+                          std::to_string(scene.film.width) + "x" + std::to_string(scene.film.height) + " from a " +
+                              std::to_string(ref_w) + "x" + std::to_string(ref_h) + " reference, " +
+                              std::to_string(a.batches) + " batches");
+}
+
 // The scenes to check, each with its reference's downsample factor; everything a run needs is
 // checked here, before anything is rendered or written.
 std::vector<SceneInput> refcheck_inputs(const ReferenceCheckArgs& a) {
@@ -130,6 +188,7 @@ std::vector<SceneInput> refcheck_inputs(const ReferenceCheckArgs& a) {
     const fs::path folder(a.folder);
     if (!fs::is_directory(folder, ec)) throw InputError("reference-check: folder '" + a.folder + "' does not exist");
     std::vector<std::string> names = a.scenes;
+    for (const std::string& n : names) require_subfolder_name(n);
     if (names.empty()) {
         for (const auto& e : fs::directory_iterator(folder))
             if (e.is_directory() && fs::exists(e.path() / a.scene_file) && fs::exists(e.path() / a.reference_file))
@@ -143,11 +202,18 @@ std::vector<SceneInput> refcheck_inputs(const ReferenceCheckArgs& a) {
         if (const std::size_t eq = d.find('='); eq != std::string::npos &&
                                                 std::find(names.begin(), names.end(), d.substr(0, eq)) == names.end())
             throw InputError("reference-check: --max-depth '" + d + "': no scene '" + d.substr(0, eq) + "' is checked");
+    for (const fs::path& p : stand_in_paths(a))
+        if (const std::string problem = file_kind_problem(p); !problem.empty())
+            throw InputError("reference-check: --stand-in '" + p.string() + "' " + problem);
     std::vector<SceneInput> out;
     for (const std::string& n : names) {
-        SceneInput s{n, folder / n / a.scene_file, folder / n / a.reference_file};
+        SceneInput s;
+        s.name = n;
+        s.scene = folder / n / a.scene_file;
+        s.reference = folder / n / a.reference_file;
         for (const fs::path& p : {s.scene, s.reference})
-            if (!fs::is_regular_file(p, ec)) throw InputError("reference-check: scene '" + n + "': '" + p.string() + "' does not exist");
+            if (const std::string problem = file_kind_problem(p); !problem.empty())
+                throw InputError("reference-check: scene '" + n + "': '" + p.string() + "' " + problem);
         const Image ref = read_image(s.reference);
         s.factor = a.width > 0 ? ref.width / a.width : a.downsample;
         if (s.factor < 1 || ref.width % s.factor != 0 || ref.height % s.factor != 0)
@@ -157,7 +223,11 @@ std::vector<SceneInput> refcheck_inputs(const ReferenceCheckArgs& a) {
                              " does not divide into whole pixels (the box filter averages whole source pixels)");
         s.max_depth = depth_for(a.max_depths, n);
         std::vector<std::string> warnings;
-        load_pbrt_scene(s.scene, false, warnings);  // a scene that cannot be read fails now, not after hours
+        const Scene scene = load_pbrt_scene(s.scene, false, warnings);  // a scene that cannot be read fails now, not after hours
+        check_refcheck_memory(s, scene, ref.width, ref.height, a);
+        check_reference(s, ref);
+        s.reads = {{"scene", s.scene}, {"reference", s.reference}};
+        for (const fs::path& f : scene.input_files) s.reads.push_back({"scene's input", f});
         out.push_back(s);
     }
     return out;
@@ -240,9 +310,7 @@ SceneRow check_scene(const SceneInput& in, const ReferenceCheckArgs& a, const fs
     const BatchedRender ours = refcheck_batched(scene, depth, a);
 
     std::vector<std::uint8_t> valid = ref.valid;
-    std::vector<fs::path> named;
-    for (const std::string& s : a.stand_ins) named.push_back(fs::path(s).is_absolute() ? fs::path(s) : fs::path(a.folder) / s);
-    const std::vector<int> stand_ins = stand_in_textures(scene, named, true);
+    const std::vector<int> stand_ins = stand_in_textures(scene, stand_in_paths(a), true);
     for (const int t : stand_ins) row.stand_ins.push_back(fs::relative(scene.textures[t].image_file, fs::path(a.folder)).string());
     bool found = false;
     const Scene mask_scene = stand_in_mask_scene(scene, stand_ins, found);
@@ -278,7 +346,7 @@ std::string row_text(const SceneRow& r, int spp) {
     char t[600];
     const glm::dvec3& m = r.blocks.mean_ratio;
     std::snprintf(t, sizeof t, "| %s | %dx%d | %d | %.4f %.4f %.4f | %s | %s | %+.2f %% | %.2f%s | %s | %zu | %.0f (%.0f) | %s |",
-                  r.name.c_str(), r.width, r.height, spp, m.x, m.y, m.z, share_text(r.blocks.share_within_3).c_str(),
+                  escape_control(r.name).c_str(), r.width, r.height, spp, m.x, m.y, m.z, share_text(r.blocks.share_within_3).c_str(),
                   share_text(r.blocks.share_within_5).c_str(), 100.0 * r.blocks.median_relative_error, r.variance_scale,
                   r.scale_applied ? " (applied)" : "", share_text(1.0 - r.blocks.valid_share).c_str(), r.warnings.size(),
                   r.cpu_seconds, r.wall_seconds, r.matches() ? "yes" : "**no**");
@@ -314,7 +382,7 @@ std::string table_block(const std::vector<SceneRow>& rows, const ReferenceCheckA
     for (const SceneRow& r : rows) t += row_text(r, a.spp) + "\n";
     t += "\nStand-ins masked and the importer's warnings, per scene:\n\n";
     for (const SceneRow& r : rows) {
-        t += "- **" + r.name + "**: ";
+        t += "- **" + escape_control(r.name) + "**: ";
         if (r.stand_ins.empty()) t += "no stand-in";
         for (std::size_t i = 0; i < r.stand_ins.size(); ++i) t += (i ? ", `" : "stand-in `") + r.stand_ins[i] + "`";
         for (const std::string& w : r.warnings) {
@@ -326,7 +394,7 @@ std::string table_block(const std::vector<SceneRow>& rows, const ReferenceCheckA
         t += "\n";
     }
     for (const SceneRow& r : rows)
-        if (!r.picture.empty()) t += "\n![" + r.name + ": ours | reference | z map](" + r.picture + ")\n";
+        if (!r.picture.empty()) t += "\n![" + escape_control(r.name) + ": ours | reference | z map](" + r.picture + ")\n";
     t += std::string(kTableEnd) + "\n";
     return t;
 }
@@ -336,7 +404,7 @@ std::string table_block(const std::vector<SceneRow>& rows, const ReferenceCheckA
 std::string table_file_text(const std::string& path, const std::string& block) {
     std::error_code ec;
     if (!fs::exists(path, ec)) return "# Reference scenes\n\n" + block;
-    const std::string old = read_whole(path);
+    const std::string old = read_text_file(path, "the --table page");
     const std::size_t b = old.find(kTableBegin), e = old.find(kTableEnd);
     if (b == std::string::npos || e == std::string::npos || e < b)
         throw InputError("reference-check: --table '" + path + "' exists without the lines '" + kTableBegin + "' and '" +
@@ -358,14 +426,29 @@ int run_reference_check(ReferenceCheckArgs a) {
                          std::to_string(a.batches) + " with at least 2 samples per batch (the batches split the "
                          "render's samples equally, and each needs its own variance)");
     if (!a.table.empty()) {
-        refcheck_require_folder(a.table, "--table");
         if (fs::path(a.table).extension() != ".md") throw InputError("reference-check: --table '" + a.table + "': write a .md file");
+        check_outputs({{"reference-check: --table", a.table}});  // a folder, FIFO or device is not read below
         table_file_text(a.table, "");  // refused now if it would lose text
     }
     fs::path pictures = a.pictures;
     if (pictures.empty() && !a.table.empty()) pictures = fs::path(a.table).replace_extension();
-    if (!pictures.empty()) refcheck_require_folder(pictures.string(), "--pictures");
+    std::error_code ec;
+    if (!pictures.empty()) {
+        refcheck_require_folder(pictures.string(), "--pictures");
+        if (fs::exists(pictures, ec) && !fs::is_directory(pictures, ec))
+            throw InputError("reference-check: --pictures '" + pictures.string() + "' " + file_kind_problem(pictures) +
+                             ": the pictures go into a folder");
+    }
     const std::vector<SceneInput> inputs = refcheck_inputs(a);
+    // The one output rule (output_guard.hpp) over the table and every picture, against every file
+    // any scene's check reads: a picture named like a reference, or a table that is a scene or one
+    // of its Includes, is refused before the first render. A new pictures folder holds no input.
+    std::vector<NamedFile> outputs{{"reference-check: --table", a.table}}, reads;
+    for (const SceneInput& in : inputs) {
+        if (!pictures.empty() && fs::is_directory(pictures, ec)) outputs.push_back({"reference-check: picture", pictures / (in.name + ".png")});
+        reads.insert(reads.end(), in.reads.begin(), in.reads.end());
+    }
+    check_outputs(outputs, reads);
     if (!pictures.empty()) fs::create_directories(pictures);
 
     const fs::path table_dir = a.table.empty() ? fs::current_path() : fs::absolute(a.table).parent_path();
@@ -378,7 +461,7 @@ int run_reference_check(ReferenceCheckArgs a) {
         std::printf("%s %dx%d %d spp: mean ratio %.4f %.4f %.4f, blocks |z|<3 %s |z|<5 %s (%zu tested), median block "
                     "error %+.2f %%, block variance %.2f x the pixel sum%s, masked %s, %zu importer warnings, %.1f s CPU "
                     "%.1f s wall: %s\n",
-                    r.name.c_str(), r.width, r.height, a.spp, m.x, m.y, m.z, share_text(r.blocks.share_within_3).c_str(),
+                    escape_control(r.name).c_str(), r.width, r.height, a.spp, m.x, m.y, m.z, share_text(r.blocks.share_within_3).c_str(),
                     share_text(r.blocks.share_within_5).c_str(), r.blocks.tested, 100.0 * r.blocks.median_relative_error,
                     r.variance_scale, r.scale_applied ? " (applied)" : "",
                     share_text(1.0 - r.blocks.valid_share).c_str(), r.warnings.size(), r.cpu_seconds, r.wall_seconds,

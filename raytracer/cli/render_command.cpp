@@ -58,6 +58,7 @@ struct RenderArgs {
     std::string time_clock = "wall";
     bool quiet = false;
     std::string samples;  // "A:B": render a farm part
+    CLI::Option* samples_opt = nullptr;  // given at all: "--samples ''" is a bad range, not a whole render
     bool skip_existing = false;
     bool strict = false;  // a .pbrt scene: anything approximated or ignored is an error
     CLI::Option* time_opt = nullptr;
@@ -132,8 +133,21 @@ void require(bool ok, const std::string& message) {
     if (!ok) throw InputError(message);
 }
 
+// Every file the render writes, for the one output rule (output_guard.hpp); a new output joins
+// it here.
+std::vector<NamedFile> render_outputs(const RenderArgs& a, const std::filesystem::path& out) {
+    std::vector<NamedFile> outputs{{"output", out}};
+    if (!a.variance.empty()) outputs.push_back({"--variance", a.variance});
+    if (!a.forensics.empty()) {
+        outputs.push_back({"--forensics", a.forensics});
+        outputs.push_back({"--forensics picture", forensics_picture(a.forensics)});
+    }
+    return outputs;
+}
+
 int run_render(const RenderArgs& a) {
     a.limits.validate();
+    const bool part = a.samples_opt->count() > 0;
     const int thread_count = a.limits.thread_count();
     if (a.time_opt->count())
         require(a.time > 0.0 && std::isfinite(a.time), "--time must be a positive number of seconds, got " + a.time_opt->as<std::string>());
@@ -162,31 +176,18 @@ int run_render(const RenderArgs& a) {
         std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
         require(ext == ".png" || ext == ".pfm" || ext == ".exr",
                 "output '" + out.string() + "': unknown image extension '" + ext + "' (use .png, .pfm or .exr)");
-        require(a.samples.empty() || ext == ".exr", "--samples writes a farm part, an .exr file; got '" + out.string() + "'");
-        require(!a.skip_existing || !a.samples.empty(), "--skip-existing needs --samples");
-        const std::filesystem::path dir = out.parent_path();
-        std::error_code ec;
-        require(dir.empty() || std::filesystem::is_directory(dir, ec),
-                "output '" + out.string() + "': directory '" + dir.string() + "' does not exist");
+        require(!part || ext == ".exr", "--samples writes a farm part, an .exr file; got '" + out.string() + "'");
+        require(!a.skip_existing || part, "--skip-existing needs --samples");
         if (!a.variance.empty()) {
             std::string vext = std::filesystem::path(a.variance).extension().string();
             std::transform(vext.begin(), vext.end(), vext.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
             require(vext == ".pfm" || vext == ".exr", "--variance '" + a.variance + "': use .exr or .pfm (variances are not 8-bit colours)");
-            const std::filesystem::path vdir = std::filesystem::path(a.variance).parent_path();
-            require(vdir.empty() || std::filesystem::is_directory(vdir, ec),
-                    "--variance '" + a.variance + "': directory '" + vdir.string() + "' does not exist");
         }
-        if (!a.forensics.empty()) {
-            const std::filesystem::path f(a.forensics);
-            require(f.extension() == ".json", "--forensics '" + a.forensics + "': the report is a .json file");
-            const std::filesystem::path fdir = f.parent_path();
-            require(fdir.empty() || std::filesystem::is_directory(fdir, ec),
-                    "--forensics '" + a.forensics + "': directory '" + fdir.string() + "' does not exist");
-            require(forensics_picture(f) != out && f != out && (a.variance.empty() || (f != a.variance && forensics_picture(f) != a.variance)),
-                    "--forensics '" + a.forensics + "': its report or picture (" + forensics_picture(f).string() +
-                        ") would overwrite another output");
-        }
+        require(a.forensics.empty() || std::filesystem::path(a.forensics).extension() == ".json",
+                "--forensics '" + a.forensics + "': the report is a .json file");
     }
+    const std::vector<NamedFile> outputs = render_outputs(a, out);
+    check_outputs(outputs, {{"scene", scene_path}});  // the outputs' own clashes, before the load
 
     Scene scene = pbrt ? std::move(*pbrt_scene) : load_scene(scene_path);
     for (const std::string& w : emitters_facing_nothing(scene)) std::fprintf(stderr, "sweeptrace: warning: %s\n", escape_control(w).c_str());
@@ -197,20 +198,15 @@ int run_render(const RenderArgs& a) {
                                 : a.integrator == "bdpt" ? IntegratorKind::Bdpt
                                                          : IntegratorKind::Path;
     // Every file the load read (the scene's own list, read_files.hpp), before any work starts.
-    std::vector<NamedInput> inputs{{"scene", scene_path}};
+    std::vector<NamedFile> inputs{{"scene", scene_path}};
     for (const std::filesystem::path& f : scene.input_files) inputs.push_back({"scene's input", f});
-    refuse_output_over_input(out, inputs);
-    if (!a.variance.empty()) refuse_output_over_input(a.variance, inputs);
-    if (!a.forensics.empty()) {
-        refuse_output_over_input(a.forensics, inputs);
-        refuse_output_over_input(forensics_picture(a.forensics), inputs);
-    }
+    check_outputs(outputs, inputs);
     check_render_memory(scene, a.limits.memory_limit(), a.adaptive != "off");
 
     // A farm part: which samples, and the render they belong to; a re-run task skips a finished one.
     const SampleRange range =
-        a.samples.empty() ? SampleRange{0, scene.film.spp} : parse_sample_range(a.samples, scene.film.spp);
-    const RenderIdentity identity = a.samples.empty() ? RenderIdentity{} : render_identity(scene, scene_path, a.accel, a.adaptive);
+        !part ? SampleRange{0, scene.film.spp} : parse_sample_range(a.samples, scene.film.spp);
+    const RenderIdentity identity = !part ? RenderIdentity{} : render_identity(scene, scene_path, a.accel, a.adaptive);
     if (a.skip_existing && is_finished_part(out, identity, range)) {
         if (!a.quiet) std::fprintf(stderr, "%s: already a verified part of this render, kept\n", out.string().c_str());
         return 0;
@@ -260,7 +256,7 @@ int run_render(const RenderArgs& a) {
             std::fprintf(stderr, "sweeptrace: warning: %s: film.guiding is the path tracer's; %s renders unguided\n",
                          escape_control(scene_path.filename().string()).c_str(), name);
     }
-    if (!a.samples.empty()) {
+    if (part) {
         // A part must be exactly the samples [A, B) a whole render draws: a time budget would cut
         // it short, and a guided sample depends on the guide trained on every pass before it.
         require(!a.time_opt->count(), "--samples and --time cannot be combined: a farm part renders its whole range");
@@ -289,7 +285,7 @@ int run_render(const RenderArgs& a) {
         std::fprintf(stderr, "sweeptrace: interrupted before the first pass over the image finished; nothing written\n");
         return InterruptGuard::exit_code();
     }
-    if (!a.samples.empty()) write_part(result, identity, range.begin, out);
+    if (part) write_part(result, identity, range.begin, out);
     else write_image(is_display_format(out) ? to_display(result.image, scene.film.exposure, scene.film.tone_curve) : result.image, out);
     if (!a.variance.empty()) write_image(result.variance, a.variance);
     if (forensics) {
@@ -383,7 +379,7 @@ void add_render_command(CLI::App& app, int& exit_code) {
     cmd->add_flag("--quiet", args->quiet, "No progress display and no summary");
     cmd->add_flag("--strict", args->strict,
                   "A .pbrt scene: refuse (exit 2) anything the translation would approximate or ignore, instead of a warning");
-    cmd->add_option("--samples", args->samples,
+    args->samples_opt = cmd->add_option("--samples", args->samples,
                     "A:B: render only sample indices [A, B) of the --spp render, to a farm part (.exr) for "
                     "`sweeptrace merge` (with --adaptive: nominal spp, see there)");
     cmd->add_flag("--skip-existing", args->skip_existing,

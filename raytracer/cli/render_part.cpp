@@ -30,6 +30,10 @@ bool is_finished_part(const std::filesystem::path& path, const RenderIdentity& i
     std::error_code ec;
     if (!std::filesystem::is_regular_file(path, ec)) return false;
     try {
+        // The header first: a file of another size or render is not read further (its sums could
+        // claim any size; this render's own were charged to its memory estimate).
+        const PartialImage h = read_partial_header(path);
+        if (!(h.id == id && h.sample_begin == range.begin && h.sample_end == range.end)) return false;
         const PartialImage p = read_partial(path);
         return p.id == id && p.sample_begin == range.begin && p.sample_end == range.end;
     } catch (const InputError&) {

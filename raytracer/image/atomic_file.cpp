@@ -115,6 +115,12 @@ int sweep_stale_temporaries(const std::filesystem::path& path) {
 
 void write_atomically(const std::filesystem::path& path,
                       const std::function<void(const std::filesystem::path& temp)>& write) {
+    // The rename would put a regular file in place of a device, FIFO or folder: never. The
+    // commands refuse such an output before any work (cli/output_guard.hpp); this is the last word.
+    std::error_code ec;
+    if (const std::filesystem::file_status st = std::filesystem::status(path, ec);
+        std::filesystem::exists(st) && !std::filesystem::is_regular_file(st))
+        throw InputError("cannot write '" + path.string() + "': it " + file_kind_problem(path));
     sweep_stale_temporaries(path);
     const std::filesystem::path temp = create_temporary_beside(path);
     const InProgress registered(temp);

@@ -12,7 +12,9 @@
 
 namespace sweeptrace {
 
-// Creates an empty, uniquely named temporary file beside `path`, calls `write(temp)`, and renames
+// An existing `path` that is not a regular file (symlinks followed: a device, FIFO, folder) is
+// refused with InputError and left alone. Otherwise:
+// creates an empty, uniquely named temporary file beside `path`, calls `write(temp)`, and renames
 // the temporary over `path`. If `write` throws or the rename fails, the temporary is removed and
 // `path` is left exactly as it was; errors are rethrown (std::filesystem / write errors as
 // InputError naming `path`).

@@ -24,6 +24,7 @@ constexpr int kWords = 4;                    // 32-bit words per 128-bit sum
 constexpr int kSumChannels = 3 * kWords;     // sum.R.0 .. sum.B.3
 const char* const kColor[3] = {"R", "G", "B"};
 constexpr const char* kCountChannel = "count";  // adaptive parts only
+constexpr int kMaxPartSide = 16384;              // film.width and film.height's limit (scene/film_limits.hpp)
 
 std::string sum_channel(int color, int word) { return std::string("sum.") + kColor[color] + "." + std::to_string(word); }
 
@@ -153,9 +154,12 @@ PartialImage header_part(const Imf::Header& hd, const std::string& file) {
     const Imath::Box2i win = hd.dataWindow();
     p.id.width = win.max.x - win.min.x + 1;
     p.id.height = win.max.y - win.min.y + 1;
-    if (win.min.x != 0 || win.min.y != 0 || p.id.width < 1 || p.id.height < 1 || p.id.width > (1 << 16) ||
-        p.id.height > (1 << 16))
-        throw InputError("'" + file + "': data window is not a 1..65536 square from (0, 0)");
+    // A part is a render's film, whose sides are at most kMaxPartSide (scene/film_limits.hpp): a
+    // header claiming more is no part this program wrote, refused before anything is allocated.
+    if (win.min.x != 0 || win.min.y != 0 || p.id.width < 1 || p.id.height < 1 || p.id.width > kMaxPartSide ||
+        p.id.height > kMaxPartSide)
+        throw InputError("'" + file + "': data window is not 1.." + std::to_string(kMaxPartSide) +
+                         " pixels a side from (0, 0)");
     p.id.scene_hash = attribute(hd, "sweeptrace.sceneHash", file);
     p.id.seed = number<std::uint64_t>(attribute(hd, "sweeptrace.seed", file), "sweeptrace.seed", file);
     p.id.max_depth = static_cast<int>(number(attribute(hd, "sweeptrace.maxDepth", file), "sweeptrace.maxDepth", file));
@@ -198,7 +202,8 @@ void write_partial(const PartialImage& part, const std::filesystem::path& path) 
 
 PartialImage read_partial_header(const std::filesystem::path& path) {
     const std::string file = path.string();
-    if (!std::filesystem::is_regular_file(path)) throw InputError("cannot read '" + file + "': no such file");
+    if (const std::string problem = file_kind_problem(path); !problem.empty())
+        throw InputError("cannot read '" + file + "': " + problem);
     try {
         Imf::InputFile in(path.c_str());
         return header_part(in.header(), file);
@@ -211,7 +216,8 @@ PartialImage read_partial_header(const std::filesystem::path& path) {
 
 PartialImage read_partial(const std::filesystem::path& path) {
     const std::string file = path.string();
-    if (!std::filesystem::is_regular_file(path)) throw InputError("cannot read '" + file + "': no such file");
+    if (const std::string problem = file_kind_problem(path); !problem.empty())
+        throw InputError("cannot read '" + file + "': " + problem);
     try {
         Imf::InputFile in(path.c_str());
         PartialImage p = header_part(in.header(), file);

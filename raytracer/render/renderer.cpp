@@ -61,6 +61,7 @@ public:
           sum_sq_(sum_.size(), glm::dvec3(0.0)),
           pass_(sum_.size()) {
         if (opt.integrator != IntegratorKind::Path) tile_splats_.resize(static_cast<std::size_t>(tiles_x_) * tiles_y_);
+        bdpt_.set_cancel(opt.cancel);  // a depth-1024 sample takes seconds: it stops inside, its pass dropped
         if (opt.integrator == IntegratorKind::Vcm) vcm_.emplace(scene, accel, camera_, lights_, bdpt_, opt.max_depth);
         if (opt.guiding) {
             tile_records_.resize(static_cast<std::size_t>(tiles_x_) * tiles_y_);
@@ -95,18 +96,23 @@ public:
             const int sample = first + s;
             if (stopped(s)) break;
             if (vcm_) light_pass(tiles, sample);
-            std::atomic<bool> abandoned{false};
-            tbb::parallel_for(tbb::blocked_range<int>(0, tiles, 1), [&](const tbb::blocked_range<int>& r) {
-                for (int t = r.begin(); t < r.end(); ++t) {
-                    if (stopped(s)) {
-                        abandoned.store(true, std::memory_order_relaxed);
-                        return;
+            // A cancel is seen per sample (render_tile, light_pass) and inside bdpt's and vcm's
+            // strategy loops, so a signal is honoured within a fraction of a sample however long a
+            // pass takes; the pass it cut short is dropped.
+            std::atomic<bool> abandoned{cancelled()};
+            if (!abandoned.load())
+                tbb::parallel_for(tbb::blocked_range<int>(0, tiles, 1), [&](const tbb::blocked_range<int>& r) {
+                    for (int t = r.begin(); t < r.end(); ++t) {
+                        if (stopped(s) || !render_tile(t, sample)) {
+                            abandoned.store(true, std::memory_order_relaxed);
+                            return;
+                        }
+                        tiles_done_.fetch_add(1, std::memory_order_relaxed);
                     }
-                    render_tile(t, sample);
-                    tiles_done_.fetch_add(1, std::memory_order_relaxed);
-                }
-            });
-            if (abandoned.load()) {
+                });
+            // A cancel during the pass, even after its last tile started, may have cut a sample short
+            // inside the integrator (bdpt's strategy loops): the pass is dropped whole.
+            if (abandoned.load() || cancelled()) {
                 if (opt_.forensics != nullptr) opt_.forensics->drop_pass();
                 break;
             }
@@ -170,14 +176,13 @@ public:
             std::atomic<bool> abandoned{false};
             tbb::parallel_for(tbb::blocked_range<int>(0, height_, 1), [&](const tbb::blocked_range<int>& r) {
                 for (int y = r.begin(); y < r.end(); ++y) {
-                    if (stopped(1)) {
+                    if (stopped(1) || !render_round_row(y, t, next)) {
                         abandoned.store(true, std::memory_order_relaxed);
                         return;
                     }
-                    render_round_row(y, t, next);
                 }
             });
-            if (abandoned.load()) break;
+            if (abandoned.load() || cancelled()) break;
             for (std::size_t i = 0; i < sum_.size(); ++i) {
                 const auto more = static_cast<int>(adaptive_count(weights_[i], next) - adaptive_count(weights_[i], t));
                 if (more == 0) continue;
@@ -298,6 +303,7 @@ private:
                 std::vector<Splat>& splats = tile_splats_[static_cast<std::size_t>(t)];
                 for (int y = y0; y < y1; ++y)
                     for (int x = x0; x < x1; ++x) {
+                        if (cancelled()) break;  // the pass is dropped (run_passes)
                         const std::size_t pixel = static_cast<std::size_t>(y) * width_ + x;
                         // The camera sample's shutter time (its subpath sees the scene then), the
                         // light subpath's numbers from a stream of their own.
@@ -310,7 +316,7 @@ private:
                 rays_.fetch_add(rays, std::memory_order_relaxed);
             }
         });
-        vcm_->build_grid();
+        if (!cancelled()) vcm_->build_grid();
     }
 
     // A camera sample's first numbers, in the order they are drawn: the film position's offset in
@@ -340,7 +346,8 @@ private:
     // Pass `pass` is not started, or is dropped: the first pass is kept whatever the budget says.
     bool stopped(int pass) const { return cancelled() || (pass > 0 && budget_.spent()); }
 
-    void render_tile(int tile, int sample) {
+    // False when a cancel cut the tile short (its pass is then dropped).
+    bool render_tile(int tile, int sample) {
         const int x0 = (tile % tiles_x_) * kTileSize, y0 = (tile / tiles_x_) * kTileSize;
         const int x1 = std::min(x0 + kTileSize, width_), y1 = std::min(y0 + kTileSize, height_);
         std::uint64_t rays = 0, nonfinite = 0;
@@ -352,8 +359,13 @@ private:
         // Forensics follow the path integrator's vertices; the command line refuses them with bdpt.
         PathTally tally_storage;
         PathTally* tally = opt_.forensics != nullptr && !bdpt ? &tally_storage : nullptr;
-        for (int y = y0; y < y1; ++y) {
-            for (int x = x0; x < x1; ++x) {
+        bool whole = true;
+        for (int y = y0; y < y1 && whole; ++y) {
+            for (int x = x0; x < x1 && whole; ++x) {
+                if (cancelled()) {
+                    whole = false;
+                    break;
+                }
                 const std::size_t pixel = static_cast<std::size_t>(y) * width_ + x;
                 if (tally != nullptr) tally->begin();
                 const glm::vec3 l = sample_pixel(x, y, sample, rays, nonfinite, records, splats, tally);
@@ -363,6 +375,7 @@ private:
         }
         rays_.fetch_add(rays, std::memory_order_relaxed);
         if (nonfinite != 0) nonfinite_.fetch_add(nonfinite, std::memory_order_relaxed);
+        return whole;
     }
 
     // One camera sample of pixel (x, y): its value after the pixel filter's weight and the film's
@@ -388,16 +401,22 @@ private:
     // An adaptive pass's samples for one image row, the nominal budget past the pilot going from t0
     // to t1: pixel p's samples 16 + adaptive_count(w_p, t0) .. 16 + adaptive_count(w_p, t1) - 1,
     // added to copies of its sums in that order (committed by run_adaptive if the pass completes).
-    void render_round_row(int y, std::int64_t t0, std::int64_t t1) {
+    // False when a cancel cut the row short (its pass is then dropped).
+    bool render_round_row(int y, std::int64_t t0, std::int64_t t1) {
         std::uint64_t rays = 0, nonfinite = 0, clamped = 0;
         std::int64_t samples = 0;
-        for (int x = 0; x < width_; ++x) {
+        bool whole = true;
+        for (int x = 0; x < width_ && whole; ++x) {
             const std::size_t pixel = static_cast<std::size_t>(y) * width_ + x;
             const std::int64_t lo = adaptive_count(weights_[pixel], t0), hi = adaptive_count(weights_[pixel], t1);
             if (hi == lo) continue;
             PixelSum sum = sum_[pixel];
             glm::dvec3 sq = sum_sq_[pixel];
             for (std::int64_t k = lo; k < hi; ++k) {
+                if (cancelled()) {
+                    whole = false;
+                    break;
+                }
                 const glm::vec3 l = sample_pixel(x, y, static_cast<int>(kAdaptivePilotSpp + k), rays, nonfinite, nullptr, nullptr, nullptr);
                 bool c = false;
                 add_sample(sum, l, c);
@@ -413,6 +432,7 @@ private:
         samples_done_.fetch_add(samples, std::memory_order_relaxed);
         if (nonfinite != 0) nonfinite_.fetch_add(nonfinite, std::memory_order_relaxed);
         if (clamped != 0) clamped_.fetch_add(clamped, std::memory_order_relaxed);
+        return whole;
     }
 
     // film.clamp_sample: the whole sample scaled so its largest component is at most the limit,

@@ -99,7 +99,7 @@ Film read_film(const Node& node) {
         else if (name == "vcm") film.integrator = IntegratorKind::Vcm;
         else integrator->fail("unknown integrator \"" + name + "\" (known: path, bdpt, vcm)");
     }
-    if (auto radius = node.find("vcm_radius")) film.vcm_radius = radius->number_at_least(0.0f, false);
+    if (auto radius = node.find("vcm_radius")) film.vcm_radius = radius->number_in(vcm_radius_range().lo, vcm_radius_range().hi);
     if (auto clamp = node.find("clamp_indirect")) film.clamp_indirect = clamp->number_at_least(0.0f, false);
     if (auto clamp = node.find("clamp_sample")) film.clamp_sample = clamp->number_at_least(0.0f, false);
     read_film_display(node, film);

@@ -473,16 +473,16 @@ case("out-is-mesh-symlink", 2, O + r"link\.pfm' is the scene's input 'tri\.obj'"
      {"scene.json": mesh_scene("tri.obj"), "tri.obj": "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n"}, "symlink link.pfm tri.obj")
 case("forensics-not-json", 2, E + r"--forensics 'f\.txt': the report is a \.json file",
      "render scene.json -o out.png --forensics f.txt --quiet", {"scene.json": scene()})
-case("forensics-picture-is-output", 2, E + r"--forensics 'out\.json': its report or picture \(out-regions\.png\) would overwrite",
+case("forensics-picture-is-output", 2, E + r"--forensics picture 'out-regions\.png' is the same file as output 'out-regions\.png'",
      "render scene.json -o out-regions.png --forensics out.json --quiet", {"scene.json": scene()})
-case("forensics-is-scene", 2, O + r"scene\.json' is the scene 'scene\.json'",
+case("forensics-is-scene", 2, E + r"--forensics 'scene\.json' is the scene 'scene\.json'",
      "render scene.json -o out.png --forensics scene.json --quiet", {"scene.json": scene()})
-case("heatmap-is-a", 2, O + r"a\.png' is the image A 'a\.png'", "diff a.png b.png --heatmap a.png", {"a.png": GOOD, "b.png": GOOD})
-case("heatmap-is-b-dotted", 2, O + r"\./b\.png' is the image B 'b\.png'", "diff a.png b.png --heatmap ./b.png", {"a.png": GOOD, "b.png": GOOD})
-case("heatmap-is-variance", 2, O + r"v\.pfm' is the --variance-a image 'v\.pfm'",
+case("heatmap-is-a", 2, E + r"--heatmap 'a\.png' is the image A 'a\.png'", "diff a.png b.png --heatmap a.png", {"a.png": GOOD, "b.png": GOOD})
+case("heatmap-is-b-dotted", 2, E + r"--heatmap '\./b\.png' is the image B 'b\.png'", "diff a.png b.png --heatmap ./b.png", {"a.png": GOOD, "b.png": GOOD})
+case("heatmap-is-variance", 2, E + r"--heatmap 'v\.pfm' is the --variance-a image 'v\.pfm'",
      "diff a.pfm b.pfm --variance-a v.pfm --variance-b v.pfm --heatmap v.pfm",
      {"a.pfm": GOOD_PFM, "b.pfm": GOOD_PFM, "v.pfm": GOOD_PFM})
-case("heatmap-is-symlink-to-a", 2, O + r"h\.png' is the image A 'a\.png'", "diff a.png b.png --heatmap h.png",
+case("heatmap-is-symlink-to-a", 2, E + r"--heatmap 'h\.png' is the image A 'a\.png'", "diff a.png b.png --heatmap h.png",
      {"a.png": GOOD, "b.png": GOOD}, "symlink h.png a.png")
 
 
@@ -570,7 +570,7 @@ case("out-is-texture-symlink", 2, O + r"s\.png" + IN + r"tex\.png'", "render sce
 ENV_SCENE = scene(background={"environment": {"file": "env.pfm"}})
 case("out-is-environment", 2, O + r"env\.pfm" + IN + r"env\.pfm'", "render scene.json -o env.pfm --quiet",
      {"scene.json": ENV_SCENE, "env.pfm": GOOD_PFM})
-case("variance-is-environment", 2, O + r"env\.pfm" + IN + r"env\.pfm'", "render scene.json -o out.png --variance env.pfm --quiet",
+case("variance-is-environment", 2, E + r"--variance 'env\.pfm" + IN + r"env\.pfm'", "render scene.json -o out.png --variance env.pfm --quiet",
      {"scene.json": ENV_SCENE, "env.pfm": GOOD_PFM})
 case("out-is-normal-map", 2, O + r"n\.png" + IN + r"n\.png'", "render scene.json -o n.png --quiet",
      {"scene.json": scene(materials__m={"type": "diffuse", "normal_map": {"image": {"file": "n.png"}}}), "n.png": GOOD})
@@ -658,6 +658,154 @@ pbrt_case("pbrt-light-singular-transform", E + r"scene\.pbrt:6: LightSource \"sp
 pbrt_case("pbrt-tga-rle-overrun", E + r"scene\.pbrt:4: material .*t\.tga.*RLE packet at byte 18 runs past the image",
           PBRT_OK + 'Texture "t" "spectrum" "imagemap" "string filename" "t.tga"\nMaterial "diffuse" "texture reflectance" "t"\n'
           'Shape "sphere"\n', extra={"t.tga": tga(2, 2, 10, b"\x84\x80\x80\x80")})
+
+# --- issue 40: no output overwrites another output or an input; devices and FIFOs left alone -----
+# One rule for every command that writes (cli/output_guard.hpp): outputs compared with each other
+# and with every file read, by the directory entry a write replaces and by device and inode; an
+# existing output that is not a regular file (device, FIFO, folder) is refused, never replaced.
+SAME = r" is the same file as "
+NOT_REGULAR = r"; outputs are written as regular files and a non-regular one is never replaced"
+case("out-variance-same", 2, E + r"--variance 'x\.exr'" + SAME + r"output 'x\.exr'",
+     "render scene.json -o x.exr --variance x.exr --quiet", {"scene.json": scene(film__spp=2)})
+case("out-variance-same-dotted", 2, E + r"--variance '\./x\.exr'" + SAME + r"output 'x\.exr'",
+     "render scene.json -o x.exr --variance ./x.exr --quiet", {"scene.json": scene(film__spp=2)})
+case("out-variance-symlink", 2, E + r"--variance 'v\.exr'" + SAME + r"output 'x\.exr'",
+     "render scene.json -o x.exr --variance v.exr --quiet", {"scene.json": scene(film__spp=2), "x.exr": "an old image"},
+     "symlink v.exr x.exr")
+case("out-forensics-picture-dotted", 2, E + r"--forensics picture 'f-regions\.png'" + SAME + r"output '\./f-regions\.png'",
+     "render scene.json -o ./f-regions.png --forensics f.json --quiet", {"scene.json": scene()})
+case("merge-out-is-part", 2, E + r"output 'a\.exr' is the part 'a\.exr' \(the same file\)", "merge a.exr b.exr -o a.exr",
+     {"a.exr": "a part", "b.exr": "a part"})
+case("merge-out-is-part-dotted", 2, E + r"output 'sub/\.\./b\.exr' is the part 'b\.exr'", "merge a.exr b.exr -o sub/../b.exr",
+     {"a.exr": "a part", "b.exr": "a part", "sub/keep": ""})
+case("out-is-device", 2, E + r"output 'null\.png' is a device, not a regular file" + NOT_REGULAR,
+     "render scene.json -o null.png --quiet", {"scene.json": scene()}, "device null.png /dev/null")
+case("out-is-fifo", 2, E + r"output 'fifo\.png' is a FIFO, not a regular file" + NOT_REGULAR,
+     "render scene.json -o fifo.png --quiet", {"scene.json": scene()}, "fifo fifo.png")
+case("variance-is-device", 2, E + r"--variance 'full\.exr' is a device", "render scene.json -o out.exr --variance full.exr --quiet",
+     {"scene.json": scene(film__spp=2)}, "device full.exr /dev/full")
+case("forensics-is-device", 2, E + r"--forensics 'full\.json' is a device", "render scene.json -o out.png --forensics full.json --quiet",
+     {"scene.json": scene()}, "device full.json /dev/full")
+case("forensics-is-directory", 2, E + r"--forensics 'd\.json' is a directory", "render scene.json -o out.png --forensics d.json --quiet",
+     {"scene.json": scene(), "d.json/keep": ""})
+case("variance-is-directory", 2, E + r"--variance 'd\.exr' is a directory", "render scene.json -o out.exr --variance d.exr --quiet",
+     {"scene.json": scene(film__spp=2), "d.exr/keep": ""})
+case("merge-out-is-device", 2, E + r"output 'null\.exr' is a device", "merge a.exr -o null.exr", {"a.exr": "a part"},
+     "device null.exr /dev/null")
+case("merge-out-is-fifo", 2, E + r"output 'fifo\.exr' is a FIFO", "merge a.exr -o fifo.exr", {"a.exr": "a part"}, "fifo fifo.exr")
+pbrt_case("convert-out-is-device", E + r"output 'out\.json' is a device", PBRT_OK, command="convert", setup="device out.json /dev/null")
+case("heatmap-is-fifo", 2, E + r"--heatmap 'h\.png' is a FIFO", "diff a.png b.png --heatmap h.png", {"a.png": GOOD, "b.png": GOOD},
+     "fifo h.png")
+case("diff-json-is-device", 2, E + r"--json 'r\.json' is a device", "diff --golden g --actual a --json r.json",
+     {"g/x.png": GOOD, "a/x.png": GOOD}, "device r.json /dev/full")
+case("diff-html-page-is-golden", 2, E + r"--html panel 'g/x\.png\.golden\.png' is the --golden image 'g/x\.png\.golden\.png'",
+     "diff --golden g --actual a --html g", {"g/x.png": GOOD, "g/x.png.golden.png": GOOD, "a/x.png": GOOD})
+
+# reference-check: the same rule for its table and pictures, and its own inputs checked like render's.
+REF_SCENE = PBRT_OK + 'LightSource "distant" "point3 from" [0 0 1] "point3 to" [0 0 0]\nShape "sphere"\n'
+MARKED = "# <!-- reference-check: begin (generated, do not edit) -->\n# <!-- reference-check: end -->\n"
+RC = E + r"reference-check: "
+
+
+def refcheck_case(name, pattern, args, files=None, setup=""):
+    """Folder F with one scene s (a sphere, and an 8 x 8 reference); `files` add or replace files."""
+    f = {"F/s/scene-v4.pbrt": REF_SCENE, "F/s/TungstenRender.exr": GOOD_EXR}
+    f.update(files or {})
+    case(name, 2, pattern, ("reference-check F --spp 2 --downsample 1 " + args).strip(), f, setup)
+
+
+def exr_rgb(w, h, value):
+    """An uncompressed scanline EXR of FLOAT R, G, B, every pixel `value`."""
+    def attr(name, kind, v):
+        return name.encode() + b"\0" + kind.encode() + b"\0" + struct.pack("<i", len(v)) + v
+    channels = b"".join(c + b"\0" + struct.pack("<iB3xii", 2, 0, 1, 1) for c in (b"B", b"G", b"R")) + b"\0"
+    box = struct.pack("<iiii", 0, 0, w - 1, h - 1)
+    head = (b"\x76\x2f\x31\x01" + struct.pack("<i", 2) + attr("channels", "chlist", channels) +
+            attr("compression", "compression", b"\0") + attr("dataWindow", "box2i", box) +
+            attr("displayWindow", "box2i", box) + attr("lineOrder", "lineOrder", b"\0") +
+            attr("pixelAspectRatio", "float", struct.pack("<f", 1.0)) +
+            attr("screenWindowCenter", "v2f", struct.pack("<ff", 0, 0)) +
+            attr("screenWindowWidth", "float", struct.pack("<f", 1.0)) + b"\0")
+    line = struct.pack("<f", value) * (3 * w)
+    first = len(head) + 8 * h
+    offsets = b"".join(struct.pack("<Q", first + y * (8 + len(line))) for y in range(h))
+    return head + offsets + b"".join(struct.pack("<ii", y, len(line)) + line for y in range(h))
+
+
+GOOD_EXR = exr_rgb(8, 8, 0.5)
+# The picture of scene "ref" is ref.png in --pictures: here the folder holding the reference ref.png.
+refcheck_case("refcheck-pictures-over-reference", RC + r"picture 'F/ref/ref\.png' is the reference 'F/ref/ref\.png'",
+              "--pictures F/ref --scene ref --reference ref.png", {"F/ref/scene-v4.pbrt": REF_SCENE, "F/ref/ref.png": GOOD})
+refcheck_case("refcheck-table-is-scene", RC + r"--table 'F/s/scene\.md' is the scene 'F/s/scene\.md'",
+              "--scene-file scene.md --table F/s/scene.md", {"F/s/scene.md": MARKED + REF_SCENE})
+refcheck_case("refcheck-table-is-include", RC + r"--table 'F/s/inc\.md' is the scene's input '.*inc\.md'",
+              "--table F/s/inc.md", {"F/s/scene-v4.pbrt": 'Include "inc.md"\n', "F/s/inc.md": MARKED + REF_SCENE})
+refcheck_case("refcheck-table-is-directory", RC + r"--table 't\.md' is a directory", "--table t.md", {"t.md/keep": ""})
+refcheck_case("refcheck-table-is-fifo", RC + r"--table 't\.md' is a FIFO", "--table t.md", setup="fifo t.md")
+refcheck_case("refcheck-table-is-device", RC + r"--table 't\.md' is a device", "--table t.md", setup="device t.md /dev/full")
+refcheck_case("refcheck-pictures-is-file", RC + r"--pictures 'p' is a regular file|--pictures 'p' .*: the pictures go into a folder",
+              "--pictures p", {"p": "a file"})
+refcheck_case("refcheck-reference-nan", RC + r"scene 's': reference 'F/s/TungstenRender\.exr': no pixel at the render's size is made of finite",
+              "", {"F/s/TungstenRender.exr": exr_rgb(8, 8, float("nan"))})
+refcheck_case("refcheck-reference-inf", RC + r"scene 's': reference 'F/s/TungstenRender\.exr': no pixel at the render's size is made of finite",
+              "", {"F/s/TungstenRender.exr": exr_rgb(8, 8, float("inf"))})
+refcheck_case("refcheck-reference-negative", RC + r"scene 's': reference 'F/s/TungstenRender\.exr': pixel \(0, 0\) is negative",
+              "", {"F/s/TungstenRender.exr": exr_rgb(8, 8, -1.0)})
+# A valid 8192 x 8192 reference (a PFM header grown by zeros) at --downsample 1: the memory estimate
+# refuses the render before anything large is allocated (under a 4 GB address space).
+BIG_PFM = b"PF\n8192 8192\n-1\n"
+refcheck_case("mem-refcheck-reference-8192", RC + r"scene 's' needs an estimated .* \(8192x8192 from a 8192x8192 reference",
+              "--reference big.pfm", {"F/s/big.pfm": BIG_PFM},
+              setup=f"grow F/s/big.pfm {len(BIG_PFM) + 8192 * 8192 * 12} ; " + AS)
+refcheck_case("refcheck-stand-in-missing", RC + r"--stand-in 'F/nothere\.png' not found", "--stand-in nothere.png")
+refcheck_case("refcheck-scene-outside", RC + r"--scene '\.\./elsewhere': give the name of a subfolder", "--scene ../elsewhere",
+              {"elsewhere/scene-v4.pbrt": REF_SCENE, "elsewhere/TungstenRender.exr": GOOD_EXR})
+refcheck_case("refcheck-sppm-radius-huge", E + r"F/s/scene-v4\.pbrt:1: Integrator \"sppm\": \"float radius\" must be in \[",
+              "", {"F/s/scene-v4.pbrt": 'Integrator "sppm" "float radius" [3e38]\n' + REF_SCENE})
+
+# vcm's merging radius: checked where it is read, in a range its schedule keeps finite and non-zero.
+VCM = r"scene\.json: film\.vcm_radius: must be in \[1\.1\d*e-16, 6\.3\d*e\+14\], got "
+render_case("vcm-radius-huge", E + VCM + r"3e\+38", scene(film__integrator="vcm", film__vcm_radius=3e38))
+render_case("vcm-radius-1e20", E + VCM + r"1e\+20", scene(film__integrator="vcm", film__vcm_radius=1e20))
+render_case("vcm-radius-tiny", E + VCM, scene(film__integrator="vcm", film__vcm_radius=1e-45), args="--spp 257")
+SPPM = r"scene\.pbrt:1: Integrator \"sppm\": \"float radius\" must be in \["
+pbrt_case("pbrt-sppm-radius-huge", E + SPPM, 'Integrator "sppm" "float radius" [3e38]\n' + PBRT_OK)
+pbrt_case("pbrt-sppm-radius-huge-convert", E + SPPM, 'Integrator "sppm" "float radius" [3e38]\n' + PBRT_OK, command="convert")
+pbrt_case("pbrt-sppm-radius-tiny", E + SPPM + r".*got 1e-300", 'Integrator "sppm" "float radius" [1e-300]\n' + PBRT_OK)
+
+# Farm parts: an empty --samples is a bad range; a part's header is checked (size, memory, kind of
+# file) before its sums are read.
+cli_case("part-samples-empty", E + r"--samples '': expected A:B", "render scene.json -o part.exr --samples ''")
+
+
+def part_header(w, h):
+    """The header of a farm part (image/partial_image.hpp) declaring w x h, and its ZIP offset table
+    of zeros: the sums are not there."""
+    def attr(name, kind, v):
+        return name.encode() + b"\0" + kind.encode() + b"\0" + struct.pack("<i", len(v)) + v
+    names = [b"B", b"G", b"R"] + [f"sum.{c}.{k}".encode() for c in "BGR" for k in range(4)]
+    channels = b"".join(n + b"\0" + struct.pack("<iB3xii", 2 if len(n) == 1 else 0, 0, 1, 1) for n in sorted(names)) + b"\0"
+    box = struct.pack("<iiii", 0, 0, w - 1, h - 1)
+    strings = {"sweeptrace.part": "2", "sweeptrace.fractionBits": "56", "sweeptrace.sceneHash": "0", "sweeptrace.seed": "1",
+               "sweeptrace.maxDepth": "8", "sweeptrace.accel": "bvh", "sweeptrace.integrator": "path",
+               "sweeptrace.adaptive": "off", "sweeptrace.version": "0", "sweeptrace.spp": "4", "sweeptrace.samples": "0:4",
+               "sweeptrace.checksum": "0"}
+    head = (b"\x76\x2f\x31\x01" + struct.pack("<i", 2) + attr("channels", "chlist", channels) +
+            attr("compression", "compression", bytes([3])) + attr("dataWindow", "box2i", box) +
+            attr("displayWindow", "box2i", box) + attr("lineOrder", "lineOrder", b"\0") +
+            attr("pixelAspectRatio", "float", struct.pack("<f", 1.0)) +
+            attr("screenWindowCenter", "v2f", struct.pack("<ff", 0, 0)) +
+            attr("screenWindowWidth", "float", struct.pack("<f", 1.0)) +
+            b"".join(attr(k, "string", v.encode()) for k, v in strings.items()) + b"\0")
+    return head + b"\0" * 8 * ((h + 15) // 16)
+
+
+case("mem-merge-part-8192", 2, E + r"'big\.exr': merging parts of 8192x8192 needs an estimated .* more than the .* of memory available",
+     "merge big.exr -o out.exr", {"big.exr": part_header(8192, 8192)}, AS)
+case("merge-part-65536", 2, E + r"'big\.exr': data window is not 1\.\.16384 pixels a side", "merge big.exr -o out.exr",
+     {"big.exr": part_header(65536, 65536)})
+case("merge-part-directory", 2, E + r"cannot read 'd\.exr': is a directory", "merge d.exr -o out.exr", {"d.exr/keep": ""})
+case("merge-part-fifo", 2, E + r"cannot read 'f\.exr': is a FIFO", "merge f.exr -o out.exr", {}, "fifo f.exr")
 
 
 def main():

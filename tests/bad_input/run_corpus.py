@@ -2,7 +2,8 @@
 """Runs every case of manifest.tsv (written by generate.py) against the sweeptrace binary.
 
 For each case: a fresh copy of cases/<name>/ in a temporary folder, the setup steps (fifo,
-sparse file, symlink, hard link, a large file written here rather than committed; several
+sparse file or a committed header grown to a size, symlink, hard link, a large file written
+here rather than committed; several
 separated by " ; "), then the command, under `ulimit -v` when a step says `address-space MB`. Asserts the exit code; that stderr is one
 line, starting `sweeptrace: error: `, at most 480 bytes, matching the case's pattern (which names
 the file and the place); and that no file in the folder appeared, vanished or changed (so no
@@ -86,6 +87,9 @@ def set_up_step(work, step):
         os.mkfifo(os.path.join(work, rest[0]))
     elif op == "sparse":
         with open(os.path.join(work, rest[0]), "wb") as f:
+            f.truncate(int(rest[1]))
+    elif op == "grow":  # a committed file (an image header) extended by zeros, sparse, to a size
+        with open(os.path.join(work, rest[0]), "r+b") as f:
             f.truncate(int(rest[1]))
     elif op == "symlink":
         os.symlink(rest[1], os.path.join(work, rest[0]))

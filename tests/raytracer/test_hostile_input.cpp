@@ -1,8 +1,10 @@
 // The promises about hostile input that the bad-input corpus (tests/bad_input) cannot show from
 // one command and its exit code: SIGTERM keeps the finished samples like SIGINT; temporary files
 // are removed by a second signal and swept when their writer is dead; OBJ results do not depend
-// on line endings; the command line and the scene file share one range per film setting; and
-// messages stay one bounded line whatever they quote.
+// on line endings; the command line and the scene file share one range per film setting;
+// messages stay one bounded line whatever they quote; a cancel stops a deep bdpt or vcm pass
+// inside its first sample; vcm's radius range renders finite at both ends; reference-check's
+// stdout escapes the names it prints.
 #include <catch2/catch.hpp>
 
 #include <fcntl.h>
@@ -10,15 +12,24 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <atomic>
+#include <cmath>
+#include <cstdint>
+#include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <string>
 #include <vector>
 
+#include "raytracer/accel/accel.hpp"
+#include "cancel_at_ray.hpp"
 #include "raytracer/cli/render_limits.hpp"
 #include "raytracer/image/atomic_file.hpp"
 #include "raytracer/image/image.hpp"
 #include "raytracer/input_error.hpp"
+#include "raytracer/render/renderer.hpp"
 #include "raytracer/scene/film_limits.hpp"
 #include "raytracer/scene/load_scene.hpp"
 #include "raytracer/scene/obj_loader.hpp"
@@ -221,4 +232,114 @@ TEST_CASE("hostile input: a message is one line of bounded length whatever it qu
     CHECK(sweeptrace::reason_or("", "fallback") == "fallback");
     CHECK(sweeptrace::reason_or("Success", "fallback") == "fallback");
     CHECK(sweeptrace::reason_or(nullptr, "fallback") == "fallback");
+}
+
+namespace {
+
+// A closed white box (albedo 1: no path is ever ended by roulette) with a lamp, seen from inside:
+// every bdpt sample walks max_depth vertices each way and joins them all.
+const char* kWhiteBox = R"({
+  "camera": { "position": [0, 0, 0.5], "look_at": [0, 0, -1] },
+  "film": { "width": 2, "height": 2, "spp": 4, "max_depth": 256 },
+  "materials": { "white": { "type": "diffuse", "albedo": [1, 1, 1] },
+                 "lamp": { "type": "diffuse", "albedo": [1, 1, 1], "emission": [1, 1, 1] } },
+  "objects": [ { "type": "box", "center": [0, 0, 0], "size": [4, 4, 4], "material": "white" },
+               { "type": "sphere", "center": [0, 1, -1], "radius": 0.2, "material": "lamp" } ]
+})";
+
+bool same_bits(const sweeptrace::Image& a, const sweeptrace::Image& b) {
+    return a.width == b.width && a.height == b.height &&
+           std::memcmp(a.pixels.data(), b.pixels.data(), a.pixels.size() * sizeof(glm::vec3)) == 0;
+}
+
+// kWhiteBox with `from` replaced by `to`.
+std::string white_box_with(const std::string& from, const std::string& to) {
+    std::string text = kWhiteBox;
+    return text.replace(text.find(from), from.size(), to);
+}
+
+}  // namespace
+
+TEST_CASE("hostile input: a cancel inside a deep bdpt or vcm pass stops within its first sample, the finished passes kept",
+          "[render][cancel]") {
+    const TempDir dir;
+    const sweeptrace::Scene scene = sweeptrace::load_scene(dir.write("box.json", kWhiteBox));
+    const auto accel = sweeptrace::make_accel(sweeptrace::AccelKind::Bvh, scene);
+    for (const auto integrator : {sweeptrace::IntegratorKind::Bdpt, sweeptrace::IntegratorKind::Vcm}) {
+        sweeptrace::RenderOptions o;
+        o.integrator = integrator;
+        o.max_depth = scene.film.max_depth;
+        o.threads = 1;  // the rays are then counted in one fixed order
+        o.seed = 3;
+        std::atomic<bool> never{false};
+        o.spp = 1;
+        const sweeptrace::test::CancelAtRay counter(*accel, never, 0);
+        const sweeptrace::RenderResult one = sweeptrace::render(scene, counter, o);
+        const std::uint64_t pass = counter.rays();  // one pass: 4 samples of ~10^5 rays each
+        // The flag goes up 10 rays into the second pass: its first sample's camera walk.
+        std::atomic<bool> cancel{false};
+        const sweeptrace::test::CancelAtRay cancelling(*accel, cancel, pass + 10);
+        o.spp = 4;
+        o.cancel = &cancel;
+        const sweeptrace::RenderResult r = sweeptrace::render(scene, cancelling, o);
+        INFO("integrator " << sweeptrace::integrator_name(integrator) << ": a pass is " << pass << " rays, "
+                           << cancelling.rays() - (pass + 10) << " traced after the cancel");
+        CHECK(r.stats.cancelled);
+        CHECK(r.stats.completed_spp == 1);
+        CHECK(same_bits(r.image, one.image));  // the finished pass, bit for bit; the cut one dropped
+        // Checked per sample only, the cut sample would run to its end: a quarter of a pass. Inside
+        // its strategy loops it stops after the walks and at most one camera vertex's connections.
+        CHECK(cancelling.rays() - (pass + 10) < pass / 40);
+    }
+}
+
+TEST_CASE("hostile input: vcm renders finite images at both ends of the radius range the loader accepts", "[render][vcm]") {
+    const TempDir dir;
+    const sweeptrace::RadiusRange range = sweeptrace::vcm_radius_range();
+    for (const float radius : {range.lo, range.hi}) {
+        char text[64];
+        std::snprintf(text, sizeof text, "%.9g", double(radius));
+        const sweeptrace::Scene scene = sweeptrace::load_scene(
+            dir.write("box.json", white_box_with("\"max_depth\": 256", std::string("\"max_depth\": 4, \"vcm_radius\": ") + text)));
+        const auto accel = sweeptrace::make_accel(sweeptrace::AccelKind::Bvh, scene);
+        sweeptrace::RenderOptions o;
+        o.integrator = sweeptrace::IntegratorKind::Vcm;
+        o.max_depth = 4;
+        o.threads = 1;
+        o.spp = 1;
+        for (const int iteration : {0, (1 << 20) - 1}) {  // the first radius, and the last the spp limit reaches
+            o.first_sample = iteration;
+            const sweeptrace::RenderResult r = sweeptrace::render(scene, *accel, o);
+            INFO("radius " << text << ", iteration " << iteration);
+            CHECK(r.stats.nonfinite_samples == 0u);
+            for (const glm::vec3& p : r.image.pixels) CHECK((std::isfinite(p.x) && p.x > 0.0f));
+        }
+    }
+    CHECK_THROWS_AS(sweeptrace::load_scene(dir.write("s.json", white_box_with("\"spp\": 4", "\"spp\": 4, \"vcm_radius\": 1e20"))),
+                    sweeptrace::InputError);
+}
+
+TEST_CASE("hostile input: reference-check escapes the scene names it prints", "[cli][reference-check]") {
+    const TempDir dir;
+    // A subfolder whose name would recolour a terminal and forge an error line.
+    const std::string name = "a\x1b[31mb\nsweeptrace: error: forged";
+    dir.write("F/" + name + "/scene-v4.pbrt",
+              "Film \"rgb\" \"integer xresolution\" 8 \"integer yresolution\" 8\nWorldBegin\n"
+              "LightSource \"distant\" \"point3 from\" [0 0 1] \"point3 to\" [0 0 0]\nShape \"sphere\"\n");
+    sweeptrace::Image ref(8, 8);
+    for (glm::vec3& p : ref.pixels) p = glm::vec3(0.5f);
+    sweeptrace::write_image(ref, dir.path() / "F" / name / "TungstenRender.exr");
+    const std::string binary = (fs::path(SWEEPTRACE_BINARY_DIR) / "sweeptrace").string();
+    const std::string cmd = "cd '" + dir.path().string() + "' && '" + binary +
+                            "' reference-check F --spp 2 --downsample 1 > out.txt 2> err.txt";
+    const int status = std::system(cmd.c_str());
+    std::ifstream in(dir.path() / "out.txt");
+    const std::string out{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+    INFO(out);
+    CHECK(WIFEXITED(status));
+    CHECK(WEXITSTATUS(status) <= 1);  // judged (it need not match at 2 spp), not refused
+    CHECK(out.find("mean ratio") != std::string::npos);
+    CHECK(out.find('\x1b') == std::string::npos);
+    CHECK(out.find("\nsweeptrace: error: forged") == std::string::npos);
+    CHECK(out.find("a\\x1b[31mb\\nsweeptrace: error: forged") != std::string::npos);
 }

@@ -134,17 +134,19 @@ TEST_CASE("diff --variance-a/-b: noise-only pairs pass, a defect under the same 
     }
 }
 
-TEST_CASE("diff: an unwritable heatmap never hides the verdict", "[image][diff][cli]") {
+TEST_CASE("diff: a heatmap that is a folder is refused before the comparison; one that can be written is", "[image][diff][cli]") {
     ScratchDir dir("diff-heat");
     Image t = read_image(reference_png);
     for (auto& p : t.pixels) p *= 0.8f;
     const std::string a = (dir / "a.png").string();
     write_image(t, a);
-    // A heatmap path that is a directory: found only when writing, after the verdict.
+    // A heatmap path that is a directory is refused before the comparison (the one output rule,
+    // cli/output_guard.hpp), not found after the verdict; the folder is left alone.
     std::filesystem::create_directories(dir / "heat.png");
     const auto r = run_sweeptrace("diff " + a + " " + reference_png + " --heatmap " + (dir / "heat.png").string(), dir.path());
-    CHECK(r.exit_code == 1);
-    CHECK_THAT(r.output, Contains("OVER tolerance") && Contains("mean FLIP") && Contains("error"));
+    CHECK(r.exit_code == 2);
+    CHECK_THAT(r.output, Contains("--heatmap") && Contains("is a directory") && !Contains("mean FLIP"));
+    CHECK(std::filesystem::is_directory(dir / "heat.png"));
     // The FLIP heatmap, written where it can be.
     const std::string heat = (dir / "flip.png").string();
     CHECK(run_sweeptrace("diff " + a + " " + reference_png + " --heatmap " + heat, dir.path()).exit_code == 1);

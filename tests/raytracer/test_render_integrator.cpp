@@ -10,6 +10,7 @@
 
 #include "raytracer/render/planted_defect.hpp"
 #include "raytracer/render/renderer.hpp"
+#include "cancel_at_ray.hpp"
 #include "render_test_scenes.hpp"
 #include "render_test_stats.hpp"
 
@@ -220,34 +221,6 @@ TEST_CASE("render: the image is identical bit for bit at 1, 2 and 3 threads, wit
     CHECK_FALSE(same_bits(one.image, render(s, accel, o).image));
 }
 
-namespace {
-// Sets the cancel flag once a given number of rays has been traced.
-class CancellingAccel final : public Accel {
-public:
-    CancellingAccel(const Accel& inner, std::atomic<bool>& flag, std::uint64_t after)
-        : inner_(inner), flag_(flag), after_(after) {}
-    bool intersect(const collision::Ray& r, SurfaceHit& h) const override {
-        tick();
-        return inner_.intersect(r, h);
-    }
-    bool occluded(const collision::Ray& r) const override {
-        tick();
-        return inner_.occluded(r);
-    }
-    std::size_t memory_bytes() const override { return 0; }
-    std::string name() const override { return "cancelling"; }
-
-private:
-    void tick() const {
-        if (count_.fetch_add(1) + 1 == after_) flag_.store(true);
-    }
-    const Accel& inner_;
-    std::atomic<bool>& flag_;
-    std::uint64_t after_;
-    mutable std::atomic<std::uint64_t> count_{0};
-};
-}  // namespace
-
 TEST_CASE("render: a cancelled render returns whole passes: the image of spp = completed_spp", "[render][cancel]") {
     const Scene s = test::two_light_scene(20, 20);
     const DoublePrecisionAccel accel(s);
@@ -256,7 +229,7 @@ TEST_CASE("render: a cancelled render returns whole passes: the image of spp = c
     const std::uint64_t rays_per_pass = full.stats.rays / 10;
     for (int threads : {1, 2}) {
         std::atomic<bool> cancel{false};
-        const CancellingAccel cancelling(accel, cancel, rays_per_pass * 5 / 2);  // mid third pass
+        const test::CancelAtRay cancelling(accel, cancel, rays_per_pass * 5 / 2);  // mid third pass
         o.cancel = &cancel;
         o.threads = threads;
         o.spp = 10;

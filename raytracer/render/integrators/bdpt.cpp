@@ -86,7 +86,7 @@ glm::vec3 BdptIntegrator::sample(float x, float y, const glm::vec2& lens, float 
     glm::vec3 l(0.0f);
     if (light_tracing_only_) {
         light_walk(time, sampler, rays, sp);
-        for (int s = 1; s <= static_cast<int>(sp.light.size()) && s <= max_depth_; ++s)
+        for (int s = 1; s <= static_cast<int>(sp.light.size()) && s <= max_depth_ && !cancelled(); ++s)
             light_to_camera(sp, s, time, sampler, rays, splats);
         return l;
     }
@@ -95,7 +95,7 @@ glm::vec3 BdptIntegrator::sample(float x, float y, const glm::vec2& lens, float 
     light_walk(time, sampler, rays, sp);
     l += connections(sp, time, sampler, rays);
     const int nl = static_cast<int>(sp.light.size());
-    for (int s = 1; s <= nl && s <= max_depth_; ++s) light_to_camera(sp, s, time, sampler, rays, splats);
+    for (int s = 1; s <= nl && s <= max_depth_ && !cancelled(); ++s) light_to_camera(sp, s, time, sampler, rays, splats);
     return l;
 }
 
@@ -103,7 +103,7 @@ glm::vec3 BdptIntegrator::sample(float x, float y, const glm::vec2& lens, float 
 glm::vec3 BdptIntegrator::connections(Subpaths& sp, float time, PixelSampler& sampler, std::uint64_t& rays) const {
     glm::vec3 l(0.0f);
     const int nc = static_cast<int>(sp.cam.size()), nl = static_cast<int>(sp.light.size());
-    for (int t = 2; t <= nc; ++t) {
+    for (int t = 2; t <= nc && !cancelled(); ++t) {
         const int j = t - 1;
         l += emitter_hit(sp, j);
         if (!scatters(sp.cam[j].mat(scene_)) || is_delta(sp.cam[j].mat(scene_))) continue;
@@ -119,7 +119,7 @@ void BdptIntegrator::light_subpath(float time, PixelSampler& sampler, std::uint6
     sp.merge_eta = merge_eta;
     light_walk(time, sampler, rays, sp);
     const int nl = static_cast<int>(sp.light.size());
-    for (int s = 1; s <= nl && s <= max_depth_; ++s) light_to_camera(sp, s, time, sampler, rays, splats);
+    for (int s = 1; s <= nl && s <= max_depth_ && !cancelled(); ++s) light_to_camera(sp, s, time, sampler, rays, splats);
     light.assign(sp.light.begin(), sp.light.end());
 }
 

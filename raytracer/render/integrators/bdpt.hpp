@@ -17,6 +17,7 @@
 // CameraModel::direction_pdf; the pixel filter's weights for splats are f(dx) f(dy) / (int f)^2,
 // what a camera sample of that pixel estimates.
 // Not done here: path guiding, film.clamp_indirect (the path tracer's firefly guard).
+#include <atomic>
 #include <cstdint>
 #include <vector>
 
@@ -63,6 +64,11 @@ public:
     glm::vec3 camera_subpath(float x, float y, const glm::vec2& lens, float time, PixelSampler& sampler,
                              std::uint64_t& rays, const std::vector<PathVertex>& light, float merge_eta,
                              std::vector<PathVertex>& cam) const;
+    // The render's cancel flag: once set, a sample's strategy loops stop where they are (at depth
+    // 1024 one sample joins ~10^6 vertex pairs, over a second), and the renderer drops the pass
+    // the cut samples belong to, so no cut sample reaches an image.
+    void set_cancel(const std::atomic<bool>* flag) { cancel_ = flag; }
+    bool cancelled() const { return cancel_ != nullptr && cancel_->load(std::memory_order_relaxed); }
 
 private:
     struct Subpaths;
@@ -89,6 +95,7 @@ private:
     PlantedDefect defect_;
     RoulettePolicy roulette_;
     bool light_tracing_only_;  // Sampling::LightTracing: t = 1 alone, at full weight
+    const std::atomic<bool>* cancel_ = nullptr;
     bool moving_ = false;
     int width_, height_;
     float filter_radius_;

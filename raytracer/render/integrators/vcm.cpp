@@ -12,6 +12,7 @@
 #include "raytracer/render/integrators/bidir_mis.hpp"
 #include "raytracer/render/lights.hpp"
 #include "raytracer/render/sampling.hpp"
+#include "raytracer/scene/film_limits.hpp"
 
 namespace sweeptrace {
 
@@ -60,13 +61,16 @@ float VcmIntegrator::median_pixel_footprint(const Scene& scene, const Accel& acc
 }
 
 float VcmIntegrator::first_radius(const Scene& scene, const Accel& accel, const CameraModel& camera) {
-    if (scene.film.vcm_radius > 0.0f) return scene.film.vcm_radius;
+    if (scene.film.vcm_radius > 0.0f) return scene.film.vcm_radius;  // the loader kept it in vcm_radius_range
+    // The default too stays in the range whose schedule keeps pi r^2 N and the grid's cells finite
+    // and non-zero (scene/film_limits.hpp): a scene at +-1e18 has pixel footprints beyond it.
+    const RadiusRange range = vcm_radius_range();
     const float footprint = median_pixel_footprint(scene, accel, camera);
-    if (footprint > 0.0f) return kDefaultPixelFootprints * footprint;
+    if (footprint > 0.0f) return std::clamp(kDefaultPixelFootprints * footprint, range.lo, range.hi);
     // Nothing seen: photons never meet a camera vertex that matters; any finite radius will do.
     const collision::Bounds3 world = scene_world_bounds(scene);
     const float r = world.empty() ? 1.0f : 0.5f * glm::length(world.hi - world.lo);
-    return 0.003f * (std::isfinite(r) && r > 0.0f ? r : 1.0f);
+    return std::clamp(0.003f * (std::isfinite(r) && r > 0.0f ? r : 1.0f), range.lo, range.hi);
 }
 
 float VcmIntegrator::radius(int iteration) const {
@@ -109,7 +113,7 @@ glm::vec3 VcmIntegrator::sample(std::size_t pixel, float x, float y, const glm::
     thread_local std::vector<PathVertex> cam;
     glm::vec3 l = bdpt_.camera_subpath(x, y, lens, time, sampler, rays, paths_[pixel], eta_, cam);
     if (!(eta_ > 0.0f)) return l;
-    for (int j = 1; j < static_cast<int>(cam.size()) && j < max_depth_; ++j) {
+    for (int j = 1; j < static_cast<int>(cam.size()) && j < max_depth_ && !bdpt_.cancelled(); ++j) {  // cut: pass dropped
         const MaterialParameters& mat = cam[static_cast<std::size_t>(j)].mat(scene_);
         if (scatters(mat) && !is_delta(mat)) l += merge(cam, j);
     }

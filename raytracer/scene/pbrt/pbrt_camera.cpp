@@ -10,6 +10,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
+#include <string>
 
 #include <glm/geometric.hpp>
 #include <glm/matrix.hpp>
@@ -17,6 +19,7 @@
 #include <glm/vector_relational.hpp>
 
 #include "raytracer/input_error.hpp"
+#include "raytracer/scene/film_limits.hpp"
 #include "raytracer/scene/pbrt/pbrt_transform.hpp"
 #include "raytracer/scene/pbrt/pbrt_world.hpp"
 
@@ -189,8 +192,18 @@ void write_camera_and_film(WorldContext& w, std::string& film_filename) {
             // pixel per sample (spp), which changes the noise, not the converged image.
             if (p.has("radius")) {
                 const double radius = p.get_float("radius", 1.0, d);
-                if (radius > 0.0 && std::isfinite(radius)) film["vcm_radius"] = radius;
-                else d.warn(s.where, "sppm radius", what + ": \"radius\" " + std::to_string(radius) + " is not > 0: our default used");
+                const RadiusRange range = vcm_radius_range();
+                const auto format_g = [](double v) {
+                    char t[32];
+                    std::snprintf(t, sizeof t, "%g", v);
+                    return std::string(t);
+                };
+                if (!(radius > 0.0 && std::isfinite(radius)))
+                    d.warn(s.where, "sppm radius", what + ": \"radius\" " + std::to_string(radius) + " is not > 0: our default used");
+                else if (radius < range.lo || radius > range.hi)  // said here, not at the Film it is translated to
+                    d.fail(s.where, what + ": \"float radius\" must be in [" + format_g(range.lo) + ", " + format_g(range.hi) +
+                                        "] (a merging radius whose schedule stays a finite, non-zero float), got " + format_g(radius));
+                else film["vcm_radius"] = radius;
             }
             p.find("photonsperiteration");
             p.find("iterations");
