@@ -5,6 +5,7 @@
 // untouched by them, adaptive sampling's own counts, and bdpt and vcm recording the path tracer's
 // quantity (means within noise on a scene with glass, whose delta bounces each integrator draws
 // with its own numbers).
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <string>
@@ -206,7 +207,7 @@ TEST_CASE("aovs: a sphere seen through a mirror gives its own normals and albedo
             }
         }
         INFO("largest |z| " << worst_z);
-        CHECK(tested > 40);
+        CHECK(tested >= 40);  // the pixels whose every film position sees the sphere in the mirror
     }
 }
 
