@@ -211,7 +211,7 @@ TEST_CASE("aovs: a sphere seen through a mirror gives its own normals and albedo
     }
 }
 
-TEST_CASE("aovs: half buffers add up to the full sums exactly; 1 and 2 threads bit-identical; the image untouched", "[render][aovs]") {
+TEST_CASE("aovs: half buffers add up to the full sums exactly, 1 and 2 threads bit-identical, the image untouched", "[render][aovs]") {
     const Scene scene = test::two_light_scene(24, 18);
     const test::DoublePrecisionAccel accel(scene);
     for (IntegratorKind k : {IntegratorKind::Path, IntegratorKind::Bdpt, IntegratorKind::Vcm}) {
