@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "raytracer/cli/aov_outputs.hpp"
 #include "raytracer/cli/commands.hpp"
 #include "raytracer/cli/memory_budget.hpp"
 #include "raytracer/cli/output_guard.hpp"
@@ -47,6 +48,11 @@ int run_merge(const MergeArgs& a) {
     check_merge_memory(id.width, id.height, id.adaptive != "off", a.parts[order[0]]);
     PartialImage whole;
     whole.id = headers[order[0]].id;
+    if (whole.id.aovs == "on") {  // the feature side files join the output rule
+        std::vector<NamedFile> outputs{{"output", a.output}};
+        add_aov_outputs(outputs, a.output);
+        check_outputs(outputs, inputs);
+    }
     for (std::size_t i : order) {
         const PartialImage part = read_partial(a.parts[i]);
         if (part.id != headers[i].id || part.sample_begin != headers[i].sample_begin ||
@@ -56,7 +62,10 @@ int run_merge(const MergeArgs& a) {
     }
     whole.sample_end = whole.id.spp;
     const Image image = whole.mean();
-    write_image(is_display_format(a.output) ? to_display(image) : image, a.output);
+    const Image written = is_display_format(a.output) ? to_display(image) : image;
+    // Parts rendered with feature outputs: the merged features too, as render writes them.
+    if (whole.id.aovs == "on") write_image_with_aovs(written, feature_layers(whole.features, whole.id.width, whole.id.height), whole.id.spp, a.output);
+    else write_image(written, a.output);
     if (!a.quiet)
         std::fprintf(stderr, "merge: %zu parts, %dx%d, %d spp%s -> %s\n", headers.size(), whole.id.width, whole.id.height,
                      whole.id.spp, whole.id.adaptive == "off" ? "" : " adaptive (mean)", a.output.c_str());

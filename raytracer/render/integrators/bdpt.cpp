@@ -81,9 +81,10 @@ float BdptIntegrator::weight(const MisPath& path, int s, float merge_eta) const 
 }
 
 glm::vec3 BdptIntegrator::sample(float x, float y, const glm::vec2& lens, float time, PixelSampler& sampler,
-                                 std::uint64_t& rays, std::vector<Splat>& splats) const {
+                                 std::uint64_t& rays, std::vector<Splat>& splats, SampleFeatures* features) const {
     thread_local Subpaths sp;
     glm::vec3 l(0.0f);
+    if (features != nullptr) *features = SampleFeatures{};  // light tracing alone: no camera subpath, a miss
     if (light_tracing_only_) {
         light_walk(time, sampler, rays, sp);
         for (int s = 1; s <= static_cast<int>(sp.light.size()) && s <= max_depth_ && !cancelled(); ++s)
@@ -92,6 +93,7 @@ glm::vec3 BdptIntegrator::sample(float x, float y, const glm::vec2& lens, float 
     }
     sp.merge_eta = 0.0f;
     camera_walk(x, y, lens, time, sampler, rays, sp, l);
+    if (features != nullptr) *features = features_of_subpath(scene_, sp.cam, camera_);
     light_walk(time, sampler, rays, sp);
     l += connections(sp, time, sampler, rays);
     const int nl = static_cast<int>(sp.light.size());
@@ -125,11 +127,12 @@ void BdptIntegrator::light_subpath(float time, PixelSampler& sampler, std::uint6
 
 glm::vec3 BdptIntegrator::camera_subpath(float x, float y, const glm::vec2& lens, float time, PixelSampler& sampler,
                                          std::uint64_t& rays, const std::vector<PathVertex>& light, float merge_eta,
-                                         std::vector<PathVertex>& cam) const {
+                                         std::vector<PathVertex>& cam, SampleFeatures* features) const {
     thread_local Subpaths sp;
     sp.merge_eta = merge_eta;
     glm::vec3 l(0.0f);
     camera_walk(x, y, lens, time, sampler, rays, sp, l);
+    if (features != nullptr) *features = features_of_subpath(scene_, sp.cam, camera_);
     sp.light.assign(light.begin(), light.end());
     l += connections(sp, time, sampler, rays);
     std::swap(cam, sp.cam);

@@ -31,6 +31,7 @@
 #include "raytracer/render/lights.hpp"
 #include "raytracer/render/planted_defect.hpp"
 #include "raytracer/render/roulette.hpp"
+#include "raytracer/render/sample_features.hpp"
 #include "raytracer/render/sampler.hpp"
 #include "raytracer/scene/scene.hpp"
 
@@ -51,8 +52,10 @@ public:
     // One camera sample at film position (x, y) with lens sample `lens` and shutter fraction
     // `time`: returns what the strategies with t >= 2 bring to its pixel (the caller applies the
     // filter sample's weight, as for the path tracer) and appends the t = 1 splats to `splats`.
+    // With `features`, the camera subpath's features go there (render --aovs,
+    // sample_features.hpp; zeros under light tracing alone, which has no camera subpath).
     glm::vec3 sample(float x, float y, const glm::vec2& lens, float time, PixelSampler& sampler, std::uint64_t& rays,
-                     std::vector<Splat>& splats) const;
+                     std::vector<Splat>& splats, SampleFeatures* features = nullptr) const;
 
     // The two halves of sample() for vcm.cpp, which traces every light subpath of an iteration
     // before any camera subpath: the light subpath (into `light`) with its t = 1 splats, and the
@@ -63,7 +66,7 @@ public:
                        std::vector<PathVertex>& light, std::vector<Splat>& splats) const;
     glm::vec3 camera_subpath(float x, float y, const glm::vec2& lens, float time, PixelSampler& sampler,
                              std::uint64_t& rays, const std::vector<PathVertex>& light, float merge_eta,
-                             std::vector<PathVertex>& cam) const;
+                             std::vector<PathVertex>& cam, SampleFeatures* features = nullptr) const;
     // The render's cancel flag: once set, a sample's strategy loops stop where they are (at depth
     // 1024 one sample joins ~10^6 vertex pairs, over a second), and the renderer drops the pass
     // the cut samples belong to, so no cut sample reaches an image.

@@ -66,9 +66,10 @@ public:
                      std::vector<Splat>& splats);
     // From one thread, after the light pass: the photons into the grid (which sorts in parallel).
     void build_grid();
-    // The camera pass: pixel's camera sample, every connection and merge (any thread).
+    // The camera pass: pixel's camera sample, every connection and merge (any thread). With
+    // `features`, its camera subpath's (render --aovs, sample_features.hpp).
     glm::vec3 sample(std::size_t pixel, float x, float y, const glm::vec2& lens, float time, PixelSampler& sampler,
-                     std::uint64_t& rays) const;
+                     std::uint64_t& rays, SampleFeatures* features = nullptr) const;
 
 private:
     glm::vec3 merge(const std::vector<PathVertex>& cam, int j) const;
