@@ -59,9 +59,9 @@ Scene study_scene(const Shape& shape, int width) {
     ground.albedo = glm::vec3(0.5f);
     ground.name = "ground";
     s.materials = {object, ground};
-    s.objects.push_back(Object{shape, Transform{}, 0, "object", {}});
+    s.objects.push_back(Object{shape, Transform{}, 0, "object", {}, {}});
     s.objects.push_back(
-        Object{collision::Quad{{-4.0f, -1.0f, 4.0f}, {8.0f, 0.0f, 0.0f}, {0.0f, 0.0f, -8.0f}}, Transform{}, 1, "ground", {}});
+        Object{collision::Quad{{-4.0f, -1.0f, 4.0f}, {8.0f, 0.0f, 0.0f}, {0.0f, 0.0f, -8.0f}}, Transform{}, 1, "ground", {}, {}});
     return s;
 }
 

@@ -12,12 +12,22 @@
 
 namespace sweeptrace {
 
+// The media on the two sides of an object's surface (indices into Scene::media, -1 vacuum), as
+// pbrt-v4's MediumInterface: `inside` is the side opposite the outward geometric normal. When
+// they are equal (the default: neither given) the surface is no boundary and a ray keeps the
+// medium it arrived in (render/media/scene_media.hpp).
+struct MediumInterface {
+    std::int32_t inside = -1, outside = -1;
+    bool transition() const { return inside != outside; }
+};
+
 struct Object {
     Shape shape;
     Transform transform;
     std::uint32_t material = 0;  // index into Scene::materials
     std::string name;            // for messages and statistics
     Motion motion;               // no keys: the object is still (last, so positional Object{...} lists keep their order)
+    MediumInterface media;       // scene keys "inside", "outside" (scene/load_media.hpp)
 };
 
 }  // namespace sweeptrace

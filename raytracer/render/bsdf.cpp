@@ -103,6 +103,7 @@ BsdfEval eval_bsdf(const MaterialParameters& m, const ShadingContext& ctx, const
         case Material::Type::Dielectric:
         case Material::Type::ThinDielectric:
         case Material::Type::Emissive:
+        case Material::Type::Interface:  // no surface for light: the integrator passes through it
             return e;
     }
     return e;
@@ -141,6 +142,7 @@ bool sample_bsdf(const MaterialParameters& m, const ShadingContext& ctx, float u
         case Material::Type::CoatedDiffuse:
             return sample_coated_diffuse(m, ctx, u0, u1, u2, out);
         case Material::Type::Emissive:
+        case Material::Type::Interface:
             return false;
     }
     return false;

@@ -151,13 +151,17 @@ std::string PathForensics::path_text(const PathKey& k) const {
     if (k.length >= PathKey::kMaxVertices) s += " ...";
     for (int i = std::min<int>(k.length, PathKey::kMaxVertices) - 1; i >= 0; --i) {
         const auto kind = (k.vertices >> (2 * i)) & 3u;
-        s += kind == PathTally::Diffuse ? " D" : kind == PathTally::Glossy ? " G" : " S";
+        s += kind == PathTally::Medium  ? " V"
+             : kind == PathTally::Diffuse ? " D"
+             : kind == PathTally::Glossy  ? " G"
+                                          : " S";
     }
     return s + " E";
 }
 
 std::string PathForensics::light_text(std::int32_t light) const {
     if (light == PathKey::kBackground) return "background";
+    if (light == PathKey::kMediumEmission) return "medium emission";
     return light >= 0 && static_cast<std::size_t>(light) < light_names_.size() ? light_names_[static_cast<std::size_t>(light)] : "?";
 }
 

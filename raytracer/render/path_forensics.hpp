@@ -4,7 +4,7 @@
 // tagged with
 //   - its path type in Heckbert's notation from the light to the eye: L, then one letter per
 //     scattering vertex (D diffuse, G glossy: any non-delta lobe that is not Lambertian, S a delta
-//     bounce: mirror, glass), then E; "L E" is an emitter seen directly;
+//     bounce: mirror, glass, V scattering in a medium), then E; "L E" is an emitter seen directly;
 //   - the light it came from (an emissive object, a scene light, the environment, or the plain
 //     background), named as the scene names it;
 //   - the material of the vertex "that made it large": the one with the largest throughput factor
@@ -47,12 +47,13 @@ class LightSet;
 
 // What the path type of one contribution is made of (see the header comment).
 struct PathKey {
-    std::uint64_t vertices = 0;  // 2 bits per vertex from the eye, 1 D, 2 G, 3 S; see kMaxVertices
+    std::uint64_t vertices = 0;  // 2 bits per vertex from the eye, 0 V, 1 D, 2 G, 3 S; see kMaxVertices
     std::uint8_t length = 0;     // scattering vertices, capped at kMaxVertices (then "..." is shown)
-    std::int32_t light = -1;     // LightSet's light index, or kBackground
+    std::int32_t light = -1;     // LightSet's light index, kBackground or kMediumEmission
     std::int32_t material = -1;  // Scene::materials index of the largest-factor vertex, -1: none
     static constexpr int kMaxVertices = 30;
     static constexpr std::int32_t kBackground = -2;
+    static constexpr std::int32_t kMediumEmission = -3;  // light a participating medium emits
     auto operator<=>(const PathKey&) const = default;
 };
 
@@ -65,7 +66,9 @@ struct PathMoments {
 // One sample's path, as the integrator builds it. One per thread; begin() before each sample.
 class PathTally {
 public:
-    enum Kind : std::uint8_t { Diffuse = 1, Glossy = 2, Specular = 3 };
+    // Medium: a scattering event in a participating medium (letter V; no material).
+    enum Kind : std::uint8_t { Medium = 0, Diffuse = 1, Glossy = 2, Specular = 3 };
+    static constexpr std::uint32_t kNoMaterial = 0xffffffffu;  // a vertex with no material (-1 in PathKey)
     static Kind kind_of(const MaterialParameters& m, bool delta_lobe);
 
     void begin() {

@@ -1,5 +1,7 @@
 #include "raytracer/render/renderer.hpp"
 
+#include "raytracer/input_error.hpp"
+
 #include <algorithm>
 #include <chrono>
 #include <condition_variable>
@@ -527,6 +529,12 @@ RenderResult render_with_planted_defect(const Scene& scene, const Accel& accel, 
     if (options.guiding && options.integrator != IntegratorKind::Path)
         throw std::invalid_argument("render: path guiding is the path integrator's");
     if (!(options.time_budget >= 0.0)) throw std::invalid_argument("render: time_budget must be >= 0 seconds");
+    // bdpt and vcm do not yet carry media on their subpaths: refused here, for every caller (the
+    // render command, bench, reference-check), rather than rendered silently wrong.
+    if (options.integrator != IntegratorKind::Path && uses_media(scene))
+        throw InputError(scene.source.filename().string() + ": " + integrator_name(options.integrator) +
+                         " does not render participating media yet (the scene has a medium or an interface surface); "
+                         "render it with --integrator path");
     if (options.adaptive && (options.integrator != IntegratorKind::Path || options.guiding || options.forensics != nullptr))
         throw std::invalid_argument("render: adaptive sampling is the path integrator's, without guiding or forensics");
 

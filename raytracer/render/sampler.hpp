@@ -94,6 +94,11 @@ public:
                 fraction_to_float(scrambled_sobol_dim1(s.index, s.y))};
     }
 
+    // A random stream of this pixel sample's own, apart from the dimensions above (drawing from
+    // it changes none of them), for estimators that take an unbounded count of numbers: delta
+    // and ratio tracking in media (render/media/tracking.hpp). `tag` tells such streams apart.
+    Rng stream(std::uint64_t tag) const { return Rng(key_, tag, sample_); }
+
 private:
     static constexpr int kFirstHashed = sample_dim::bounce(sample_dim::kSobolBounces, 0);
 

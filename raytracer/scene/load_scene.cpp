@@ -23,6 +23,7 @@
 #include "raytracer/scene/load_environment.hpp"
 #include "raytracer/scene/load_filter.hpp"
 #include "raytracer/scene/load_lights.hpp"
+#include "raytracer/scene/load_media.hpp"
 #include "raytracer/scene/load_motion.hpp"
 #include "raytracer/scene/load_portal.hpp"
 #include "raytracer/scene/load_texture.hpp"
@@ -44,7 +45,8 @@ using scene_json::Node;
 using scene_keys::parallel;
 
 Camera read_camera(const Node& node) {
-    node.require_object({"position", "look_at", "up", "fov", "aperture", "focus_distance", "near_clip", "handedness", "shutter"});
+    node.require_object({"position", "look_at", "up", "fov", "aperture", "focus_distance", "near_clip", "handedness", "shutter",
+                         "medium"});
     Camera camera;
     camera.position = node.at("position").vec3();
     camera.look_at = node.at("look_at").vec3();
@@ -228,12 +230,16 @@ Material read_material(const Node& node, const std::string& name, std::vector<Te
         m.type = Material::Type::CoatedDiffuse;
         if (auto ior = node.find("ior")) m.ior = ior->number_at_least(1.0f, true);
         if (auto r = node.find("roughness")) read_roughness(*r);
+    } else if (type == "interface") {
+        node.require_object({"type"});
+        m.type = Material::Type::Interface;
+        m.albedo = glm::vec3(0.0f);
     } else if (type == "emissive") {
         node.require_object({"type", "emission", "two_sided"});
         m.type = Material::Type::Emissive;
         m.albedo = glm::vec3(0.0f);  // a light absorbs what reaches it
     } else {
-        type_node.fail("unknown material type \"" + type + "\" (known: diffuse, metal, conductor, dielectric, thin_dielectric, rough_dielectric, coated_diffuse, emissive)");
+        type_node.fail("unknown material type \"" + type + "\" (known: diffuse, metal, conductor, dielectric, thin_dielectric, rough_dielectric, coated_diffuse, emissive, interface)");
     }
     if (auto albedo = node.find("albedo")) {
         if (albedo->value().is_object()) {
@@ -322,8 +328,8 @@ Transform read_transform(const Node& node) { return read_transform_steps(node, f
 
 class ObjectReader {
 public:
-    ObjectReader(Scene& scene, std::map<std::string, std::uint32_t> materials)
-        : scene_(scene), materials_(std::move(materials)) {}
+    ObjectReader(Scene& scene, std::map<std::string, std::uint32_t> materials, MediumIndex media)
+        : scene_(scene), materials_(std::move(materials)), media_(std::move(media)) {}
 
     void read_all(const Node& objects) {
         const std::size_t n = objects.array_size();
@@ -386,7 +392,7 @@ private:
             using Home = decltype(home);
             if (type_found || type != Home::kType) return;
             type_found = true;
-            std::vector<std::string_view> keys{"type", "material", "transform", "name", "motion"};
+            std::vector<std::string_view> keys{"type", "material", "transform", "name", "motion", "inside", "outside"};
             keys.insert(keys.end(), Home::kKeys.begin(), Home::kKeys.end());
             node.require_object(keys);
             object.shape = Home::read(node, *this);
@@ -420,12 +426,14 @@ private:
         }
         if (auto t = node.find("transform")) object.transform = read_transform_steps(*t, instance != nullptr);
         if (auto m = node.find("motion")) read_motion(*m, node, object, &read_transform);
+        object.media = read_medium_interface(node, media_);
         object.name = node.has("name") ? node.at("name").string() : node.path() + " (" + type + ")";
         return object;
     }
 
     Scene& scene_;
     std::map<std::string, std::uint32_t> materials_;
+    MediumIndex media_;
     std::map<std::string, std::uint32_t> mesh_by_file_;
     std::set<std::uint32_t> meshes_without_materials_;
     ObjMaterials obj_materials_;
@@ -444,16 +452,19 @@ Scene load_scene(const std::filesystem::path& file) {
 
 Scene load_scene_document(const nlohmann::json& doc, const std::filesystem::path& file) {
     const Node root(doc, file);
-    root.require_object({"description", "camera", "film", "background", "seed", "materials", "objects", "lights"});
+    root.require_object({"description", "camera", "film", "background", "seed", "materials", "objects", "lights", "media"});
 
     Scene scene;
     scene.source = file;
     if (auto d = root.find("description")) d->string();
+    // Media first: the camera and the objects name them.
+    const MediumIndex media = root.has("media") ? read_media(root.at("media"), scene, &read_transform) : MediumIndex{};
     scene.camera = read_camera(root.at("camera"));
+    if (auto m = root.at("camera").find("medium")) scene.camera.medium = read_medium_name(*m, media);
     scene.film = read_film(root.at("film"));
     if (auto b = root.find("background")) scene.background = read_background(*b);
     if (auto s = root.find("seed")) scene.seed = s->unsigned_integer();
-    ObjectReader objects(scene, read_materials(root.at("materials"), scene.materials, scene.textures));
+    ObjectReader objects(scene, read_materials(root.at("materials"), scene.materials, scene.textures), media);
     objects.read_all(root.at("objects"));
     check_texture_uv(scene, root.at("objects"));
     if (auto l = root.find("lights")) scene.lights = read_lights(*l);

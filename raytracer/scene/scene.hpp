@@ -14,6 +14,7 @@
 
 #include "raytracer/geometry/object.hpp"
 #include "raytracer/image/image.hpp"
+#include "raytracer/scene/medium.hpp"
 #include "raytracer/scene/scene_light.hpp"
 
 namespace sweeptrace {
@@ -38,6 +39,8 @@ struct Camera {
     // then; unset, nothing moves and no time is drawn.
     bool shutter = false;
     float shutter_open = 0.0f, shutter_close = 0.0f;
+    // The medium the camera sits in (scene key "medium"; index into Scene::media, -1 vacuum).
+    std::int32_t medium = -1;
 };
 
 // Where a camera sample's numbers come from (render/sampler.hpp).
@@ -145,7 +148,10 @@ struct Texture {
 // What a surface does with light: every parameter the BSDF, emission and textures read. A hit's
 // textured copy (render/texture.hpp) is one of these, so the hot paths copy no name.
 struct MaterialParameters {
-    enum class Type { Diffuse, Metal, Dielectric, Emissive, ThinDielectric, RoughDielectric, CoatedDiffuse, Conductor };
+    enum class Type { Diffuse, Metal, Dielectric, Emissive, ThinDielectric, RoughDielectric, CoatedDiffuse, Conductor, Interface };
+    // Interface (pbrt-v4's "interface"): no surface at all for light, only the boundary between
+    // the media on its two sides (Object::media); rays pass through it unchanged. It takes no
+    // other key (no emission).
     // RoughDielectric reads roughness, ior and albedo (the transmission tint) like Metal and
     // Dielectric; CoatedDiffuse reads albedo (the base under the coating), ior and roughness (the
     // coating's; 0 = a smooth coat); Conductor reads eta, k, roughness (as Metal's) and albedo (a
@@ -205,6 +211,7 @@ struct Scene {
     std::vector<Mesh> meshes;
     std::vector<Object> objects;
     std::vector<SceneLight> lights;  // the "lights" key: point, spot, directional
+    std::vector<Medium> media;       // the "media" key (scene/load_media.hpp); objects and the camera name them
     std::uint64_t seed = 0;
     std::filesystem::path source;  // the scene file, for messages
     // The material libraries (.mtl) the meshes named, read for their materials: with the scene
@@ -214,5 +221,16 @@ struct Scene {
     // pbrt Includes. No output may be one of them.
     std::vector<std::filesystem::path> input_files;
 };
+
+// Whether light in `scene` meets anything but vacuum and surfaces: a medium the camera sits in or
+// a surface bounds, or an interface surface. The integrators that do not render media refuse such
+// a scene (render/renderer.cpp).
+inline bool uses_media(const Scene& scene) {
+    if (scene.camera.medium >= 0) return true;
+    for (const Object& o : scene.objects)
+        if (o.media.inside >= 0 || o.media.outside >= 0 || scene.materials[o.material].type == Material::Type::Interface)
+            return true;
+    return false;
+}
 
 }  // namespace sweeptrace

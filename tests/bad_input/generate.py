@@ -546,8 +546,8 @@ pbrt_case("pbrt-fov-180", E + r"scene\.pbrt:1: Camera \"perspective\": \"fov\" m
 pbrt_case("pbrt-binary-file", E + r"scene\.pbrt:1: control byte 1", "Shape\x01\x02")
 pbrt_case("pbrt-strict-unsupported", E + r"scene\.pbrt:3: Shape \"curve\" is not supported \(ignored\) \(--strict makes this an error\)",
           PBRT_OK + 'Shape "curve"\nShape "sphere"\n', args="--strict")
-pbrt_case("pbrt-strict-unsupported-convert", E + r"scene\.pbrt:3: MakeNamedMedium: participating media are not supported",
-          PBRT_OK + 'MakeNamedMedium "fog" "string type" "homogeneous"\n', command="convert", args="--strict")
+pbrt_case("pbrt-strict-unsupported-convert", E + r"scene\.pbrt:3: MakeNamedMedium \"fog\": medium type \"nanovdb\" is not supported",
+          PBRT_OK + 'MakeNamedMedium "fog" "string type" "nanovdb"\n', command="convert", args="--strict")
 case("pbrt-convert-not-pbrt", 2, E + r"convert reads pbrt-v4 scenes \(\.pbrt\), got 'scene\.json'", "convert scene.json -o out.json",
      {"scene.json": scene()})
 case("pbrt-convert-out-not-json", 2, E + r"output 'out\.png': write the scene to a \.json file", "convert scene.pbrt -o out.png",
@@ -806,6 +806,54 @@ case("merge-part-65536", 2, E + r"'big\.exr': data window is not 1\.\.16384 pixe
      {"big.exr": part_header(65536, 65536)})
 case("merge-part-directory", 2, E + r"cannot read 'd\.exr': is a directory", "merge d.exr -o out.exr", {"d.exr/keep": ""})
 case("merge-part-fifo", 2, E + r"cannot read 'f\.exr': is a FIFO", "merge f.exr -o out.exr", {}, "fifo f.exr")
+
+
+# --- participating media (issue 41, scene/load_media.hpp): placed errors, nothing written --------------
+FOG = {"type": "homogeneous", "sigma_a": [0.1, 0.1, 0.1], "sigma_s": [1, 1, 1]}
+
+
+def media_scene(media, **changes):
+    s = json.loads(scene(**changes))
+    s["media"] = media
+    return json.dumps(s)
+
+
+def grid(n, values, **extra):
+    return dict({"type": "grid", "sigma_s": [1, 1, 1], "size": n, "density": values}, **extra)
+
+
+render_case("media-sigma-negative", E + r"scene\.json: media\.fog\.sigma_s\[1\]: must be >= 0, got -1",
+            media_scene({"fog": dict(FOG, sigma_s=[1, -1, 1])}))
+render_case("media-scale-overflow", E + r"scene\.json: media\.fog\.sigma_a: times the medium's scale 1e\+30 is not a finite number",
+            media_scene({"fog": dict(FOG, sigma_a=[1e30, 0, 0], scale=1e30)}))
+render_case("media-g-one", E + r"scene\.json: media\.fog\.g: must be in \(-1, 1\)", media_scene({"fog": dict(FOG, g=1)}))
+render_case("media-g-below", E + r"scene\.json: media\.fog\.g: must be in \(-1, 1\)", media_scene({"fog": dict(FOG, g=-1.5)}))
+render_case("media-unknown-type", E + r"scene\.json: media\.fog\.type: unknown medium type \"vdb\"",
+            media_scene({"fog": dict(FOG, type="vdb")}))
+render_case("media-grid-wrong-size", E + r"scene\.json: media\.smoke\.density: must hold size\[0\] x size\[1\] x size\[2\] = 8 numbers, got 7",
+            media_scene({"smoke": grid([2, 2, 2], [1] * 7)}))
+render_case("media-grid-size-zero", E + r"scene\.json: media\.smoke\.size\[1\]: must be in \[1, 16777216\]",
+            media_scene({"smoke": grid([2, 0, 2], [])}))
+render_case("media-grid-density-negative", E + r"scene\.json: media\.smoke\.density\[3\]: must be >= 0, got -2",
+            media_scene({"smoke": grid([2, 2, 1], [1, 1, 1, -2])}))
+render_case("media-grid-box-empty", E + r"scene\.json: media\.smoke\.p1: must be above p0 on every axis",
+            media_scene({"smoke": grid([1, 1, 1], [1], p0=[0, 0, 0], p1=[1, 0, 1])}))
+render_case("media-grid-budget", E + r"scene\.json: medium \"smoke\"'s density grid needs 1\.2 MB, which would bring the scene's data to .* \(--max-memory\)",
+            media_scene({"smoke": grid([100, 100, 30], [0] * 300000)}), args="--max-memory 1M")
+render_case("media-object-unknown", E + r"scene\.json: objects\[0\]\.inside: unknown medium \"smoke\" \(defined in \"media\": fog\)",
+            media_scene({"fog": FOG}, objects__0__inside="smoke"))
+render_case("media-camera-unknown", E + r"scene\.json: camera\.medium: unknown medium \"fog\" \(defined in \"media\": none\)",
+            media_scene({}, camera__medium="fog"))
+render_case("media-interface-keys", E + r"scene\.json: materials\.m\.albedo: unknown key",
+            media_scene({"fog": FOG}, materials__m={"type": "interface", "albedo": [1, 1, 1]}))
+render_case("media-bdpt-refuses", E + r"scene\.json: bdpt does not render participating media yet",
+            media_scene({"fog": FOG}, objects__0__inside="fog"), args="--integrator bdpt")
+pbrt_case("pbrt-medium-unknown", E + r"scene\.pbrt:4: Shape: its MediumInterface names medium \"smoke\", which no MakeNamedMedium defines",
+          PBRT_OK + 'MediumInterface "smoke" ""\nShape "sphere"\n')
+pbrt_case("pbrt-medium-grid-size", E + r"scene\.pbrt:3: MakeNamedMedium \"smoke\": 3 \"density\" values, but nx x ny x nz = 2 x 2 x 1",
+          PBRT_OK + 'MakeNamedMedium "smoke" "string type" "uniformgrid" "integer nx" 2 "integer ny" 2 "float density" [1 2 3]\n')
+pbrt_case("pbrt-medium-g", E + r"scene\.pbrt:3: MakeNamedMedium \"fog\": \"g\" must be in \(-1, 1\)",
+          PBRT_OK + 'MakeNamedMedium "fog" "string type" "homogeneous" "float g" 1\nMediumInterface "fog" ""\nShape "sphere"\n')
 
 
 def main():

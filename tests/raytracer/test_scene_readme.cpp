@@ -72,6 +72,8 @@ TEST_CASE("scenes README: every JSON example loads", "[scene][docs]") {
             scene = head + materials + R"(, "objects": [], )" + b + "}";
         else if (starts_with(b, "\"lights\""))
             scene = head + materials + R"(, "objects": [], )" + b + "}";
+        else if (starts_with(b, "\"media\""))
+            scene = head + materials + R"(, "objects": [], )" + b + "}";
         else if (starts_with(b, "\"transform\""))
             scene = head + materials + R"(, "objects": [{ "type": "sphere", "radius": 1, "material": "chalk", )" + b + "}]}";
         else

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <optional>
 
 #include <glm/geometric.hpp>
@@ -10,6 +11,8 @@
 #include "raytracer/render/guiding_path_recorder.hpp"
 #include "raytracer/render/guiding_sampler.hpp"
 #include "raytracer/render/background_light.hpp"
+#include "raytracer/render/media/henyey_greenstein.hpp"
+#include "raytracer/render/media/tracking.hpp"
 #include "raytracer/render/radiance_clamp.hpp"
 #include "raytracer/render/sampling.hpp"
 #include "raytracer/render/texture.hpp"
@@ -24,7 +27,8 @@ PathIntegrator::PathIntegrator(const Scene& scene, const Accel& accel, const Lig
       max_depth_(max_depth),
       sampling_(sampling),
       defect_(defect),
-      roulette_(roulette) {
+      roulette_(roulette),
+      media_(scene) {
     for (const Object& o : scene.objects) moving_ = moving_ || (scene.camera.shutter && o.motion.moving());
 }
 
@@ -45,6 +49,23 @@ collision::Ray PathIntegrator::shadow_ray(const SurfaceHit& hit, const LightSamp
     return r;
 }
 
+SurfaceHit PathIntegrator::point_hit(const glm::vec3& p, const glm::vec3& toward) {
+    SurfaceHit h;
+    h.point = p;
+    h.normal = toward;  // point_error is 0: no offset along it
+    h.object = LightSet::kNoObject;
+    return h;
+}
+
+glm::vec3 PathIntegrator::medium_shadow(const SurfaceHit& from, const LightSample& ls, std::int32_t medium, float time,
+                                        Rng& rng, std::uint64_t& rays) const {
+    return media_.shadow_transmittance(accel_, shadow_ray(from, ls), medium, moving_, time, rng, rays,
+                                       [&](const SurfaceHit& h) {
+                                           return ls.at_infinity ? spawn_ray(h, ls.wi)
+                                                                 : spawn_ray_to(h, ls.point, ls.point_error, ls.normal);
+                                       });
+}
+
 glm::vec3 PathIntegrator::radiance(collision::Ray ray, PixelSampler& sampler, std::uint64_t& rays,
                                    std::vector<GuideRecord>* records, float time, PathTally* tally,
                                    FeatureRecord* features) const {
@@ -63,11 +84,70 @@ glm::vec3 PathIntegrator::radiance(collision::Ray ray, PixelSampler& sampler, st
     float prev_pdf = 0.0f;      // BSDF density of that ray (non-delta only)
     glm::vec3 prev_point(0.0f); // where it left
     std::uint32_t prev_object = LightSet::kNoObject;  // and from which object's surface
+    // Media (render/media/): the medium the ray travels in (-1 vacuum), the path's own random
+    // stream for delta and ratio tracking, and spectral MIS's hero channel and ratios
+    // (tracking.hpp). In a scene without media none of them is used.
+    std::int32_t medium = scene_.camera.medium;
+    Rng medium_rng;
+    int hero = 0;
+    glm::vec3 r_u(1.0f);
+    if (media_.active()) {
+        medium_rng = sampler.stream(kMediumStream);
+        hero = std::min(2, static_cast<int>(medium_rng.uniform() * 3.0f));
+    }
     for (int depth = 1;; ++depth) {
         const int bounce = depth - 1;  // sampler dimensions: sample_dim::bounce(bounce, slot)
         SurfaceHit hit;
         ++rays;
-        if (!(moving_ ? accel_.intersect(ray, time, hit) : accel_.intersect(ray, hit))) {
+        const bool found = moving_ ? accel_.intersect(ray, time, hit) : accel_.intersect(ray, hit);
+        if (medium >= 0) {
+            // Free flight to the surface (or without end): a medium vertex takes this depth's
+            // place, with the same sampler slots a surface vertex would use.
+            const FlightResult flight = delta_track(media_.model(medium), ray.origin, ray.dir, ray.tmin,
+                                                    found ? hit.t : std::numeric_limits<float>::infinity(), hero,
+                                                    medium_rng, beta, r_u, true);
+            if (flight.emitted != glm::vec3(0.0f)) result += tally_found(tally, limit.found(flight.emitted, depth), PathKey::kMediumEmission);
+            if (flight.event == Flight::Absorbed) break;
+            if (flight.event == Flight::Scattered) {
+                if (depth >= max_depth_) break;
+                const glm::vec3 p = ray.at(flight.t);
+                const float g = media_.model(medium).g();
+                limit.scatter_at(depth, false);
+                if (nee) {
+                    const glm::vec2 uc = sampler.get2d(sample_dim::bounce(bounce, sample_dim::kLightChoice));
+                    const glm::vec2 u = sampler.get2d(sample_dim::bounce(bounce, sample_dim::kLightPoint));
+                    LightSample ls;
+                    if (lights_.sample(p, LightSet::kNoObject, uc.x, uc.y, u.x, u.y, ls)) {
+                        const float phase = hg_phase(glm::dot(ray.dir, ls.wi), g);
+                        ++rays;
+                        const glm::vec3 tr = medium_shadow(point_hit(p, ls.wi), ls, medium, time, medium_rng, rays);
+                        if (tr != glm::vec3(0.0f)) {
+                            const float w = ls.delta ? 1.0f : power_heuristic(ls.pdf, phase);
+                            const glm::vec3 c = limit.light_sample(beta * tr * ls.radiance * (phase * w / ls.pdf), depth);
+                            result += c;
+                            if (tally) tally->add_light_sample(PathTally::Medium, PathTally::kNoMaterial, phase * w / ls.pdf, c, ls.light);
+                        }
+                    }
+                }
+                // The phase function's sample: its weight p / pdf is 1.
+                const glm::vec2 b = sampler.get2d(sample_dim::bounce(bounce, sample_dim::kBsdfDirection));
+                float pdf = 0.0f;
+                const glm::vec3 wi = hg_sample(ray.dir, g, b.x, b.y, pdf);
+                if (tally) tally->scatter(PathTally::Medium, PathTally::kNoMaterial, 1.0f);
+                full_weight = false;
+                prev_light_guide = nullptr;
+                prev_pdf = pdf;
+                prev_point = p;
+                prev_object = LightSet::kNoObject;
+                if (depth >= roulette_.start_depth &&
+                    !survives_roulette(roulette_, depth, sampler.get1d(sample_dim::bounce(bounce, sample_dim::kRoulette)),
+                                       eta_scale, beta, rr_scale))
+                    break;
+                ray = collision::Ray{p, wi, 0.0f, std::numeric_limits<float>::infinity()};
+                continue;
+            }
+        }
+        if (!found) {
             if (!lights_.background_is_light())
                 result += tally_found(tally, limit.found(beta * background_radiance(scene_.background, ray.dir), depth),
                                       PathKey::kBackground);
@@ -81,6 +161,14 @@ glm::vec3 PathIntegrator::radiance(collision::Ray ray, PixelSampler& sampler, st
             hit.shading_normal = -hit.shading_normal;
         }
         const MaterialParameters& base = scene_.materials[scene_.objects[hit.object].material];
+        if (base.type == MaterialParameters::Type::Interface) {
+            // Not a surface for light: the ray goes on into the medium on the far side, and the
+            // crossing is no path vertex (pbrt-v4's SkipIntersection), so the depth stays.
+            medium = media_.after_crossing(hit.object, hit.normal, ray.dir, medium);
+            ray = spawn_ray(hit, ray.dir);
+            --depth;
+            continue;
+        }
         std::optional<MaterialParameters> textured;  // only for materials that read a texture (render/texture.hpp)
         const MaterialParameters& mat = !reads_texture(base) ? base : textured.emplace(textured_material(scene_, base, hit));
         const glm::vec3 wo = -ray.dir;
@@ -120,10 +208,18 @@ glm::vec3 PathIntegrator::radiance(collision::Ray ray, PixelSampler& sampler, st
                     // The MIS weight only where the light is seen: at a guided vertex it costs a
                     // descent of the guide, and a blocked sample adds (and teaches) zero.
                     const collision::Ray shadow = shadow_ray(hit, ls);
-                    if (!(moving_ ? accel_.occluded(shadow, time) : accel_.occluded(shadow))) {
+                    // With media, a shadow ray passes interfaces and takes the transmittance of
+                    // the media it crosses; in vacuum it is the plain visibility test.
+                    glm::vec3 tr(1.0f);
+                    if (media_.active())
+                        tr = medium_shadow(hit, ls, media_.after_crossing(hit.object, hit.normal, ls.wi, medium), time,
+                                           medium_rng, rays);
+                    else if (moving_ ? accel_.occluded(shadow, time) : accel_.occluded(shadow))
+                        tr = glm::vec3(0.0f);
+                    if (tr != glm::vec3(0.0f)) {
                         const float w =
                             ls.delta ? 1.0f : power_heuristic(ls.pdf, guide ? guided_pdf(*guide, e.pdf, ls.wi) : e.pdf);
-                        const glm::vec3 c = limit.light_sample(beta * e.f_cos * ls.radiance * (w / ls.pdf), depth);
+                        const glm::vec3 c = limit.light_sample(beta * e.f_cos * tr * ls.radiance * (w / ls.pdf), depth);
                         result += c;
                         if (tally)
                             tally->add_light_sample(PathTally::kind_of(mat, false), scene_.objects[hit.object].material,
@@ -168,6 +264,7 @@ glm::vec3 PathIntegrator::radiance(collision::Ray ray, PixelSampler& sampler, st
             !survives_roulette(roulette_, depth, sampler.get1d(sample_dim::bounce(bounce, sample_dim::kRoulette)),
                                eta_scale, beta, rr_scale))
             break;
+        if (media_.active()) medium = media_.after_crossing(hit.object, hit.normal, bs.wi, medium);
         ray = continue_ray(hit, bs.wi);
     }
     if (recorder.on()) recorder.finish(result);

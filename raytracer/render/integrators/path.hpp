@@ -32,6 +32,7 @@
 #include "raytracer/accel/accel.hpp"
 #include "raytracer/render/guiding_sd_tree.hpp"
 #include "raytracer/render/lights.hpp"
+#include "raytracer/render/media/scene_media.hpp"
 #include "raytracer/render/path_forensics.hpp"
 #include "raytracer/render/planted_defect.hpp"
 #include "raytracer/render/roulette.hpp"
@@ -64,6 +65,14 @@ public:
 private:
     collision::Ray continue_ray(const SurfaceHit& hit, const glm::vec3& dir) const;
     collision::Ray shadow_ray(const SurfaceHit& hit, const LightSample& ls) const;
+    // A medium vertex as the start of a shadow ray: a point with no error bound, left unmoved.
+    static SurfaceHit point_hit(const glm::vec3& p, const glm::vec3& toward);
+    // The transmittance from `from` (in `medium` toward the light) to the light sample, through
+    // interfaces and media (render/media/scene_media.hpp); zero when something opaque blocks it.
+    glm::vec3 medium_shadow(const SurfaceHit& from, const LightSample& ls, std::int32_t medium, float time, Rng& rng,
+                            std::uint64_t& rays) const;
+    // The tag of the path's own random stream for the media (PixelSampler::stream).
+    static constexpr std::uint64_t kMediumStream = 1;
 
     const Scene& scene_;
     const Accel& accel_;
@@ -74,6 +83,7 @@ private:
     RoulettePolicy roulette_;
     const GuidingSdTree* guide_ = nullptr;
     bool moving_ = false;  // the camera has a shutter and some object moves: queries take the time
+    SceneMedia media_;
 };
 
 }  // namespace sweeptrace

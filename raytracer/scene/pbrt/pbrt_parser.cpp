@@ -5,6 +5,7 @@
 #include <map>
 #include <memory>
 #include <optional>
+#include <set>
 #include <vector>
 
 #include <glm/matrix.hpp>
@@ -12,6 +13,7 @@
 #include "raytracer/input_error.hpp"
 #include "raytracer/load_budget.hpp"
 #include "raytracer/scene/gzip_file.hpp"
+#include "raytracer/scene/pbrt/pbrt_media.hpp"
 #include "raytracer/scene/pbrt/pbrt_tokenizer.hpp"
 #include "raytracer/scene/pbrt/pbrt_transform.hpp"
 #include "raytracer/scene/scene_transform.hpp"
@@ -26,6 +28,7 @@ struct GraphicsState {
     bool reverse_orientation = false;
     std::string material;  // key of PbrtScene::materials; empty: pbrt's default diffuse 0.5
     std::shared_ptr<const AreaLight> area_light;  // shared by the levels and shapes below it (pbrt_scene.hpp)
+    std::string medium_inside, medium_outside;    // MediumInterface; "" vacuum
 };
 
 constexpr std::size_t kMaxNesting = 4096;  // AttributeBegin and TransformBegin levels
@@ -44,6 +47,7 @@ public:
         if (!attributes_.empty() || !transforms_.empty())
             diag_.warn(last_, "unclosed AttributeBegin", "AttributeBegin without AttributeEnd at the end of the scene (closed there)");
         if (in_object_) diag_.fail(last_, "ObjectBegin \"" + excerpt(object_name_) + "\" is never closed: add ObjectEnd");
+        resolve_media();
         return std::move(scene_);
     }
 
@@ -208,6 +212,8 @@ private:
             require_world(w, d, false);
             scene_.camera = typed_statement(tokens, pos, w, d);
             scene_.camera_from_world = state_.ctm;
+            scene_.camera_medium = state_.medium_outside;
+            camera_where_ = w;
             named_frames_["camera"] = glm::inverse(state_.ctm);
             camera_seen_ = true;
         } else if (d == "Film" || d == "Sampler" || d == "PixelFilter" || d == "Integrator") {
@@ -268,7 +274,7 @@ private:
         } else if (d == "Shape") {
             require_world(w, d, true);
             ShapeRecord r{typed_statement(tokens, pos, w, d), state_.ctm, state_.reverse_orientation, current_material(),
-                          state_.area_light};
+                          state_.area_light, state_.medium_inside, state_.medium_outside};
             add_shape(std::move(r), w);
         } else if (d == "ObjectBegin") {
             require_world(w, d, true);
@@ -297,13 +303,23 @@ private:
                 add_shape(std::move(placed), w);
             }
         } else if (d == "MakeNamedMedium") {
-            string_arg(tokens, pos, w, d);
-            parse_params(tokens, pos, w, diag_);
-            diag_.warn(w, "media", "MakeNamedMedium: participating media are not supported (ignored: surfaces only)");
+            const std::string name = string_arg(tokens, pos, w, d);
+            Statement s;
+            s.where = w;
+            s.params = parse_params(tokens, pos, w, diag_);
+            if (name.empty()) diag_.fail(w, "MakeNamedMedium needs a name (\"\" is vacuum)");
+            if (std::optional<nlohmann::json> m = translate_medium(s, name, state_.ctm, materials_, diag_)) {
+                scene_.media[name] = std::move(*m);
+                unsupported_media_.erase(name);
+            } else {
+                scene_.media.erase(name);
+                unsupported_media_.insert(name);
+            }
         } else if (d == "MediumInterface") {
-            string_arg(tokens, pos, w, d);
-            if (pos < tokens.size() && tokens[pos].kind == Token::Kind::String) ++pos;
-            diag_.warn(w, "media", "MediumInterface: participating media are not supported (ignored: surfaces only)");
+            // pbrt-v4: "inside" "outside", or one name for both sides.
+            state_.medium_inside = string_arg(tokens, pos, w, d);
+            state_.medium_outside = state_.medium_inside;
+            if (pos < tokens.size() && tokens[pos].kind == Token::Kind::String) state_.medium_outside = tokens[pos++].text;
         } else if (d == "Attribute") {
             const std::string target = string_arg(tokens, pos, w, d);
             parse_params(tokens, pos, w, diag_);
@@ -311,6 +327,27 @@ private:
         } else {
             diag_.fail(w, "unknown directive \"" + excerpt(d) + "\" (pbrt-v4 directives: Shape, Material, LightSource, LookAt, ...)");
         }
+    }
+
+    // Once the whole file is read (a medium may be defined after it is named, as in pbrt-v4,
+    // which resolves names when it builds the scene): every shape's and the camera's medium
+    // names made those of supported media, "" for unsupported ones (warned where defined); a
+    // name nothing defines is an error at the statement that used it.
+    void resolve_media() {
+        auto resolve = [&](std::string& name, const Where& where, const char* user) {
+            if (name.empty() || scene_.media.count(name)) return;
+            if (unsupported_media_.count(name)) {
+                name.clear();
+                return;
+            }
+            diag_.fail(where, std::string(user) + ": its MediumInterface names medium \"" + excerpt(name) +
+                                  "\", which no MakeNamedMedium defines");
+        };
+        for (ShapeRecord& r : scene_.shapes) {
+            resolve(r.inside, r.statement.where, "Shape");
+            resolve(r.outside, r.statement.where, "Shape");
+        }
+        resolve(scene_.camera_medium, camera_where_, "Camera");
     }
 
     void define_material(const std::string& name, const Statement& s) {
@@ -351,6 +388,8 @@ private:
     bool in_object_ = false, in_world_ = false, camera_seen_ = false, end_time_only_ = false;
     std::size_t files_read_ = 0, total_bytes_ = 0, shape_count_ = 0;
     Where last_;
+    Where camera_where_;
+    std::set<std::string> unsupported_media_;  // MakeNamedMedium of a type we do not render (warned)
 };
 
 }  // namespace

@@ -42,6 +42,9 @@ struct ShapeRecord {
     // Shared, not copied: every Shape, AttributeBegin level and ObjectInstance under one
     // AreaLightSource holds the same statement, so a large parameter costs once (issue 32).
     std::shared_ptr<const AreaLight> area_light;
+    // Its MediumInterface: media names, "" vacuum (after the parse: names of supported media
+    // only, PbrtScene::media; an unsupported medium's name has become "").
+    std::string inside, outside;
 };
 
 struct LightRecord {
@@ -59,6 +62,10 @@ struct PbrtScene {
     std::map<std::string, Where> material_where;      // the statement that defined it, for messages
     // Materials that make a shape invisible to light (pbrt's "interface"): shapes using one are left out.
     std::map<std::string, bool> invisible;
+    // MakeNamedMedium's media as our JSON (pbrt_media.hpp), by name, and the camera's (the
+    // MediumInterface's outside medium where Camera was given; "" vacuum).
+    std::map<std::string, nlohmann::json> media;
+    std::string camera_medium;
 };
 
 }  // namespace sweeptrace::pbrt

@@ -40,7 +40,13 @@ std::optional<std::string> WorldContext::material_for(const ShapeRecord& s, doub
         diag.fail(s.statement.where, "NamedMaterial \"" + excerpt(s.material) + "\": no material of that name (define it with MakeNamedMaterial)");
     const bool invisible = scene.invisible.at(s.material);
     if (!s.area_light) {
-        if (invisible) return std::nullopt;
+        if (invisible) {
+            // pbrt's "interface": nothing for light, only a boundary between two media; without
+            // one (the same medium on both sides) the shape is left out.
+            if (s.inside == s.outside) return std::nullopt;
+            doc["materials"][s.material] = {{"type", "interface"}};
+            return s.material;
+        }
         doc["materials"][s.material] = it->second;
         return s.material;
     }
@@ -116,8 +122,16 @@ json write_world(const PbrtScene& scene, MaterialTranslator& materials, const Fi
     origins.camera = scene.camera ? origin(*scene.camera, "Camera") : ObjectOrigin{top, "Camera (the default)"};
     origins.film = scene.film ? origin(*scene.film, "Film") : ObjectOrigin{top, "Film (the default)"};
     for (const auto& [name, where] : scene.material_where) origins.materials[name] = {where, "material \"" + excerpt(name) + "\""};
+    if (!scene.media.empty()) w.doc["media"] = scene.media;
+    if (!scene.camera_medium.empty()) w.doc["camera"]["medium"] = scene.camera_medium;
     for (const ShapeRecord& s : scene.shapes) {
+        const std::size_t before = w.doc["objects"].size();
         write_shape(w, s);
+        if (s.inside != s.outside)  // a boundary between media (scene/load_media.hpp)
+            for (std::size_t i = before; i < w.doc["objects"].size(); ++i) {
+                if (!s.inside.empty()) w.doc["objects"][i]["inside"] = s.inside;
+                if (!s.outside.empty()) w.doc["objects"][i]["outside"] = s.outside;
+            }
         if (const std::size_t n = w.doc["objects"].size(); n > origins.objects.size()) origins.objects.resize(n, origin(s.statement, "Shape"));
     }
     const auto has = [&](const char* key) { return w.doc.contains(key) && !w.doc[key].is_null(); };

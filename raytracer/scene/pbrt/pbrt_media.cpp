@@ -1,0 +1,86 @@
+#include "raytracer/scene/pbrt/pbrt_media.hpp"
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "raytracer/load_budget.hpp"
+#include "raytracer/scene/pbrt/pbrt_world.hpp"
+
+namespace sweeptrace::pbrt {
+
+using nlohmann::json;
+
+std::optional<json> translate_medium(const Statement& s, const std::string& name, const glm::dmat4& ctm,
+                                     MaterialTranslator& materials, Diagnostics& diag) {
+    const ParamList& p = s.params;
+    const std::string type = p.get_string("type", "", diag);
+    const std::string what = "MakeNamedMedium \"" + excerpt(name) + "\"";
+    if (type != "homogeneous" && type != "uniformgrid") {
+        for (const Param& q : p.params) q.used = true;
+        diag.warn(s.where, "medium " + type,
+                  what + ": medium type \"" + excerpt(type) + "\" is not supported (known: homogeneous, uniformgrid); "
+                  "where it is named there is vacuum");
+        return std::nullopt;
+    }
+    json m;
+    m["type"] = type == "homogeneous" ? "homogeneous" : "grid";
+    // pbrt-v4's defaults (HomogeneousMedium::Create and GridMedium::Create alike).
+    const auto coefficient = [&](const char* key, const glm::dvec3& fallback) {
+        json c = materials.colour(p, key, fallback, false, what);
+        if (!c.is_array()) {
+            diag.warn(s.where, "medium texture", what + ": a texture for \"" + key + "\" is not supported (pbrt-v4's default used)");
+            c = rgb_json(fallback);
+        }
+        m[key] = c;
+    };
+    if (p.has("preset")) {
+        diag.warn(s.where, "medium preset", what + ": \"preset\" \"" + excerpt(p.get_string("preset", "", diag)) +
+                                                "\" (measured media) is not supported (sigma_a and sigma_s as given, or pbrt-v4's defaults)");
+    }
+    coefficient("sigma_a", glm::dvec3(0.0011, 0.0024, 0.014));
+    coefficient("sigma_s", glm::dvec3(2.55, 3.21, 3.77));
+    // Checked here, at the statement's line, rather than by the JSON loader at a key of the
+    // converted document the user never wrote.
+    for (const char* key : {"sigma_a", "sigma_s"})
+        for (const json& c : m[key])
+            if (!(c.get<double>() >= 0.0)) diag.fail(s.where, what + ": \"" + key + "\" must be >= 0 in every channel");
+    const double scale = p.get_float("scale", 1.0, diag), g = p.get_float("g", 0.0, diag);
+    if (!(scale >= 0.0)) diag.fail(s.where, what + ": \"scale\" must be >= 0");
+    if (!(std::abs(g) < 1.0)) diag.fail(s.where, what + ": \"g\" must be in (-1, 1) (Henyey-Greenstein's asymmetry)");
+    m["scale"] = scale;
+    m["g"] = g;
+    if (type == "homogeneous") {
+        if (p.has("Le")) {
+            const glm::dvec3 le = materials.emitted(p, "Le", what) * p.get_float("Lescale", 1.0, diag);
+            m["emission"] = {le.r, le.g, le.b};
+        }
+        p.warn_unused(what, diag);
+        return m;
+    }
+    if (p.has("Le") || p.has("temperature")) {
+        for (const char* key : {"Le", "Lescale", "temperature", "temperaturescale", "temperatureoffset"})
+            if (p.has(key)) p.find(key);
+        diag.warn(s.where, "grid medium emission", what + ": a grid's emission (\"Le\", \"temperature\") is not imported (it does not emit)");
+    }
+    const std::vector<double> density = p.get_floats("density", diag);
+    if (density.empty()) diag.fail(s.where, what + ": a \"uniformgrid\" needs \"float density\" values");
+    charge_load_memory(density.size() * sizeof(json), s.where.text(), what + "'s density grid");
+    const long long nx = p.get_int("nx", 1, diag), ny = p.get_int("ny", 1, diag), nz = p.get_int("nz", 1, diag);
+    if (nx < 1 || ny < 1 || nz < 1 || static_cast<double>(nx) * static_cast<double>(ny) * static_cast<double>(nz) != static_cast<double>(density.size()))
+        diag.fail(s.where, what + ": " + std::to_string(density.size()) + " \"density\" values, but nx x ny x nz = " +
+                               std::to_string(nx) + " x " + std::to_string(ny) + " x " + std::to_string(nz));
+    m["size"] = {nx, ny, nz};
+    m["density"] = density;
+    if (const auto p0 = p.get_point3("p0", diag)) m["p0"] = {p0->x, p0->y, p0->z};
+    if (const auto p1 = p.get_point3("p1", diag)) m["p1"] = {p1->x, p1->y, p1->z};
+    if (ctm != glm::dmat4(1.0)) {
+        const std::optional<json> steps = transform_json(ctm);
+        if (!steps) diag.fail(s.where, what + ": its transformation mirrors or is singular (a grid's transform must be a rotation, scale and translation)");
+        m["transform"] = *steps;
+    }
+    p.warn_unused(what, diag);
+    return m;
+}
+
+}  // namespace sweeptrace::pbrt
