@@ -32,18 +32,18 @@
 namespace sweeptrace {
 
 // Whether a camera path's features are taken at a vertex of material `m`.
-bool records_features(const Material& m);
+bool records_features(const MaterialParameters& m);
 
 // The features at `hit` of material `m` (textured, as the integrator shades it), reached by a
 // ray arriving from direction `wo` (unit, pointing away from the surface).
-SampleFeatures features_at(const Material& m, const SurfaceHit& hit, const glm::vec3& wo, const CameraModel& camera);
+SampleFeatures features_at(const MaterialParameters& m, const SurfaceHit& hit, const glm::vec3& wo, const CameraModel& camera);
 
 // One camera path's features, as the integrator meets its vertices in order: the first vertex
 // that records_features fills them, later ones change nothing; none, a miss (zeros).
 class FeatureRecord {
 public:
     explicit FeatureRecord(const CameraModel& camera) : camera_(camera) {}
-    void at_vertex(const Material& m, const SurfaceHit& hit, const glm::vec3& wo) {
+    void at_vertex(const MaterialParameters& m, const SurfaceHit& hit, const glm::vec3& wo) {
         if (done_ || !records_features(m)) return;
         features_ = features_at(m, hit, wo, camera_);
         done_ = true;
