@@ -21,9 +21,10 @@ float pixel_distance(float up, float uq, float vp, float vq, float k2) {
     const float diff = up - uq;
     const float num = diff * diff - (vp + std::min(vp, vq));
     const float den = k2 * (vp + vq);
-    // No noise at either pixel: equal values are the same value, different ones are not.
-    if (!(den > 0.0f)) return num > 0.0f ? kDistanceCap : 0.0f;
-    return std::min(num / den, kDistanceCap);
+    // No noise at either pixel: equal values are the same value, different ones are not. (The
+    // quotient is computed either way and then chosen, so the loop has no branch to vectorize.)
+    const float q = num / den;
+    return den > 0.0f ? std::min(q, kDistanceCap) : num > 0.0f ? kDistanceCap : 0.0f;
 }
 
 Rect intersect(const Rect& a, const Rect& b) {
@@ -45,6 +46,10 @@ Rect patch_distances(const Planes& guide, const Planes& variance, const NlMeansP
     const int pw = pad.width(), ph = pad.height(), ow = out.width();
     scratch.pixel.resize(std::size_t(pw) * std::size_t(ph));
     scratch.row.resize(std::size_t(ow) * std::size_t(ph));
+    scratch.column.resize(std::size_t(ow));
+    scratch.patch_columns.resize(std::size_t(ow));
+    for (int x = out.x0; x < out.x1; ++x)
+        scratch.patch_columns[std::size_t(x - out.x0)] = double(std::min(x + f + 1, pad.x1) - std::max(x - f, pad.x0));
     const float k2 = params.k * params.k, s = params.variance_scale;
     for (int c = 0; c < guide.channels; ++c) {
         const float* u = guide.channel(c);
@@ -69,18 +74,22 @@ Rect patch_distances(const Planes& guide, const Planes& variance, const NlMeansP
                 r[x - out.x0] = float(sum);
             }
         }
+        // Down columns, all columns at once (row by row, so the additions vectorize).
         float* o = dist.data() + std::size_t(c) * tile_pixels;
-        for (int x = out.x0; x < out.x1; ++x) {
-            const int nx = std::min(x + f + 1, pad.x1) - std::max(x - f, pad.x0);
-            const float* r = scratch.row.data() + std::size_t(x - out.x0);
-            double sum = 0.0;
-            int a = std::max(out.y0 - f, pad.y0), b = a;  // the window [a, b) in image rows
-            for (int y = out.y0; y < out.y1; ++y) {
-                for (; b < std::min(y + f + 1, pad.y1); ++b) sum += r[std::size_t(b - pad.y0) * std::size_t(ow)];
-                for (; a < y - f; ++a) sum -= r[std::size_t(a - pad.y0) * std::size_t(ow)];
-                // the patch's mean distance
-                o[std::size_t(y - tile.y0) * std::size_t(tile.width()) + std::size_t(x - tile.x0)] = float(sum / double((b - a) * nx));
+        std::fill(scratch.column.begin(), scratch.column.end(), 0.0);
+        int a = std::max(out.y0 - f, pad.y0), b = a;  // the window [a, b) in image rows
+        for (int y = out.y0; y < out.y1; ++y) {
+            for (; b < std::min(y + f + 1, pad.y1); ++b) {
+                const float* r = scratch.row.data() + std::size_t(b - pad.y0) * std::size_t(ow);
+                for (int i = 0; i < ow; ++i) scratch.column[std::size_t(i)] += r[i];
             }
+            for (; a < y - f; ++a) {
+                const float* r = scratch.row.data() + std::size_t(a - pad.y0) * std::size_t(ow);
+                for (int i = 0; i < ow; ++i) scratch.column[std::size_t(i)] -= r[i];
+            }
+            // the patch's mean distance
+            float* line = o + std::size_t(y - tile.y0) * std::size_t(tile.width()) + std::size_t(out.x0 - tile.x0);
+            for (int i = 0; i < ow; ++i) line[i] = float(scratch.column[std::size_t(i)] / (double(b - a) * scratch.patch_columns[std::size_t(i)]));
         }
     }
     return out;
