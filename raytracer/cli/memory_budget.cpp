@@ -1,7 +1,10 @@
 #include "raytracer/cli/memory_budget.hpp"
 
+#include <algorithm>
+
 #include <glm/vec3.hpp>
 
+#include "raytracer/image/feature_sums.hpp"
 #include "raytracer/image/partial_sum.hpp"
 #include "raytracer/input_error.hpp"
 #include "raytracer/render/integrators/path_vertex.hpp"
@@ -21,6 +24,15 @@ constexpr std::uint64_t kVcmBytesPerLightVertex = sizeof(PathVertex) + 20 + 16;
 // weight (double), the pass in flight's sums and sums of squares, and once more those for a farm
 // part whose range starts inside the pilot (its own pilot passes beside the whole pilot's).
 constexpr std::uint64_t kAdaptiveBytesPerPixel = sizeof(int) + sizeof(double) + 2 * (sizeof(PixelSum) + sizeof(glm::dvec3));
+// Feature outputs (film.aovs, render --aovs; image/feature_sums.hpp): per pixel the renderer's
+// exact sums by half and the pass in flight's features, then either the output's images (15
+// colour-sized layers and the depth variance) or, for a farm part, the sums' copy and their
+// words; the larger of those two counted. Adaptive sampling adds its copies of the sums (the
+// pass in flight's, and a part's own pilot passes), as for the colour.
+constexpr std::uint64_t kAovBytesPerPixel =
+    sizeof(FeatureSums) + sizeof(SampleFeatures) +
+    std::max<std::uint64_t>(15 * sizeof(glm::vec3) + sizeof(float), sizeof(FeatureSums) + kFeatureWords * sizeof(std::uint32_t));
+constexpr std::uint64_t kAovAdaptiveBytesPerPixel = 2 * sizeof(FeatureSums);
 // Per primitive of the acceleration structure (a triangle, or an analytic object at the top
 // level): BVH nodes (~2 per primitive at 32 bytes), the primitive's index and precomputed test
 // data, and the builder's temporary boxes and centroids. Rounded up: Embree's is of that order.
@@ -37,6 +49,7 @@ MemoryEstimate estimate_render_memory(const Scene& scene, bool adaptive) {
     if (scene.film.integrator == IntegratorKind::Vcm)
         e.film += pixels * std::uint64_t(scene.film.max_depth) * kVcmBytesPerLightVertex;
     if (adaptive) e.film += pixels * kAdaptiveBytesPerPixel;
+    if (scene.film.aovs) e.film += pixels * (kAovBytesPerPixel + (adaptive ? kAovAdaptiveBytesPerPixel : 0));
     std::uint64_t primitives = scene.objects.size(), vertices = 0;
     for (const Mesh& m : scene.meshes) {
         primitives += m.triangles.indices.size();

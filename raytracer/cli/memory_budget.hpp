@@ -7,7 +7,8 @@
 // The estimate counts the big allocations, each per element with its size in memory_budget.cpp:
 // the film (the renderer's double-precision sums, the pass buffer, the mean and variance images,
 // the display copy and the encoded file; under vcm also every pixel's light subpath, under
-// adaptive sampling its per-pixel counts, weights and pass sums) and the
+// adaptive sampling its per-pixel counts, weights and pass sums, with feature outputs (film.aovs)
+// their exact sums and images) and the
 // scene's acceleration structure over every
 // object and triangle. It is an estimate of the peak, not a bound: small per-object data and
 // allocator overhead are not counted. The scene's meshes are already loaded when it is made

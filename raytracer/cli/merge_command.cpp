@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "raytracer/cli/aov_outputs.hpp"
 #include "raytracer/cli/commands.hpp"
 #include "raytracer/image/image.hpp"
 #include "raytracer/image/partial_image.hpp"
@@ -39,6 +40,11 @@ int run_merge(const MergeArgs& a) {
     const std::vector<std::size_t> order = check_partials(headers, a.parts);
     PartialImage whole;
     whole.id = headers[order[0]].id;
+    if (whole.id.aovs == "on") {
+        std::vector<NamedInput> inputs;
+        for (const std::string& p : a.parts) inputs.push_back({"part", p});
+        check_aov_outputs(a.output, inputs, {a.output});
+    }
     for (std::size_t i : order) {
         const PartialImage part = read_partial(a.parts[i]);
         if (part.id != headers[i].id || part.sample_begin != headers[i].sample_begin ||
@@ -48,7 +54,10 @@ int run_merge(const MergeArgs& a) {
     }
     whole.sample_end = whole.id.spp;
     const Image image = whole.mean();
-    write_image(is_display_format(a.output) ? to_display(image) : image, a.output);
+    const Image written = is_display_format(a.output) ? to_display(image) : image;
+    // Parts rendered with feature outputs: the merged features too, as render writes them.
+    if (whole.id.aovs == "on") write_image_with_aovs(written, feature_layers(whole.features, whole.id.width, whole.id.height), whole.id.spp, a.output);
+    else write_image(written, a.output);
     if (!a.quiet)
         std::fprintf(stderr, "merge: %zu parts, %dx%d, %d spp%s -> %s\n", headers.size(), whole.id.width, whole.id.height,
                      whole.id.spp, whole.id.adaptive == "off" ? "" : " adaptive (mean)", a.output.c_str());

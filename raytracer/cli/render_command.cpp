@@ -19,6 +19,7 @@
 #include <tbb/info.h>
 
 #include "raytracer/accel/accel.hpp"
+#include "raytracer/cli/aov_outputs.hpp"
 #include "raytracer/cli/commands.hpp"
 #include "raytracer/cli/render_identity.hpp"
 #include "raytracer/cli/render_part.hpp"
@@ -60,6 +61,7 @@ struct RenderArgs {
     std::string samples;  // "A:B": render a farm part
     bool skip_existing = false;
     bool strict = false;  // a .pbrt scene: anything approximated or ignored is an error
+    bool aovs = false;    // feature outputs (cli/aov_outputs.hpp); also the scene's film.aovs
     CLI::Option* time_opt = nullptr;
 };
 
@@ -191,6 +193,7 @@ int run_render(const RenderArgs& a) {
     Scene scene = pbrt ? std::move(*pbrt_scene) : load_scene(scene_path);
     for (const std::string& w : emitters_facing_nothing(scene)) std::fprintf(stderr, "sweeptrace: warning: %s\n", escape_control(w).c_str());
     a.limits.apply(scene);
+    if (a.aovs) scene.film.aovs = true;
     if (!a.sampler.empty()) scene.film.sampler = a.sampler == "independent" ? SamplerKind::Independent : SamplerKind::Sobol;
     if (!a.integrator.empty())
         scene.film.integrator = a.integrator == "vcm"    ? IntegratorKind::Vcm
@@ -205,6 +208,9 @@ int run_render(const RenderArgs& a) {
         refuse_output_over_input(a.forensics, inputs);
         refuse_output_over_input(forensics_picture(a.forensics), inputs);
     }
+    if (scene.film.aovs && a.samples.empty())  // a farm part keeps its feature sums in itself
+        check_aov_outputs(out, inputs,
+                          {out, a.variance, a.forensics, a.forensics.empty() ? std::filesystem::path() : forensics_picture(a.forensics)});
     check_render_memory(scene, a.limits.memory_limit(), a.adaptive != "off");
 
     // A farm part: which samples, and the render they belong to; a re-run task skips a finished one.
@@ -237,6 +243,7 @@ int run_render(const RenderArgs& a) {
             "--forensics needs the path integrator: it follows a camera path's vertices, and the light paths of bdpt and vcm have none of them");
     opt.guiding = opt.integrator == IntegratorKind::Path && (a.guiding.empty() ? scene.film.guiding : a.guiding == "on");
     opt.adaptive = a.adaptive != "off";
+    opt.aovs = scene.film.aovs;
     opt.adaptive_error = a.adaptive == "relative" ? AdaptiveError::Relative : AdaptiveError::Mse;
     if (opt.adaptive) {
         // A farm part (--samples) needs nothing more: its samples follow from the pilot, which it
@@ -290,7 +297,11 @@ int run_render(const RenderArgs& a) {
         return InterruptGuard::exit_code();
     }
     if (!a.samples.empty()) write_part(result, identity, range.begin, out);
-    else write_image(is_display_format(out) ? to_display(result.image, scene.film.exposure, scene.film.tone_curve) : result.image, out);
+    else {
+        const Image image = is_display_format(out) ? to_display(result.image, scene.film.exposure, scene.film.tone_curve) : result.image;
+        if (opt.aovs) write_image_with_aovs(image, feature_layers(result.features, scene.film.width, scene.film.height), st.completed_spp, out);
+        else write_image(image, out);
+    }
     if (!a.variance.empty()) write_image(result.variance, a.variance);
     if (forensics) {
         const std::string text = forensics->json(st.completed_spp);
@@ -381,6 +392,11 @@ void add_render_command(CLI::App& app, int& exit_code) {
         ->check(CLI::IsMember({"on", "relative", "off"}))
         ->capture_default_str();
     cmd->add_flag("--quiet", args->quiet, "No progress display and no summary");
+    cmd->add_flag("--aovs", args->aovs,
+                  "Feature outputs for a denoiser (also the scene's film.aovs): albedo, shading normal and depth at "
+                  "the first non-specular vertex, their variances and the even/odd half buffers. With -o OUT.exr all "
+                  "in that one EXR (pbrt-v4 gbuffer channel names: Albedo.R, Ns.X, P.Z, ...); with .png/.pfm beside it "
+                  "OUT.albedo.pfm, OUT.normal.pfm, OUT.depth.pfm (docs/aovs.md)");
     cmd->add_flag("--strict", args->strict,
                   "A .pbrt scene: refuse (exit 2) anything the translation would approximate or ignore, instead of a warning");
     cmd->add_option("--samples", args->samples,

@@ -51,6 +51,7 @@ RenderIdentity render_identity(const Scene& scene, const std::filesystem::path& 
     id.accel = accel;
     id.integrator = integrator_name(scene.film.integrator);
     id.adaptive = adaptive;
+    id.aovs = scene.film.aovs ? "on" : "off";
     id.version = program_version();
     id.spp = scene.film.spp;
     return id;

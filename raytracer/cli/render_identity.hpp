@@ -1,7 +1,8 @@
 #pragma once
 // What identifies a render for the farm (image/partial_image.hpp): the scene's content hash,
 // the film size, seed, depth, integrator and spp after the command line's overrides, the accelerator,
-// the adaptive sampling mode and the program version.
+// the adaptive sampling mode, whether feature outputs are on (film.aovs after render --aovs) and the
+// program version.
 #include <filesystem>
 #include <string>
 

@@ -48,6 +48,7 @@ void write_part(const RenderResult& result, const RenderIdentity& id, int first_
     if (id.adaptive != "off")
         part.counts = !result.pixel_samples.empty() ? result.pixel_samples
                                                     : std::vector<int>(result.sums.size(), result.stats.completed_spp);
+    if (id.aovs == "on") part.features = result.features;
     write_partial(part, path);
 }
 

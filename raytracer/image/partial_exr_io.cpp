@@ -19,7 +19,7 @@
 namespace sweeptrace {
 namespace {
 
-constexpr const char* kFormatVersion = "2";  // 2: sweeptrace.adaptive and the count channel
+constexpr const char* kFormatVersion = "3";  // 2: sweeptrace.adaptive and the count channel; 3: sweeptrace.aovs and aov.*
 constexpr int kWords = 4;                    // 32-bit words per 128-bit sum
 constexpr int kSumChannels = 3 * kWords;     // sum.R.0 .. sum.B.3
 const char* const kColor[3] = {"R", "G", "B"};
@@ -36,6 +36,7 @@ std::map<std::string, std::string> attributes_of(const PartialImage& p) {
             {"sweeptrace.accel", p.id.accel},
             {"sweeptrace.integrator", p.id.integrator},
             {"sweeptrace.adaptive", p.id.adaptive},
+            {"sweeptrace.aovs", p.id.aovs},
             {"sweeptrace.version", p.id.version},
             {"sweeptrace.spp", std::to_string(p.id.spp)},
             {"sweeptrace.samples", std::to_string(p.sample_begin) + ":" + std::to_string(p.sample_end)},
@@ -52,7 +53,8 @@ struct Fnv {
     void add(const std::string& s) { add(s.data(), s.size() + 1); }  // with the NUL, so fields do not run together
 };
 
-std::string checksum_of(const PartialImage& p, const std::vector<std::uint32_t>& words, const std::vector<std::uint32_t>& counts) {
+std::string checksum_of(const PartialImage& p, const std::vector<std::uint32_t>& words, const std::vector<std::uint32_t>& counts,
+                        const std::vector<std::uint32_t>& features) {
     Fnv f;
     for (const auto& [key, value] : attributes_of(p)) {
         f.add(key);
@@ -60,6 +62,7 @@ std::string checksum_of(const PartialImage& p, const std::vector<std::uint32_t>&
     }
     f.add(words.data(), words.size() * sizeof(std::uint32_t));
     f.add(counts.data(), counts.size() * sizeof(std::uint32_t));
+    f.add(features.data(), features.size() * sizeof(std::uint32_t));
     char buf[17];
     std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(f.h));
     return buf;
@@ -86,6 +89,13 @@ std::vector<PixelSum> sums_of(const std::vector<std::uint32_t>& w) {
     return sums;
 }
 
+// A part's feature sums as stored: kFeatureWords per pixel (none without feature outputs).
+std::vector<std::uint32_t> feature_words_of(const PartialImage& part) {
+    std::vector<std::uint32_t> w(part.features.size() * kFeatureWords);
+    for (std::size_t i = 0; i < part.features.size(); ++i) feature_to_words(part.features[i], w.data() + i * kFeatureWords);
+    return w;
+}
+
 // An adaptive part's counts as stored (a uniform part: none).
 std::vector<std::uint32_t> counts_of(const PartialImage& part) {
     if (part.id.adaptive == "off") return {};
@@ -95,12 +105,12 @@ std::vector<std::uint32_t> counts_of(const PartialImage& part) {
 }
 
 void write_exr_part(const PartialImage& part, const std::vector<std::uint32_t>& words, const std::vector<std::uint32_t>& counts,
-                    const std::filesystem::path& path) {
+                    const std::vector<std::uint32_t>& features, const std::filesystem::path& path) {
     const int w = part.id.width, h = part.id.height;
     Imf::Header header(w, h);
     header.compression() = Imf::ZIP_COMPRESSION;
     for (const auto& [key, value] : attributes_of(part)) header.insert(key, Imf::StringAttribute(value));
-    header.insert("sweeptrace.checksum", Imf::StringAttribute(checksum_of(part, words, counts)));
+    header.insert("sweeptrace.checksum", Imf::StringAttribute(checksum_of(part, words, counts, features)));
     const Image preview = part.mean();
     Imf::FrameBuffer frame;
     auto* rgb = const_cast<char*>(reinterpret_cast<const char*>(preview.pixels.data()));
@@ -120,6 +130,15 @@ void write_exr_part(const PartialImage& part, const std::vector<std::uint32_t>& 
         header.channels().insert(kCountChannel, Imf::Channel(Imf::UINT));
         frame.insert(kCountChannel, Imf::Slice(Imf::UINT, const_cast<char*>(reinterpret_cast<const char*>(counts.data())),
                                                sizeof(std::uint32_t), sizeof(std::uint32_t) * w));
+    }
+    if (!features.empty()) {
+        const std::vector<std::string>& names = feature_word_names();
+        auto* fb = const_cast<char*>(reinterpret_cast<const char*>(features.data()));
+        const std::size_t fs = kFeatureWords * sizeof(std::uint32_t);
+        for (int k = 0; k < kFeatureWords; ++k) {
+            header.channels().insert(names[static_cast<std::size_t>(k)], Imf::Channel(Imf::UINT));
+            frame.insert(names[static_cast<std::size_t>(k)], Imf::Slice(Imf::UINT, fb + k * sizeof(std::uint32_t), fs, fs * w));
+        }
     }
     Imf::OutputFile file(path.c_str(), header);
     file.setFrameBuffer(frame);
@@ -164,6 +183,9 @@ PartialImage header_part(const Imf::Header& hd, const std::string& file) {
     p.id.adaptive = attribute(hd, "sweeptrace.adaptive", file);
     if (p.id.adaptive != "off" && p.id.adaptive != "on" && p.id.adaptive != "relative")
         throw InputError("'" + file + "': sweeptrace.adaptive is '" + p.id.adaptive + "', not off, on or relative");
+    p.id.aovs = attribute(hd, "sweeptrace.aovs", file);
+    if (p.id.aovs != "off" && p.id.aovs != "on")
+        throw InputError("'" + file + "': sweeptrace.aovs is '" + p.id.aovs + "', not off or on");
     p.id.version = attribute(hd, "sweeptrace.version", file);
     p.id.spp = static_cast<int>(number(attribute(hd, "sweeptrace.spp", file), "sweeptrace.spp", file));
     const std::string range = attribute(hd, "sweeptrace.samples", file);
@@ -185,11 +207,14 @@ void write_partial(const PartialImage& part, const std::filesystem::path& path) 
                          std::to_string(part.id.height) + " holds " + std::to_string(part.sums.size()) + " sums");
     if (part.id.adaptive != "off" && part.counts.size() != part.sums.size())
         throw InputError("cannot write '" + path.string() + "': an adaptive part needs a count per pixel");
+    if ((part.id.aovs == "on" ? part.sums.size() : 0) != part.features.size())
+        throw InputError("cannot write '" + path.string() + "': a part with feature outputs needs their sums per pixel, and only it");
     const std::vector<std::uint32_t> words = words_of(part.sums);
     const std::vector<std::uint32_t> counts = counts_of(part);
+    const std::vector<std::uint32_t> features = feature_words_of(part);
     write_atomically(path, [&](const std::filesystem::path& temp) {
         try {
-            write_exr_part(part, words, counts, temp);
+            write_exr_part(part, words, counts, features, temp);
         } catch (const std::exception& e) {
             throw InputError("cannot write '" + path.string() + "': " + e.what());
         }
@@ -235,15 +260,36 @@ PartialImage read_partial(const std::filesystem::path& path) {
             frame.insert(kCountChannel, Imf::Slice(Imf::UINT, reinterpret_cast<char*>(counts.data()), sizeof(std::uint32_t),
                                                    sizeof(std::uint32_t) * w));
         }
+        std::vector<std::uint32_t> features;
+        if (p.id.aovs == "on") {
+            const std::vector<std::string>& names = feature_word_names();
+            features.resize(static_cast<std::size_t>(w) * p.id.height * kFeatureWords);
+            const std::size_t fs = kFeatureWords * sizeof(std::uint32_t);
+            for (int k = 0; k < kFeatureWords; ++k) {
+                const std::string& name = names[static_cast<std::size_t>(k)];
+                if (!in.header().channels().findChannel(name))
+                    throw InputError("'" + file + "': a part with feature outputs without its " + name + " channel");
+                frame.insert(name, Imf::Slice(Imf::UINT, reinterpret_cast<char*>(features.data()) + k * sizeof(std::uint32_t), fs, fs * w));
+            }
+        }
         in.setFrameBuffer(frame);
         in.readPixels(0, p.id.height - 1);
-        if (checksum_of(p, words, counts) != attribute(in.header(), "sweeptrace.checksum", file))
+        if (checksum_of(p, words, counts, features) != attribute(in.header(), "sweeptrace.checksum", file))
             throw InputError("'" + file + "': checksum does not match its contents (damaged or edited part)");
         p.sums = sums_of(words);
         for (const std::uint32_t c : counts) {
             if (c > static_cast<std::uint32_t>(std::numeric_limits<int>::max()))
                 throw InputError("'" + file + "': a pixel's count " + std::to_string(c) + " does not fit in an int");
             p.counts.push_back(static_cast<int>(c));
+        }
+        p.features.resize(features.size() / kFeatureWords);
+        for (std::size_t i = 0; i < p.features.size(); ++i) {
+            p.features[i] = feature_from_words(features.data() + i * kFeatureWords);
+            // The halves' counts must be the pixel's: a checksum-valid part is one this program
+            // wrote, but a mismatch would make the feature means lie, so it is refused, not trusted.
+            const FeatureSums& f = p.features[i];
+            if (f.count[0] < 0 || f.count[1] < 0 || std::int64_t{f.count[0]} + f.count[1] != p.count(i))
+                throw InputError("'" + file + "': pixel " + std::to_string(i) + "'s feature sample counts do not add up to its count");
         }
         return p;
     } catch (const InputError&) {

@@ -8,22 +8,29 @@
 // R, G, B (FLOAT) hold the part's own mean (a preview), and whose twelve UINT channels
 // `sum.R.0` .. `sum.B.3` hold each channel's 128-bit two's-complement fixed-point sum
 // (partial_sum.hpp) as four 32-bit words, least significant first; an adaptive part also has a
-// UINT channel `count`, each pixel's number of samples. String attributes:
-//   sweeptrace.part         format version, "2" (format 1, before adaptive parts, is refused:
-//                           its parts came from an older program, which merge refuses anyway)
+// UINT channel `count`, each pixel's number of samples; a part of a render with feature outputs
+// (render --aovs) also has the kFeatureWords UINT channels `aov.*` of each pixel's FeatureSums
+// (image/feature_sums.hpp: the colour and features of its even and odd samples, and the exact
+// sums of squares). String attributes:
+//   sweeptrace.part         format version, "3" (formats 1 and 2, before adaptive parts and
+//                           feature outputs, are refused: their parts came from an older
+//                           program, which merge refuses anyway)
 //   sweeptrace.sceneHash    hash of the scene file and the mesh files it loads
 //   sweeptrace.seed, sweeptrace.maxDepth, sweeptrace.accel, sweeptrace.version (the program's)
 //   sweeptrace.adaptive     "off", "on" or "relative": render --adaptive
+//   sweeptrace.aovs         "off" or "on": render --aovs (or the scene's film.aovs)
 //   sweeptrace.spp          samples per pixel of the whole render the part belongs to
 //   sweeptrace.samples      "A:B", the part's half-open range of sample indices
 //   sweeptrace.fractionBits "56", the fixed point's scale
-//   sweeptrace.checksum     FNV-1a 64 of the sums, the counts and the attributes above, in hex
+//   sweeptrace.checksum     FNV-1a 64 of the sums, the counts, the feature sums and the
+//                           attributes above, in hex
 // The resolution is the data window. A part that reads and whose checksum matches "verifies".
 #include <cstdint>
 #include <filesystem>
 #include <string>
 #include <vector>
 
+#include "raytracer/image/feature_sums.hpp"
 #include "raytracer/image/image.hpp"
 #include "raytracer/image/partial_sum.hpp"
 
@@ -38,6 +45,7 @@ struct RenderIdentity {
     std::string accel;
     std::string integrator;  // film.integrator after --integrator ("path", "bdpt", "vcm")
     std::string adaptive = "off";  // render --adaptive: "off", "on" or "relative"
+    std::string aovs = "off";      // feature outputs (render --aovs): "off" or "on"
     std::string version;
     int spp = 0;  // the whole render's samples per pixel: the parts cover [0, spp)
 
@@ -54,6 +62,8 @@ struct PartialImage {
     // Adaptive (id.adaptive != "off"): each pixel's own count of samples, row-major; empty for a
     // uniform part, whose pixels all hold end - begin. A pixel may hold none in a short range.
     std::vector<int> counts;
+    // With feature outputs (id.aovs "on"): each pixel's exact feature sums, row-major; else empty.
+    std::vector<FeatureSums> features;
 
     int count(std::size_t pixel) const { return counts.empty() ? sample_end - sample_begin : counts[pixel]; }
     Image mean() const;  // mean_of each sum over its pixel's count (black for none)
@@ -77,7 +87,7 @@ PartialImage read_partial_header(const std::filesystem::path& path);
 // (naming the range). `names[i]` is the file `parts[i]` was read from.
 std::vector<std::size_t> check_partials(const std::vector<PartialImage>& parts, const std::vector<std::string>& names);
 
-// check_partials, then the sums (and an adaptive render's counts) added in that order: the whole
+// check_partials, then the sums (and an adaptive render's counts, and feature sums) added in that order: the whole
 // render as one part. Throws InputError should a pixel's total count not fit in an int.
 PartialImage merge_partials(const std::vector<PartialImage>& parts, const std::vector<std::string>& names);
 

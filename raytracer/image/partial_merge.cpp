@@ -53,7 +53,7 @@ std::string identity_difference(const RenderIdentity& a, const RenderIdentity& b
          {differs("scene hash", a.scene_hash, b.scene_hash), differs("width", a.width, b.width),
           differs("height", a.height, b.height), differs("seed", a.seed, b.seed),
           differs("max depth", a.max_depth, b.max_depth), differs("accel", a.accel, b.accel),
-          differs("integrator", a.integrator, b.integrator), differs("adaptive sampling", a.adaptive, b.adaptive),
+          differs("integrator", a.integrator, b.integrator), differs("adaptive sampling", a.adaptive, b.adaptive), differs("feature outputs (--aovs)", a.aovs, b.aovs),
           differs("program version", a.version, b.version), differs("spp", a.spp, b.spp)})
         if (!d.empty()) return d;
     return {};
@@ -82,6 +82,11 @@ std::vector<std::size_t> check_partials(const std::vector<PartialImage>& parts, 
 void add_part(PartialImage& whole, const PartialImage& part, const std::string& name) {
     if (whole.sums.empty()) whole.sums.assign(part.sums.size(), PixelSum{});
     for (std::size_t px = 0; px < whole.sums.size(); ++px) whole.sums[px] += part.sums[px];
+    if (whole.id.aovs == "on") {
+        if (whole.features.empty()) whole.features.assign(part.features.size(), FeatureSums{});
+        for (std::size_t px = 0; px < whole.features.size() && px < part.features.size(); ++px)
+            whole.features[px] += part.features[px];
+    }
     if (whole.id.adaptive == "off") return;
     if (whole.counts.empty()) whole.counts.assign(whole.sums.size(), 0);
     for (std::size_t px = 0; px < whole.counts.size(); ++px) {

@@ -49,6 +49,11 @@ collision::Ray CameraModel::generate(float x, float y, float u1, float u2) const
     return ray;
 }
 
+glm::vec3 CameraModel::camera_space(const glm::vec3& p) const {
+    const glm::vec3 d = p - origin_;
+    return {glm::dot(d, right_), glm::dot(d, up_), glm::dot(d, forward_)};
+}
+
 glm::vec3 CameraModel::lens_point(float u1, float u2) const {
     if (lens_radius_ <= 0.0f) return origin_;
     const glm::vec2 lens = lens_radius_ * concentric_disk(u1, u2);

@@ -38,6 +38,9 @@ public:
     glm::vec3 lens_point(float u1, float u2) const;
     float lens_area() const;  // pi r^2; 1 for the pinhole, whose point is a delta
     const glm::vec3& forward() const { return forward_; }
+    // World point p in the camera's frame (pbrt's camera space, the P feature of render --aovs):
+    // x along the image's right, y up, z along the view axis from the eye (the depth).
+    glm::vec3 camera_space(const glm::vec3& p) const;
     // Where on the film (pixels, as generate() takes them) the ray from lens point `lens` through
     // `p` lands; false when p is not seen from there: behind the near clip plane, or farther
     // than `margin` pixels outside the film (a wide pixel filter reaches that far).

@@ -31,6 +31,7 @@
 #include "raytracer/render/lights.hpp"
 #include "raytracer/render/path_forensics.hpp"
 #include "raytracer/render/planted_defect.hpp"
+#include "raytracer/render/sample_features.hpp"
 #include "raytracer/render/sampler.hpp"
 
 namespace sweeptrace {
@@ -68,6 +69,10 @@ public:
             guide_.set_paths_per_pass(sum_.size());
         }
         if (opt.forensics != nullptr) opt.forensics->start(width_, height_, kTileSize, lights_);
+        if (opt.aovs) {
+            feature_sums_.resize(sum_.size());
+            pass_features_.resize(sum_.size());
+        }
     }
 
     void run() {
@@ -112,7 +117,7 @@ public:
             }
             if (!tile_splats_.empty()) add_splats();
             if (opt_.guiding && guide_.training()) learn(s + 1);
-            accumulate_pass(!kept_sum_.empty() && sample >= keep_from);
+            accumulate_pass(sample, !kept_sum_.empty() && sample >= keep_from);
             if (opt_.forensics != nullptr) opt_.forensics->end_pass();
             done = s + 1;
             completed_spp_.store(std::max(0, sample + 1 - keep_from), std::memory_order_release);
@@ -142,6 +147,7 @@ public:
         if (a > 0 && a < kAdaptivePilotSpp) {
             kept_sum_.assign(sum_.size(), PixelSum{});
             kept_sq_.assign(sum_.size(), glm::dvec3(0.0));
+            if (opt_.aovs) kept_features_.assign(sum_.size(), FeatureSums{});
         }
         const bool pilot_done = run_passes(0, kAdaptivePilotSpp, a) == kAdaptivePilotSpp;
         if (pilot_done)
@@ -150,17 +156,21 @@ public:
             if (kept_sum_.empty()) {
                 std::fill(sum_.begin(), sum_.end(), PixelSum{});
                 std::fill(sum_sq_.begin(), sum_sq_.end(), glm::dvec3(0.0));
+                std::fill(feature_sums_.begin(), feature_sums_.end(), FeatureSums{});
             } else {
                 sum_.swap(kept_sum_);
                 sum_sq_.swap(kept_sq_);
+                feature_sums_.swap(kept_features_);
                 kept_sum_ = {};
                 kept_sq_ = {};
+                kept_features_ = {};
             }
         }
         if (!pilot_done) return;  // a uniform image of the pilot passes finished
         counts_.assign(sum_.size(), std::max(0, kAdaptivePilotSpp - a));
         round_sum_.resize(sum_.size());
         round_sq_.resize(sum_.size());
+        round_features_.resize(feature_sums_.size());
         const std::int64_t t_end = b - kAdaptivePilotSpp;
         for (std::int64_t t = std::max(a, kAdaptivePilotSpp) - kAdaptivePilotSpp; t < t_end;) {
             const std::int64_t next = std::min(t_end, (t / kAdaptiveRoundSpp + 1) * kAdaptiveRoundSpp);
@@ -183,6 +193,7 @@ public:
                 if (more == 0) continue;
                 sum_[i] = round_sum_[i];
                 sum_sq_[i] = round_sq_[i];
+                if (!feature_sums_.empty()) feature_sums_[i] = round_features_[i];
                 counts_[i] += more;
             }
             t = next;
@@ -238,6 +249,7 @@ public:
         res.stats.budget_spent = spp < opt_.spp && !res.stats.cancelled;
         res.sums = std::move(sum_);
         res.pixel_samples = std::move(counts_);
+        res.features = std::move(feature_sums_);
         return res;
     }
 
@@ -245,7 +257,8 @@ private:
     // Adds the finished pass to the sums. Fixed point (partial_sum.hpp), so the sum of any split
     // into sample ranges is the same integer, and so the same image.
     // `kept`: also to kept_sum_ (an adaptive part's own passes of the pilot, run_adaptive).
-    void accumulate_pass(bool kept) {
+    // With AOVs, the pass's colours and features to the half of its sample index too.
+    void accumulate_pass(int sample, bool kept) {
         tbb::parallel_for(tbb::blocked_range<std::size_t>(0, sum_.size(), 4096),
                           [&](const tbb::blocked_range<std::size_t>& r) {
                               std::uint64_t clamped = 0;
@@ -258,6 +271,11 @@ private:
                                   if (kept) {
                                       add_sample(kept_sum_[i], pass_[i], c);
                                       kept_sq_[i] += v * v;
+                                  }
+                                  if (!feature_sums_.empty()) {
+                                      bool fc = false;  // the colour's clamp is counted above
+                                      add_feature_sample(feature_sums_[i], sample, pass_[i], pass_features_[i], fc);
+                                      if (kept) add_feature_sample(kept_features_[i], sample, pass_[i], pass_features_[i], fc);
                                   }
                               }
                               if (clamped != 0) clamped_.fetch_add(clamped, std::memory_order_relaxed);
@@ -341,7 +359,8 @@ private:
             for (int x = x0; x < x1; ++x) {
                 const std::size_t pixel = static_cast<std::size_t>(y) * width_ + x;
                 if (tally != nullptr) tally->begin();
-                const glm::vec3 l = sample_pixel(x, y, sample, rays, nonfinite, records, splats, tally);
+                SampleFeatures* features = pass_features_.empty() ? nullptr : &pass_features_[pixel];
+                const glm::vec3 l = sample_pixel(x, y, sample, rays, nonfinite, records, splats, tally, features);
                 if (tally != nullptr) opt_.forensics->finish_sample(tile, pixel, *tally, l);
                 pass_[pixel] = l;
             }
@@ -351,9 +370,10 @@ private:
     }
 
     // One camera sample of pixel (x, y): its value after the pixel filter's weight and the film's
-    // clamp, a non-finite one counted and made black.
+    // clamp, a non-finite one counted and made black. With `features`, its features go there.
     glm::vec3 sample_pixel(int x, int y, int sample, std::uint64_t& rays, std::uint64_t& nonfinite,
-                           std::vector<GuideRecord>* records, std::vector<Splat>* splats, PathTally* tally) {
+                           std::vector<GuideRecord>* records, std::vector<Splat>* splats, PathTally* tally,
+                           SampleFeatures* features) {
         const std::size_t pixel = static_cast<std::size_t>(y) * width_ + x;
         PixelSampler sampler(opt_.sampler, opt_.seed, pixel, static_cast<std::uint64_t>(sample));
         const glm::vec2 u_film = sampler.get2d(sample_dim::kFilm);
@@ -362,10 +382,13 @@ private:
         const float fx = static_cast<float>(x) + film.dx;
         const float fy = static_cast<float>(y) + film.dy;
         const float time = sample_time(sampler);
-        glm::vec3 l = film.weight * limited(vcm_                 ? vcm_->sample(pixel, fx, fy, lens, time, sampler, rays)
-                                            : splats != nullptr ? bdpt_.sample(fx, fy, lens, time, sampler, rays, *splats)
+        FeatureRecord record(camera_);
+        glm::vec3 l = film.weight * limited(vcm_                 ? vcm_->sample(pixel, fx, fy, lens, time, sampler, rays, features)
+                                            : splats != nullptr ? bdpt_.sample(fx, fy, lens, time, sampler, rays, *splats, features)
                                                                 : integrator_.radiance(camera_.generate(fx, fy, lens.x, lens.y),
-                                                                                       sampler, rays, records, time, tally));
+                                                                                       sampler, rays, records, time, tally,
+                                                                                       features != nullptr ? &record : nullptr));
+        if (features != nullptr && !vcm_ && splats == nullptr) *features = record.features();
         if (!collision::finite(l)) {
             l = glm::vec3(0.0f);
             ++nonfinite;
@@ -385,9 +408,14 @@ private:
             if (hi == lo) continue;
             PixelSum sum = sum_[pixel];
             glm::dvec3 sq = sum_sq_[pixel];
+            const bool aovs = !feature_sums_.empty();
+            FeatureSums fs = aovs ? feature_sums_[pixel] : FeatureSums{};
+            SampleFeatures f;
             for (std::int64_t k = lo; k < hi; ++k) {
-                const glm::vec3 l = sample_pixel(x, y, static_cast<int>(kAdaptivePilotSpp + k), rays, nonfinite, nullptr, nullptr, nullptr);
+                const glm::vec3 l = sample_pixel(x, y, static_cast<int>(kAdaptivePilotSpp + k), rays, nonfinite, nullptr,
+                                                 nullptr, nullptr, aovs ? &f : nullptr);
                 bool c = false;
+                if (aovs) add_feature_sample(fs, kAdaptivePilotSpp + k, l, f, c);
                 add_sample(sum, l, c);
                 clamped += c ? 1 : 0;
                 const glm::dvec3 v(l);
@@ -395,6 +423,7 @@ private:
             }
             round_sum_[pixel] = sum;
             round_sq_[pixel] = sq;
+            if (aovs) round_features_[pixel] = fs;
             samples += hi - lo;
         }
         rays_.fetch_add(rays, std::memory_order_relaxed);
@@ -432,6 +461,12 @@ private:
     std::vector<glm::dvec3> round_sq_;
     std::vector<PixelSum> kept_sum_;       // adaptive part starting inside the pilot: its own pilot passes
     std::vector<glm::dvec3> kept_sq_;
+    // AOVs (opt.aovs; else empty): per pixel, the exact colour and feature sums by half, the
+    // pass in flight's features, and the adaptive copies as for the colour above.
+    std::vector<FeatureSums> feature_sums_;
+    std::vector<SampleFeatures> pass_features_;
+    std::vector<FeatureSums> round_features_;
+    std::vector<FeatureSums> kept_features_;
     std::atomic<int> completed_spp_{0};
     std::atomic<std::int64_t> tiles_done_{0}, samples_done_{0};
     std::atomic<std::uint64_t> rays_{0}, nonfinite_{0}, clamped_{0};

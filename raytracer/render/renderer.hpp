@@ -7,6 +7,7 @@
 
 #include "raytracer/accel/accel.hpp"
 #include "raytracer/render/adaptive_sampling.hpp"
+#include "raytracer/image/feature_sums.hpp"
 #include "raytracer/image/image.hpp"
 #include "raytracer/render/roulette.hpp"
 #include "raytracer/image/partial_sum.hpp"
@@ -60,6 +61,10 @@ struct RenderOptions {
     // part renders the whole pilot for its weights). spp <= the pilot: the uniform render exactly.
     bool adaptive = false;
     AdaptiveError adaptive_error = AdaptiveError::Mse;  // where the samples after the pilot go (adaptive_sampling.hpp)
+    // Feature outputs (render --aovs): every sample's albedo, normal and position at its first
+    // non-specular camera vertex (sample_features.hpp) summed per pixel and half (RenderResult::
+    // features); the image is the same bit for bit.
+    bool aovs = false;
     const std::atomic<bool>* cancel = nullptr;  // set (e.g. by SIGINT) to stop early
     // Seconds (0 = none) after which the pass in flight is dropped and the render ends; the first
     // pass always completes. Counted on budget_clock from the start of render().
@@ -97,6 +102,9 @@ struct RenderResult {
     // Adaptive only: each pixel's sample count n_p (its mean is sums[i] / n_p, its variance is
     // from its own n_p samples). Empty for a uniform render (every pixel has completed_spp).
     std::vector<int> pixel_samples;
+    // With RenderOptions::aovs: per pixel, the colour and features of its samples in exact sums,
+    // even and odd samples apart (image/feature_sums.hpp); a farm part stores them. Empty without.
+    std::vector<FeatureSums> features;
     RenderStats stats;
 };
 

@@ -78,7 +78,7 @@ int read_film_setting(const Node& node, FilmSetting setting) {
 
 Film read_film(const Node& node) {
     node.require_object({"width", "height", "spp", "max_depth", "sampler", "guiding", "exposure", "tone_curve", "filter",
-                         "clamp_indirect", "clamp_sample", "integrator", "vcm_radius"});
+                         "clamp_indirect", "clamp_sample", "integrator", "vcm_radius", "aovs"});
     Film film;
     film.width = read_film_setting(node.at("width"), FilmSetting::Width);
     film.height = read_film_setting(node.at("height"), FilmSetting::Height);
@@ -91,6 +91,7 @@ Film read_film(const Node& node) {
         else sampler->fail("unknown sampler \"" + name + "\" (known: sobol, independent)");
     }
     if (auto guiding = node.find("guiding")) film.guiding = guiding->boolean();
+    if (auto aovs = node.find("aovs")) film.aovs = aovs->boolean();
     if (auto integrator = node.find("integrator")) {
         const std::string name = integrator->string();
         if (name == "path") film.integrator = IntegratorKind::Path;

@@ -72,6 +72,9 @@ struct Film {
     SamplerKind sampler = SamplerKind::Sobol;
     bool guiding = false;  // path guiding by default (render --guiding overrides)
     IntegratorKind integrator = IntegratorKind::Path;  // scene key "integrator" (render --integrator overrides)
+    // Feature outputs beside the image (scene key "aovs", as render --aovs): albedo, normal, depth
+    // and the half buffers a denoiser reads (image/feature_exr.hpp).
+    bool aovs = false;
     // vcm's merging radius of the first iteration, world units (scene key "vcm_radius"); 0 = the
     // default, a fraction of the scene's extent (render/integrators/vcm.hpp says which and why).
     float vcm_radius = 0.0f;

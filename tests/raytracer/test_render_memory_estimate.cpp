@@ -1,11 +1,12 @@
 // The render's memory estimate (cli/memory_budget.hpp) counts what each integrator and sampling
-// mode keeps per pixel: a vcm light subpath per pixel, adaptive sampling's counts and round sums,
+// mode keeps per pixel: a vcm light subpath per pixel, adaptive sampling's counts and round sums, the feature outputs' exact sums,
 // so --max-memory refuses before the allocation rather than after it.
 #include <catch2/catch.hpp>
 
 #include <cstdint>
 
 #include "raytracer/cli/memory_budget.hpp"
+#include "raytracer/image/feature_sums.hpp"
 #include "raytracer/input_error.hpp"
 #include "raytracer/render/integrators/path_vertex.hpp"
 
@@ -40,4 +41,18 @@ TEST_CASE("render memory estimate: vcm's light subpaths and adaptive sampling's 
     const std::uint64_t limit = base.total() + (adaptive.total() - base.total()) / 2;
     CHECK_NOTHROW(check_render_memory(path, limit));
     CHECK_THROWS_AS(check_render_memory(path, limit, true), InputError);
+}
+
+TEST_CASE("render memory estimate: feature outputs' exact sums are counted, more under adaptive sampling", "[cli][memory][aovs]") {
+    const Scene plain = memory_estimate_scene(IntegratorKind::Path);
+    Scene aovs = plain;
+    aovs.film.aovs = true;
+    const std::uint64_t pixels = 64 * 32;
+    const MemoryEstimate base = estimate_render_memory(plain);
+    // At least the renderer's sums (the colour and three features by half, squares) per pixel.
+    CHECK(estimate_render_memory(aovs).film >= base.film + pixels * sizeof(FeatureSums));
+    CHECK(estimate_render_memory(aovs, true).film >= estimate_render_memory(plain, true).film + 3 * pixels * sizeof(FeatureSums));
+    const std::uint64_t limit = base.total() + (estimate_render_memory(aovs).total() - base.total()) / 2;
+    CHECK_NOTHROW(check_render_memory(plain, limit));
+    CHECK_THROWS_AS(check_render_memory(aovs, limit), InputError);
 }

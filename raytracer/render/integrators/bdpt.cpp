@@ -92,7 +92,7 @@ float BdptIntegrator::weight(const MisPath& path, int s) const {
 }
 
 glm::vec3 BdptIntegrator::sample(float x, float y, const glm::vec2& lens, float time, PixelSampler& sampler,
-                                 std::uint64_t& rays, std::vector<Splat>& splats) const {
+                                 std::uint64_t& rays, std::vector<Splat>& splats, SampleFeatures* features) const {
     thread_local Subpaths sp;
     glm::vec3 l(0.0f);
     if (light_tracing_only_) {
@@ -102,6 +102,7 @@ glm::vec3 BdptIntegrator::sample(float x, float y, const glm::vec2& lens, float 
         return l;
     }
     camera_walk(x, y, lens, time, sampler, rays, sp, l);
+    if (features != nullptr) *features = features_of_subpath(scene_, sp.cam, camera_);
     light_walk(time, sampler, rays, sp);
     l += connections(sp, time, sampler, rays);
     const int nl = static_cast<int>(sp.light.size());
@@ -134,10 +135,11 @@ void BdptIntegrator::light_subpath(float time, PixelSampler& sampler, std::uint6
 
 glm::vec3 BdptIntegrator::camera_subpath(float x, float y, const glm::vec2& lens, float time, PixelSampler& sampler,
                                          std::uint64_t& rays, const std::vector<PathVertex>& light,
-                                         std::vector<PathVertex>& cam) const {
+                                         std::vector<PathVertex>& cam, SampleFeatures* features) const {
     thread_local Subpaths sp;
     glm::vec3 l(0.0f);
     camera_walk(x, y, lens, time, sampler, rays, sp, l);
+    if (features != nullptr) *features = features_of_subpath(scene_, sp.cam, camera_);
     sp.light.assign(light.begin(), light.end());
     l += connections(sp, time, sampler, rays);
     std::swap(cam, sp.cam);

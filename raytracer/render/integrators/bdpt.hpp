@@ -30,6 +30,7 @@
 #include "raytracer/render/lights.hpp"
 #include "raytracer/render/planted_defect.hpp"
 #include "raytracer/render/roulette.hpp"
+#include "raytracer/render/sample_features.hpp"
 #include "raytracer/render/sampler.hpp"
 #include "raytracer/scene/scene.hpp"
 
@@ -50,8 +51,10 @@ public:
     // One camera sample at film position (x, y) with lens sample `lens` and shutter fraction
     // `time`: returns what the strategies with t >= 2 bring to its pixel (the caller applies the
     // filter sample's weight, as for the path tracer) and appends the t = 1 splats to `splats`.
+    // With `features`, the camera subpath's features go there (render --aovs,
+    // sample_features.hpp; zeros under light tracing alone, which has no camera subpath).
     glm::vec3 sample(float x, float y, const glm::vec2& lens, float time, PixelSampler& sampler, std::uint64_t& rays,
-                     std::vector<Splat>& splats) const;
+                     std::vector<Splat>& splats, SampleFeatures* features = nullptr) const;
 
     // The two halves of sample(), drawing the same numbers, for vcm.cpp, which traces every light
     // subpath of an iteration before any camera subpath: the light subpath (into `light`) with its
@@ -60,7 +63,8 @@ public:
     void light_subpath(float time, PixelSampler& sampler, std::uint64_t& rays, std::vector<PathVertex>& light,
                        std::vector<Splat>& splats) const;
     glm::vec3 camera_subpath(float x, float y, const glm::vec2& lens, float time, PixelSampler& sampler,
-                             std::uint64_t& rays, const std::vector<PathVertex>& light, std::vector<PathVertex>& cam) const;
+                             std::uint64_t& rays, const std::vector<PathVertex>& light, std::vector<PathVertex>& cam,
+                             SampleFeatures* features = nullptr) const;
     // VCM's merging density eta = pi r^2 N (vcm_mis.hpp): > 0 puts the merges into every strategy's
     // weight; 0 (the default) gives bdpt's. Set between passes, never during one.
     void set_merge_density(float eta) { merge_eta_ = eta; }

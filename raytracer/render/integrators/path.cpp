@@ -53,7 +53,8 @@ collision::Ray PathIntegrator::shadow_ray(const SurfaceHit& hit, const LightSamp
 }
 
 glm::vec3 PathIntegrator::radiance(collision::Ray ray, PixelSampler& sampler, std::uint64_t& rays,
-                                   std::vector<GuideRecord>* records, float time, PathTally* tally) const {
+                                   std::vector<GuideRecord>* records, float time, PathTally* tally,
+                                   FeatureRecord* features) const {
     const bool nee = sampling_ == Sampling::NeeMis && !lights_.empty();
     GuidePathRecorder recorder(records);
     // Russian roulette judges a path by the throughput BSDF sampling would have given it: a
@@ -90,6 +91,7 @@ glm::vec3 PathIntegrator::radiance(collision::Ray ray, PixelSampler& sampler, st
         std::optional<Material> textured;  // only for materials that read a texture (render/texture.hpp)
         const Material& mat = !reads_texture(base) ? base : textured.emplace(textured_material(scene_, base, hit));
         const glm::vec3 wo = -ray.dir;
+        if (features != nullptr) features->at_vertex(mat, hit, wo);
 
         const glm::vec3 le = emitted_radiance(mat, hit.normal, wo);
         if (le != glm::vec3(0.0f)) {

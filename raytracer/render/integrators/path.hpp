@@ -34,6 +34,7 @@
 #include "raytracer/render/path_forensics.hpp"
 #include "raytracer/render/planted_defect.hpp"
 #include "raytracer/render/roulette.hpp"
+#include "raytracer/render/sample_features.hpp"
 #include "raytracer/render/sampler.hpp"
 #include "raytracer/scene/scene.hpp"
 
@@ -52,9 +53,11 @@ public:
     // the path teaches the guide is appended there (guiding_path_recorder.hpp). The whole path,
     // shadow rays included, sees the scene at shutter fraction `time` (geometry/motion.hpp;
     // ignored when nothing moves). With `tally`, every contribution is also recorded there with
-    // its path type (path_forensics.hpp); nothing else changes.
+    // its path type (path_forensics.hpp); nothing else changes. With `features`, the path's
+    // vertices are shown to it (render --aovs, sample_features.hpp); nothing else changes.
     glm::vec3 radiance(collision::Ray ray, PixelSampler& sampler, std::uint64_t& rays,
-                       std::vector<GuideRecord>* records = nullptr, float time = 0.0f, PathTally* tally = nullptr) const;
+                       std::vector<GuideRecord>* records = nullptr, float time = 0.0f, PathTally* tally = nullptr,
+                       FeatureRecord* features = nullptr) const;
 
     // Path guiding (guiding_sampler.hpp): at guided vertices where `guide` has learned something,
     // BSDF directions come from the BSDF + guide mixture, and its density is the BSDF strategy's

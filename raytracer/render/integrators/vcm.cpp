@@ -87,9 +87,9 @@ void VcmIntegrator::build_grid() {
 }
 
 glm::vec3 VcmIntegrator::sample(std::size_t pixel, float x, float y, const glm::vec2& lens, float time,
-                                PixelSampler& sampler, std::uint64_t& rays) const {
+                                PixelSampler& sampler, std::uint64_t& rays, SampleFeatures* features) const {
     thread_local std::vector<PathVertex> cam;
-    glm::vec3 l = bdpt_.camera_subpath(x, y, lens, time, sampler, rays, paths_[pixel], cam);
+    glm::vec3 l = bdpt_.camera_subpath(x, y, lens, time, sampler, rays, paths_[pixel], cam, features);
     if (!(eta_ > 0.0f)) return l;
     for (int j = 1; j < static_cast<int>(cam.size()) && j < max_depth_; ++j) {
         const Material& mat = cam[static_cast<std::size_t>(j)].mat(scene_);

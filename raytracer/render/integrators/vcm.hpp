@@ -61,9 +61,10 @@ public:
                      std::vector<Splat>& splats);
     // Single-threaded, after the light pass: the photons into the grid.
     void build_grid();
-    // The camera pass: pixel's camera sample, every connection and merge (any thread).
+    // The camera pass: pixel's camera sample, every connection and merge (any thread). With
+    // `features`, its camera subpath's (render --aovs, sample_features.hpp).
     glm::vec3 sample(std::size_t pixel, float x, float y, const glm::vec2& lens, float time, PixelSampler& sampler,
-                     std::uint64_t& rays) const;
+                     std::uint64_t& rays, SampleFeatures* features = nullptr) const;
 
     std::size_t photon_count() const { return photons_.size(); }
 

@@ -1,0 +1,46 @@
+#include "raytracer/cli/aov_outputs.hpp"
+
+#include "raytracer/image/feature_exr.hpp"
+#include "raytracer/input_error.hpp"
+
+namespace sweeptrace {
+
+namespace {
+
+std::filesystem::path beside(const std::filesystem::path& out, const char* what) {
+    std::filesystem::path p = out;
+    return p.replace_filename(out.stem().string() + "." + what + ".pfm");
+}
+
+}  // namespace
+
+std::vector<std::filesystem::path> aov_side_files(const std::filesystem::path& out) {
+    if (lowercase_extension(out) == ".exr") return {};
+    return {beside(out, "albedo"), beside(out, "normal"), beside(out, "depth")};
+}
+
+void check_aov_outputs(const std::filesystem::path& out, const std::vector<NamedInput>& inputs,
+                       const std::vector<std::filesystem::path>& other_outputs) {
+    for (const std::filesystem::path& side : aov_side_files(out)) {
+        refuse_output_over_input(side, inputs);
+        for (const std::filesystem::path& other : other_outputs)
+            if (!other.empty() && (other == side || other.lexically_normal() == side.lexically_normal()))
+                throw InputError("--aovs writes '" + side.string() + "', which another output of this command names; choose other output paths");
+    }
+}
+
+void write_image_with_aovs(const Image& image, const FeatureLayers& layers, int spp, const std::filesystem::path& out) {
+    if (lowercase_extension(out) == ".exr") {
+        write_feature_exr(layers, spp, out);
+        return;
+    }
+    write_image(image, out);
+    const std::vector<std::filesystem::path> sides = aov_side_files(out);
+    Image depth(layers.width, layers.height);
+    for (std::size_t i = 0; i < depth.pixels.size(); ++i) depth.pixels[i] = glm::vec3(layers.position.pixels[i].z);
+    write_image(layers.albedo, sides[0]);
+    write_image(layers.normal, sides[1]);
+    write_image(depth, sides[2]);
+}
+
+}  // namespace sweeptrace

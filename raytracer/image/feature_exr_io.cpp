@@ -1,0 +1,122 @@
+// The feature image as OpenEXR: the layout is documented in feature_exr.hpp.
+#include <OpenEXR/ImfChannelList.h>
+#include <OpenEXR/ImfFrameBuffer.h>
+#include <OpenEXR/ImfHeader.h>
+#include <OpenEXR/ImfInputFile.h>
+#include <OpenEXR/ImfIntAttribute.h>
+#include <OpenEXR/ImfOutputFile.h>
+
+#include <cstddef>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "raytracer/image/atomic_file.hpp"
+#include "raytracer/image/feature_exr.hpp"
+#include "raytracer/image/image_formats.hpp"
+#include "raytracer/input_error.hpp"
+
+namespace sweeptrace {
+namespace {
+
+constexpr const char* kSppAttribute = "sweeptrace:spp";
+
+// A channel: its name and where its floats are (base pointer and stride in bytes).
+struct Plane {
+    std::string name;
+    const float* base;
+    std::size_t stride;
+};
+
+std::vector<Plane> planes_of(const FeatureLayers& L) {
+    std::vector<Plane> p;
+    const char* rgb[3] = {"R", "G", "B"};
+    const char* xyz[3] = {"X", "Y", "Z"};
+    auto add = [&p](const std::string& prefix, const char* const* comps, const Image& im) {
+        for (int c = 0; c < 3; ++c)
+            p.push_back({prefix + comps[c], reinterpret_cast<const float*>(im.pixels.data()) + c, sizeof(glm::vec3)});
+    };
+    add("", rgb, L.color);
+    add("Variance.", rgb, L.color_variance);
+    add("Albedo.", rgb, L.albedo);
+    add("Ns.", xyz, L.normal);
+    add("P.", xyz, L.position);
+    add("AlbedoVariance.", rgb, L.albedo_variance);
+    add("NsVariance.", xyz, L.normal_variance);
+    p.push_back({"PVariance.Z", L.depth_variance.data(), sizeof(float)});
+    const char* half[2] = {"Even.", "Odd."};
+    for (int h = 0; h < 2; ++h) {
+        const std::string s = half[h];
+        add(s, rgb, L.half_color[h]);
+        add(s + "Albedo.", rgb, L.half_albedo[h]);
+        add(s + "Ns.", xyz, L.half_normal[h]);
+        add(s + "P.", xyz, L.half_position[h]);
+    }
+    return p;
+}
+
+}  // namespace
+
+std::vector<std::string> feature_exr_channel_names() {
+    FeatureLayers empty;
+    std::vector<std::string> names;
+    for (const Plane& p : planes_of(empty)) names.push_back(p.name);
+    return names;
+}
+
+void write_feature_exr(const FeatureLayers& layers, int spp, const std::filesystem::path& path) {
+    const int w = layers.width, h = layers.height;
+    if (w <= 0 || h <= 0) throw InputError("cannot write '" + path.string() + "': feature image is " + std::to_string(w) + "x" + std::to_string(h));
+    const std::vector<Plane> planes = planes_of(layers);
+    write_atomically(path, [&](const std::filesystem::path& temp) {
+        try {
+            Imf::Header header(w, h);
+            header.compression() = Imf::ZIP_COMPRESSION;
+            header.insert(kSppAttribute, Imf::IntAttribute(spp));
+            Imf::FrameBuffer frame;
+            for (const Plane& p : planes) {
+                header.channels().insert(p.name, Imf::Channel(Imf::FLOAT));
+                char* base = const_cast<char*>(reinterpret_cast<const char*>(p.base));
+                frame.insert(p.name, Imf::Slice(Imf::FLOAT, base, p.stride, p.stride * static_cast<std::size_t>(w)));
+            }
+            Imf::OutputFile file(temp.c_str(), header);
+            file.setFrameBuffer(frame);
+            file.writePixels(h);
+        } catch (const std::exception& e) {
+            throw InputError("cannot write '" + path.string() + "': " + reason_or(e.what(), "OpenEXR failed"));
+        }
+    });
+}
+
+ExrChannels read_exr_channels(const std::filesystem::path& path) {
+    formats::check_image_file(path);
+    try {
+        Imf::InputFile file(path.c_str());
+        const Imath::Box2i win = file.header().dataWindow();
+        const long long w = static_cast<long long>(win.max.x) - win.min.x + 1;
+        const long long h = static_cast<long long>(win.max.y) - win.min.y + 1;
+        formats::check_image_size(path, "EXR data window", w, h);
+        ExrChannels out;
+        out.width = static_cast<int>(w);
+        out.height = static_cast<int>(h);
+        if (const auto* spp = file.header().findTypedAttribute<Imf::IntAttribute>(kSppAttribute)) out.spp = spp->value();
+        Imf::FrameBuffer frame;
+        for (auto it = file.header().channels().begin(); it != file.header().channels().end(); ++it) {
+            std::vector<float>& v = out.channels[it.name()];
+            v.assign(static_cast<std::size_t>(w * h), 0.0f);
+            char* base = reinterpret_cast<char*>(v.data()) -
+                         (static_cast<std::ptrdiff_t>(win.min.x) + static_cast<std::ptrdiff_t>(win.min.y) * w) *
+                             static_cast<std::ptrdiff_t>(sizeof(float));
+            frame.insert(it.name(), Imf::Slice(Imf::FLOAT, base, sizeof(float), sizeof(float) * static_cast<std::size_t>(w)));
+        }
+        file.setFrameBuffer(frame);
+        file.readPixels(win.min.y, win.max.y);
+        return out;
+    } catch (const InputError&) {
+        throw;
+    } catch (const std::exception& e) {
+        throw InputError("cannot read '" + path.string() + "': not a valid EXR file (" + reason_or(e.what(), "OpenEXR failed") + ")");
+    }
+}
+
+}  // namespace sweeptrace

@@ -1,0 +1,90 @@
+#pragma once
+// Exact sums of squares of fixed-point samples (partial_sum.hpp), so that a per-pixel variance
+// is the same number whether one machine rendered the samples or farm parts did and were merged:
+// integer addition is associative, a double sum of squares is not.
+//
+// A sample's fixed-point value x (|x| < 2^96) squared is below 2^192, and 2^31 of them below 2^223;
+// the sum is kept as an unsigned 256-bit integer, four 64-bit limbs, least significant first.
+// The variance of n samples with sum S and sum of squares Q is (n Q - S^2) / (n^2 (n - 1)),
+// computed in 256-bit integers (n Q < 2^254, S^2 < 2^254, and n Q >= S^2 exactly by
+// Cauchy-Schwarz), so identical samples give a variance of exactly 0, which a double
+// Q/n - mean^2 does not. Only the exact difference n Q - S^2 is converted to double (limb by
+// limb, the same roundings every time) and divided.
+#include <cstdint>
+
+#include "raytracer/image/partial_sum.hpp"
+
+namespace sweeptrace {
+
+struct SquareSum {
+    std::uint64_t limb[4] = {0, 0, 0, 0};
+
+    SquareSum& operator+=(const SquareSum& o) {
+        unsigned carry = 0;
+        for (int i = 0; i < 4; ++i) {
+            const SumUInt s = static_cast<SumUInt>(limb[i]) + o.limb[i] + carry;
+            limb[i] = static_cast<std::uint64_t>(s);
+            carry = static_cast<unsigned>(s >> 64);
+        }
+        return *this;
+    }
+    bool operator==(const SquareSum&) const = default;
+};
+
+// The product of two unsigned 128-bit integers as a 256-bit one (schoolbook on 64-bit halves).
+inline SquareSum wide_product(SumUInt a, SumUInt b) {
+    const std::uint64_t a0 = static_cast<std::uint64_t>(a), a1 = static_cast<std::uint64_t>(a >> 64);
+    const std::uint64_t b0 = static_cast<std::uint64_t>(b), b1 = static_cast<std::uint64_t>(b >> 64);
+    SquareSum r;
+    auto add_at = [&r](int at, SumUInt v) {  // v << (64 at), carried up
+        SquareSum t;
+        t.limb[at] = static_cast<std::uint64_t>(v);
+        if (at + 1 < 4) t.limb[at + 1] = static_cast<std::uint64_t>(v >> 64);
+        r += t;
+    };
+    add_at(0, static_cast<SumUInt>(a0) * b0);
+    add_at(1, static_cast<SumUInt>(a0) * b1);
+    add_at(1, static_cast<SumUInt>(a1) * b0);
+    add_at(2, static_cast<SumUInt>(a1) * b1);
+    return r;
+}
+
+inline SumUInt magnitude(SumInt x) { return x < 0 ? static_cast<SumUInt>(0) - static_cast<SumUInt>(x) : static_cast<SumUInt>(x); }
+
+// x^2 added to q, x a fixed-point sample (to_fixed).
+inline void add_square(SquareSum& q, SumInt x) {
+    const SumUInt m = magnitude(x);
+    q += wide_product(m, m);
+}
+
+// The variance of the mean of n samples whose fixed-point sum is s and sum of squares q: the
+// unbiased sample variance over n; 0 below 2 samples.
+inline double variance_of_mean(SumInt s, const SquareSum& q, std::int64_t n) {
+    if (n < 2) return 0.0;
+    // n q: 256 x 63 bits, exact because n q < 2^254.
+    SquareSum nq;
+    for (int i = 0; i < 4; ++i) {
+        SquareSum t;
+        const SumUInt p = static_cast<SumUInt>(q.limb[i]) * static_cast<std::uint64_t>(n);
+        t.limb[i] = static_cast<std::uint64_t>(p);
+        if (i + 1 < 4) t.limb[i + 1] = static_cast<std::uint64_t>(p >> 64);
+        nq += t;
+    }
+    const SumUInt m = magnitude(s);
+    const SquareSum s2 = wide_product(m, m);
+    // d = nq - s2 >= 0: two's complement subtraction, limb by limb.
+    double d = 0.0;
+    std::uint64_t borrow = 0;
+    std::uint64_t diff[4];
+    for (int i = 0; i < 4; ++i) {
+        const SumUInt sub = static_cast<SumUInt>(s2.limb[i]) + borrow;
+        diff[i] = nq.limb[i] - static_cast<std::uint64_t>(sub);
+        borrow = static_cast<SumUInt>(nq.limb[i]) < sub ? 1 : 0;
+    }
+    if (borrow != 0) return 0.0;  // cannot happen for sums of the same samples; a damaged part reads as no variance
+    for (int i = 3; i >= 0; --i) d = d * 0x1p64 + static_cast<double>(diff[i]);
+    const double nd = static_cast<double>(n);
+    return d * 0x1p-112 / (nd * nd * (nd - 1.0));
+}
+
+}  // namespace sweeptrace

@@ -1,0 +1,321 @@
+// Feature outputs (render --aovs; render/sample_features.hpp, image/feature_sums.hpp): the
+// features against closed forms (a checker-textured quad's albedo, depth and normal; a sphere's
+// normals and albedo seen through a mirror, for every integrator), the exact variance of equal
+// samples, the half buffers against the full sums, determinism at 1 and 2 threads, the image
+// untouched by them, adaptive sampling's own counts, and bdpt and vcm recording the path tracer's
+// quantity (means within noise on a scene with glass, whose delta bounces each integrator draws
+// with its own numbers).
+#include <cmath>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <catch2/catch.hpp>
+#include <glm/geometric.hpp>
+
+#include "convergence_harness.hpp"
+#include "plane_truth.hpp"
+#include "raytracer/image/feature_sums.hpp"
+#include "raytracer/image/square_sum.hpp"
+#include "raytracer/render/renderer.hpp"
+#include "render_test_scenes.hpp"
+
+using namespace sweeptrace;
+using namespace sweeptrace::testing;
+
+namespace {
+
+RenderResult render_aovs(const Scene& scene, const Accel& accel, int spp, int max_depth, IntegratorKind integrator,
+                         int threads = 0, bool aovs = true) {
+    RenderOptions o;
+    o.spp = spp;
+    o.max_depth = max_depth;
+    o.seed = 5;
+    o.threads = threads;
+    o.integrator = integrator;
+    o.aovs = aovs;
+    return render(scene, accel, o);
+}
+
+const char* name_of(IntegratorKind k) {
+    return k == IntegratorKind::Path ? "path" : k == IntegratorKind::Bdpt ? "bdpt" : "vcm";
+}
+
+// The mirror scene: the camera at (0, 0, 3) looks down -z at a mirror through the origin whose
+// normal is (0, 1, 1) / sqrt 2, which sends its rays up (+y) to a diffuse sphere at (0, 2, 0),
+// out of the camera's direct view (33.7 degrees up, the half field of view 25).
+constexpr int kMirrorSize = 32;
+const glm::dvec3 kSphereCentre(0.0, 2.0, 0.0);
+constexpr double kSphereRadius = 0.6;
+const glm::vec3 kSphereAlbedo(0.2f, 0.5f, 0.9f);
+
+Scene mirror_scene() {
+    Scene scene = empty_scene(kMirrorSize, kMirrorSize);
+    scene.camera.position = {0.0f, 0.0f, 3.0f};
+    scene.camera.vfov_degrees = 50.0f;
+    scene.background.color = glm::vec3(0.5f);  // some light for bdpt's and vcm's light subpaths
+    Material mirror;
+    mirror.type = Material::Type::Metal;
+    mirror.roughness = 0.0f;
+    mirror.albedo = glm::vec3(0.9f);
+    add_object(scene, collision::Quad{{-1.0f, -0.8f, 0.8f}, {2.0f, 0.0f, 0.0f}, {0.0f, 1.6f, -1.6f}},
+               add_material(scene, mirror), glm::mat4(1.0f), "mirror");
+    add_object(scene, collision::Sphere{glm::vec3(kSphereCentre), static_cast<float>(kSphereRadius)},
+               add_material(scene, test::diffuse(kSphereAlbedo)), glm::mat4(1.0f), "sphere");
+    return scene;
+}
+
+// The sphere's outward normal where film position (fx, fy)'s ray meets it after the mirror, in
+// double; false when the ray misses the mirror or the reflected ray misses the sphere.
+bool normal_through_mirror(const PinholeRays& cam, double fx, double fy, glm::dvec3& normal) {
+    const glm::dvec3 d = glm::normalize(cam.direction(fx, fy));
+    const glm::dvec3 n = glm::normalize(glm::dvec3(0.0, 1.0, 1.0));
+    const double dn = glm::dot(d, n);
+    if (dn >= 0.0) return false;
+    const double t = -glm::dot(cam.eye, n) / dn;  // the mirror's plane goes through the origin
+    const glm::dvec3 p = cam.eye + t * d;
+    if (std::abs(p.x) > 1.0 || std::abs(p.y) > 0.8) return false;  // outside the quad
+    const glm::dvec3 r = d - 2.0 * dn * n;
+    const glm::dvec3 oc = p - kSphereCentre;
+    const double b = glm::dot(oc, r), c = glm::dot(oc, oc) - kSphereRadius * kSphereRadius;
+    const double disc = b * b - c;
+    if (disc < 0.0) return false;
+    const double s = -b - std::sqrt(disc);
+    if (s <= 0.0) return false;
+    normal = glm::normalize(p + s * r - kSphereCentre);
+    return true;
+}
+
+}  // namespace
+
+TEST_CASE("aovs: variance of the mean from exact sums is 0 for equal samples and the sample variance otherwise", "[render][aovs]") {
+    SquareSum q;
+    SumInt s = 0;
+    bool clamped = false;
+    for (int i = 0; i < 7; ++i) {
+        const SumInt x = to_fixed(0.7f, clamped);
+        s += x;
+        add_square(q, x);
+    }
+    CHECK(variance_of_mean(s, q, 7) == 0.0);  // a double Q/n - mean^2 leaves rounding noise here
+    SquareSum q2;
+    SumInt s2 = 0;
+    for (float v : {1.0f, 2.0f, 3.0f, 4.0f, -2.5f}) {
+        const SumInt x = to_fixed(v, clamped);
+        s2 += x;
+        add_square(q2, x);
+    }
+    // mean 1.5, squares 30 + 6.25: sample variance (36.25 - 5 * 2.25) / 4 = 6.25, over n = 5.
+    CHECK(variance_of_mean(s2, q2, 5) == Approx(1.25).epsilon(1e-15));
+    // The largest sample the fixed point holds, squared, stays exact in 256 bits.
+    SquareSum big;
+    const SumInt m = to_fixed(kSampleLimit, clamped);
+    add_square(big, m);
+    add_square(big, -m);
+    CHECK(variance_of_mean(0, big, 2) == Approx(2.0 * double(kSampleLimit) * double(kSampleLimit) / 2.0).epsilon(1e-15));
+}
+
+TEST_CASE("aovs: a checker-textured quad's albedo, normal and depth against the closed form, misses zero", "[render][aovs]") {
+    constexpr int size = 32, sub = 8;
+    Scene scene = empty_scene(size, size);
+    scene.camera.position = {0.0f, 0.0f, 3.0f};
+    scene.camera.vfov_degrees = 50.0f;
+    Texture checker;
+    checker.a = glm::vec3(0.2f);
+    checker.b = glm::vec3(0.7f, 0.5f, 0.3f);
+    checker.scale = 3.0f;
+    scene.textures.push_back(checker);
+    Material m = diffuse(0.0f);
+    m.albedo_texture = 0;
+    const glm::mat4 xf = glm::translate(glm::mat4(1.0f), {-1.0f, -1.0f, 0.0f}) * glm::scale(glm::mat4(1.0f), glm::vec3(2.0f));
+    add_object(scene, collision::Quad{glm::vec3(0.0f), {1.0f, 0.0f, 0.0f}, {0.0f, 1.0f, 0.0f}}, add_material(scene, m), xf, "q");
+    // Region 0/1: the checker's colours, 2: the background (a miss: albedo 0).
+    const PlaneTruth truth = plane_truth(
+        size, sub,
+        [](double wx, double wy) {
+            const double u = (wx + 1) / 2, v = (wy + 1) / 2;
+            const bool on = u > 0 && u < 1 && v > 0 && v < 1;
+            return on ? int(std::floor(3 * u) + std::floor(3 * v)) % 2 : 2;
+        },
+        [&](int cell) { return cell == 2 ? glm::vec3(0.0f) : cell == 0 ? checker.a : checker.b; });
+    const auto accel = make_accel(AccelKind::Bvh, scene);
+    const RenderResult r = render_aovs(scene, *accel, 6, 1, IntegratorKind::Path);
+    REQUIRE(r.features.size() == r.sums.size());
+    const FeatureLayers L = feature_layers(r.features, size, size);
+    int on_quad = 0, missed = 0, edges_with_variance = 0;
+    for (std::size_t i = 0; i < L.albedo.pixels.size(); ++i) {
+        if (!truth.mask[i]) {
+            edges_with_variance += L.albedo_variance.pixels[i].x > 0.0f ? 1 : 0;
+            continue;
+        }
+        INFO("pixel " << i);
+        // Every sample of a masked pixel reads the same texel value: its mean is that value
+        // exactly, and its variance exactly 0 (the exact sums of squares).
+        CHECK(L.albedo.pixels[i] == truth.image.pixels[i]);
+        CHECK(L.albedo_variance.pixels[i] == glm::vec3(0.0f));
+        if (truth.image.pixels[i] == glm::vec3(0.0f)) {
+            ++missed;
+            CHECK(L.normal.pixels[i] == glm::vec3(0.0f));
+            CHECK(L.position.pixels[i] == glm::vec3(0.0f));
+        } else {
+            ++on_quad;
+            // The plane z = 0 faces the camera at (0, 0, 3): normal +z, depth 3 everywhere.
+            CHECK(glm::length(L.normal.pixels[i] - glm::vec3(0.0f, 0.0f, 1.0f)) < 1e-6f);
+            CHECK(std::abs(L.position.pixels[i].z - 3.0f) < 1e-5f);
+            CHECK(L.depth_variance[i] < 1e-10f);
+        }
+    }
+    CHECK(on_quad > 300);
+    CHECK(missed > 100);
+    CHECK(edges_with_variance > 20);  // pixels straddling an edge mix two values
+}
+
+TEST_CASE("aovs: a sphere seen through a mirror gives its own normals and albedo, for every integrator", "[render][aovs]") {
+    const Scene scene = mirror_scene();
+    const auto accel = make_accel(AccelKind::Bvh, scene);
+    const PinholeRays cam(scene.camera, kMirrorSize, kMirrorSize);
+    // Truth per pixel: the mean over an 8 x 8 grid of its film positions; only pixels all of
+    // whose positions see the sphere in the mirror.
+    constexpr int sub = 8;
+    std::vector<glm::dvec3> truth(static_cast<std::size_t>(kMirrorSize) * kMirrorSize);
+    std::vector<std::uint8_t> inside(truth.size(), 1);
+    for (int y = 0; y < kMirrorSize; ++y)
+        for (int x = 0; x < kMirrorSize; ++x) {
+            glm::dvec3 sum(0.0);
+            const std::size_t i = static_cast<std::size_t>(y) * kMirrorSize + x;
+            for (int j = 0; j < sub && inside[i]; ++j)
+                for (int k = 0; k < sub; ++k) {
+                    glm::dvec3 n;
+                    if (!normal_through_mirror(cam, x + (k + 0.5) / sub, y + (j + 0.5) / sub, n)) {
+                        inside[i] = 0;
+                        break;
+                    }
+                    sum += n;
+                }
+            truth[i] = sum / double(sub * sub);
+        }
+    for (IntegratorKind k : {IntegratorKind::Path, IntegratorKind::Bdpt, IntegratorKind::Vcm}) {
+        INFO(name_of(k));
+        // max_depth 2: the sphere is the second vertex, recorded though the path ends there.
+        const RenderResult r = render_aovs(scene, *accel, 16, 2, k);
+        const FeatureLayers L = feature_layers(r.features, kMirrorSize, kMirrorSize);
+        int tested = 0;
+        double worst_z = 0.0;
+        for (std::size_t i = 0; i < truth.size(); ++i) {
+            if (!inside[i]) continue;
+            ++tested;
+            INFO("pixel " << i);
+            CHECK(L.albedo.pixels[i] == kSphereAlbedo);  // the sphere's, not the mirror's 0.9
+            for (int c = 0; c < 3; ++c) {
+                // The mean of 16 samples against the 64-point quadrature of the same pixel: within
+                // 5 standard errors (the variance of the mean, overstated under Sobol), plus the
+                // float rounding of a unit vector.
+                const double sigma = std::sqrt(double(L.normal_variance.pixels[i][c]));
+                const double d = std::abs(double(L.normal.pixels[i][c]) - truth[i][c]);
+                CHECK(d <= 5.0 * sigma + 1e-5);
+                if (sigma > 0.0) worst_z = std::max(worst_z, d / sigma);
+            }
+        }
+        INFO("largest |z| " << worst_z);
+        CHECK(tested > 40);
+    }
+}
+
+TEST_CASE("aovs: half buffers add up to the full sums exactly; 1 and 2 threads bit-identical; the image untouched", "[render][aovs]") {
+    const Scene scene = test::two_light_scene(24, 18);
+    const test::DoublePrecisionAccel accel(scene);
+    for (IntegratorKind k : {IntegratorKind::Path, IntegratorKind::Bdpt, IntegratorKind::Vcm}) {
+        INFO(name_of(k));
+        const RenderResult one = render_aovs(scene, accel, 5, 4, k, 1);
+        const RenderResult two = render_aovs(scene, accel, 5, 4, k, 2);
+        const RenderResult plain = render_aovs(scene, accel, 5, 4, k, 2, false);
+        CHECK(plain.features.empty());
+        CHECK(one.features == two.features);
+        CHECK(one.sums == plain.sums);  // recording features changes no sample
+        CHECK(same_bits(one.image, plain.image));
+        const FeatureLayers L = feature_layers(one.features, 24, 18);
+        bool halves_differ = false;
+        for (std::size_t i = 0; i < one.sums.size(); ++i) {
+            const FeatureSums& f = one.features[i];
+            REQUIRE(f.count[0] == 3);  // samples 0, 2, 4
+            REQUIRE(f.count[1] == 2);  // samples 1, 3
+            PixelSum whole = f.color[0];
+            whole += f.color[1];
+            CHECK(whole == one.sums[i]);
+            // The float means: (3 even + 2 odd) / 5 is the full mean up to their roundings.
+            for (int c = 0; c < 3; ++c) {
+                const double full = L.color.pixels[i][c];
+                const double mix = (3.0 * L.half_color[0].pixels[i][c] + 2.0 * L.half_color[1].pixels[i][c]) / 5.0;
+                CHECK(std::abs(mix - full) <= 1e-6 * std::max(1.0, std::abs(full)));
+            }
+            CHECK(L.color.pixels[i] == one.image.pixels[i]);
+            halves_differ = halves_differ || L.half_color[0].pixels[i] != L.half_color[1].pixels[i];
+        }
+        CHECK(halves_differ);  // two halves of noise, not one buffer twice
+    }
+}
+
+TEST_CASE("aovs: under adaptive sampling each pixel's halves hold its own count", "[render][aovs]") {
+    const Scene scene = test::two_light_scene(24, 18);
+    const test::DoublePrecisionAccel accel(scene);
+    RenderOptions o;
+    o.spp = 40;
+    o.max_depth = 4;
+    o.adaptive = true;
+    o.aovs = true;
+    const RenderResult r = render(scene, accel, o);
+    REQUIRE(r.pixel_samples.size() == r.sums.size());
+    bool uneven = false;
+    for (std::size_t i = 0; i < r.sums.size(); ++i) {
+        const FeatureSums& f = r.features[i];
+        const int n = r.pixel_samples[i];
+        CHECK(f.count[0] == (n + 1) / 2);  // samples 0 .. n-1 of its own sequence
+        CHECK(f.count[1] == n / 2);
+        PixelSum whole = f.color[0];
+        whole += f.color[1];
+        CHECK(whole == r.sums[i]);
+        uneven = uneven || n != r.pixel_samples[0];
+    }
+    CHECK(uneven);
+}
+
+TEST_CASE("aovs: bdpt and vcm record the path tracer's features (means within noise, through glass)", "[render][aovs]") {
+    Scene scene = test::two_light_scene(32, 24);
+    Material glass;
+    glass.type = Material::Type::Dielectric;
+    glass.ior = 1.5f;
+    test::add_object(scene, collision::Sphere{{0.1f, 1.5f, 1.2f}, 0.5f}, test::add_material(scene, glass));
+    const test::DoublePrecisionAccel accel(scene);
+    auto layer_means = [&](IntegratorKind k, std::vector<double>& mean, std::vector<double>& var) {
+        const RenderResult r = render_aovs(scene, accel, 32, 6, k, 0);
+        const FeatureLayers L = feature_layers(r.features, 32, 24);
+        const double n = double(L.albedo.pixels.size());
+        mean.assign(10, 0.0);
+        var.assign(10, 0.0);
+        for (std::size_t i = 0; i < L.albedo.pixels.size(); ++i) {
+            for (int c = 0; c < 3; ++c) {
+                mean[c] += L.albedo.pixels[i][c] / n;
+                var[c] += L.albedo_variance.pixels[i][c] / (n * n);
+                mean[3 + c] += L.normal.pixels[i][c] / n;
+                var[3 + c] += L.normal_variance.pixels[i][c] / (n * n);
+            }
+            mean[6] += L.position.pixels[i].z / n;
+            var[6] += L.depth_variance[i] / (n * n);
+        }
+        mean.resize(7);
+        var.resize(7);
+    };
+    std::vector<double> path_mean, path_var;
+    layer_means(IntegratorKind::Path, path_mean, path_var);
+    CHECK(path_var[6] > 0.0);  // the glass splits pixels between reflection and refraction
+    for (IntegratorKind k : {IntegratorKind::Bdpt, IntegratorKind::Vcm}) {
+        INFO(name_of(k));
+        std::vector<double> mean, var;
+        layer_means(k, mean, var);
+        for (int c = 0; c < 7; ++c) {
+            INFO("channel " << c << ": path " << path_mean[c] << ", " << name_of(k) << " " << mean[c]);
+            const double sigma = std::sqrt(path_var[c] + var[c]);
+            CHECK(std::abs(mean[c] - path_mean[c]) <= 5.0 * sigma + 1e-6 * std::abs(path_mean[c]));
+        }
+    }
+}
