@@ -30,19 +30,23 @@ void check_denoise_output(const std::filesystem::path& out) {
         throw InputError("output '" + out.string() + "': directory '" + dir.string() + "' does not exist");
 }
 
+void check_denoise_memory(const std::string& what, int width, int height, int threads) {
+    LoadBudgetScope budget;
+    const std::size_t features = denoise::feature_channel_names().size();
+    const int workers = threads > 0 ? threads : tbb::this_task_arena::max_concurrency();
+    charge_load_memory(std::uint64_t(width) * std::uint64_t(height) * 4 * (3 + features) * sizeof(float), what,
+                       "NFOR's copy of the colour and features");
+    charge_load_memory(denoise::nfor_memory_bytes(width, height, int(features), workers), what, "NFOR's working buffers");
+}
+
 DenoiseReport denoise_file(const std::filesystem::path& in, const std::filesystem::path& out, int threads) {
     if (lowercase_extension(in) != ".exr")
         throw InputError("cannot denoise '" + in.string() + "': a feature image is an .exr file (render --aovs writes one)");
-    const int workers = threads > 0 ? threads : tbb::this_task_arena::max_concurrency();
     denoise::NforInput input;
     {
-        LoadBudgetScope budget;
-        const ChannelImage channels = read_exr_channels(in);  // charges its channels
-        const std::size_t features = denoise::feature_channel_names().size();
-        const std::uint64_t pixels = std::uint64_t(channels.width) * std::uint64_t(channels.height);
-        charge_load_memory(pixels * 4 * (3 + features) * sizeof(float), in.string(), "NFOR's copy of the colour and features");
-        charge_load_memory(denoise::nfor_memory_bytes(channels.width, channels.height, int(features), workers), in.string(),
-                           "NFOR's working buffers");
+        LoadBudgetScope budget;  // the channels read, then (joining it) NFOR's copy and buffers
+        const ExrChannels channels = read_exr_channels(in);
+        check_denoise_memory(in.string(), channels.width, channels.height, threads);
         input = denoise::nfor_input(channels, in.string());
     }
     std::optional<tbb::global_control> allow;  // as the renderer: an explicit --threads above the cores is honoured

@@ -9,7 +9,7 @@
 namespace sweeptrace::denoise {
 namespace {
 
-Planes gather(const ChannelImage& image, const std::string& file, const std::vector<std::string>& names, const std::string& prefix,
+Planes gather(const ExrChannels& image, const std::string& file, const std::vector<std::string>& names, const std::string& prefix,
               bool variance) {
     Planes planes(image.width, image.height, int(names.size()));
     for (std::size_t c = 0; c < names.size(); ++c) {
@@ -30,7 +30,7 @@ Planes gather(const ChannelImage& image, const std::string& file, const std::vec
     return planes;
 }
 
-Buffers buffers(const ChannelImage& image, const std::string& file, const std::vector<std::string>& names) {
+Buffers buffers(const ExrChannels& image, const std::string& file, const std::vector<std::string>& names) {
     return {gather(image, file, names, "", false), gather(image, file, names, "Even.", false), gather(image, file, names, "Odd.", false),
             gather(image, file, names, "", true)};
 }
@@ -65,7 +65,7 @@ std::vector<std::string> required_channel_names() {
     return all;
 }
 
-NforInput nfor_input(const ChannelImage& image, const std::string& file) {
+NforInput nfor_input(const ExrChannels& image, const std::string& file) {
     return {buffers(image, file, color_channel_names()), buffers(image, file, feature_channel_names())};
 }
 

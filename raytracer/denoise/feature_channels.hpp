@@ -29,6 +29,6 @@ std::vector<std::string> required_channel_names();
 // NFOR's input from a feature image. Throws InputError naming `file` and the first channel
 // missing ("... has no channel 'Even.Albedo.R' ...") or the first value that is not finite (or a
 // negative variance), with its pixel.
-NforInput nfor_input(const ChannelImage& image, const std::string& file);
+NforInput nfor_input(const ExrChannels& image, const std::string& file);
 
 }  // namespace sweeptrace::denoise

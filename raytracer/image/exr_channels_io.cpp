@@ -28,7 +28,7 @@ std::string window_text(const Imath::Box2i& w) {
 
 }  // namespace
 
-ChannelImage read_exr_channels(const std::filesystem::path& path) {
+ExrChannels read_exr_channels(const std::filesystem::path& path) {
     formats::check_image_file(path);
     if (const auto window = formats::exr_header_window(path))
         formats::check_image_size(path, "EXR data window", window->first, window->second);
@@ -59,7 +59,7 @@ ChannelImage read_exr_channels(const std::filesystem::path& path) {
         }
         charge_load_memory(count * static_cast<std::uint64_t>(w) * static_cast<std::uint64_t>(h) * sizeof(float), path.string(),
                            std::to_string(count) + " EXR channels of " + window_text(window));
-        ChannelImage image;
+        ExrChannels image;
         image.width = static_cast<int>(w);
         image.height = static_cast<int>(h);
         Imf::FrameBuffer frame;
@@ -75,8 +75,7 @@ ChannelImage read_exr_channels(const std::filesystem::path& path) {
         }
         file.setFrameBuffer(frame);
         file.readPixels(window.min.y, window.max.y);
-        for (auto a = file.header().begin(); a != file.header().end(); ++a)
-            if (const auto* i = dynamic_cast<const Imf::IntAttribute*>(&a.attribute())) image.int_attributes[a.name()] = i->value();
+        if (const auto* spp = file.header().findTypedAttribute<Imf::IntAttribute>(kExrSppAttribute)) image.spp = spp->value();
         return image;
     } catch (const InputError&) {
         throw;
@@ -85,7 +84,7 @@ ChannelImage read_exr_channels(const std::filesystem::path& path) {
     }
 }
 
-void write_exr_channels(const ChannelImage& image, const std::filesystem::path& path) {
+void write_exr_channels(const ExrChannels& image, const std::filesystem::path& path) {
     const std::size_t n = static_cast<std::size_t>(image.width) * static_cast<std::size_t>(image.height);
     if (image.width <= 0 || image.height <= 0 || image.channels.empty())
         throw InputError("cannot write '" + path.string() + "': image is " + std::to_string(image.width) + "x" +
@@ -98,7 +97,7 @@ void write_exr_channels(const ChannelImage& image, const std::filesystem::path& 
         try {
             Imf::Header header(image.width, image.height);
             header.compression() = Imf::ZIP_COMPRESSION;
-            for (const auto& [name, value] : image.int_attributes) header.insert(name, Imf::IntAttribute(value));
+            if (image.spp != -1) header.insert(kExrSppAttribute, Imf::IntAttribute(image.spp));
             Imf::FrameBuffer frame;
             const std::size_t xstride = sizeof(float), ystride = xstride * static_cast<std::size_t>(image.width);
             for (const auto& [name, values] : image.channels) {

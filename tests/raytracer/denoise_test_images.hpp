@@ -54,8 +54,8 @@ inline SyntheticImage synthetic_image(int w, int h, std::uint64_t seed, float si
 }
 
 // The same image as the channels of a feature EXR (feature_channels.hpp's names).
-inline ChannelImage as_channels(const denoise::NforInput& in) {
-    ChannelImage image;
+inline ExrChannels as_channels(const denoise::NforInput& in) {
+    ExrChannels image;
     image.width = in.color.mean.width;
     image.height = in.color.mean.height;
     auto put = [&](const std::vector<std::string>& names, const denoise::Buffers& b) {

@@ -75,7 +75,7 @@ TEST_CASE("nfor: a constant image comes back unchanged, whatever its noisy featu
     CHECK(worst < 1e-5);
 }
 
-TEST_CASE("nfor: a colour linear in a per-pixel texture is recovered from its noise; a box blur cannot", "[denoise]") {
+TEST_CASE("nfor: a colour linear in a per-pixel texture is recovered from its noise, which a box blur cannot do", "[denoise]") {
     const float sigma = 0.1f;  // one half's noise; the mean's is 0.071
     const SyntheticImage s = textured_image(48, 40, 11, sigma);
     const denoise::Planes out = run_nfor(s.input, 2);
@@ -120,15 +120,15 @@ TEST_CASE("nfor: the window solve gives a constant feature coefficient 0 and sti
 
 TEST_CASE("nfor input: a missing channel and a NaN feature are named", "[denoise]") {
     const SyntheticImage s = textured_image(8, 6, 1, 0.1f);
-    ChannelImage channels = as_channels(s.input);
+    ExrChannels channels = as_channels(s.input);
     REQUIRE_NOTHROW(denoise::nfor_input(channels, "in.exr"));
-    ChannelImage missing = channels;
+    ExrChannels missing = channels;
     missing.channels.erase("Odd.Ns.Y");
     CHECK_THROWS_WITH(denoise::nfor_input(missing, "in.exr"), Catch::Contains("'in.exr' has no channel 'Odd.Ns.Y'"));
-    ChannelImage nan = channels;
+    ExrChannels nan = channels;
     nan.channels["Ns.X"][2 * 8 + 5] = std::nanf("");
     CHECK_THROWS_WITH(denoise::nfor_input(nan, "in.exr"), Catch::Contains("channel 'Ns.X' is NaN at pixel (5, 2)"));
-    ChannelImage negative = channels;
+    ExrChannels negative = channels;
     negative.channels["AlbedoVariance.G"][0] = -1.0f;
     CHECK_THROWS_WITH(denoise::nfor_input(negative, "in.exr"), Catch::Contains("channel 'AlbedoVariance.G' is negative at pixel (0, 0)"));
 }
