@@ -3,12 +3,18 @@
 // `render --denoise` does after writing its feature image (which it keeps: the raw render is
 // always beside the denoised one).
 #include <filesystem>
+#include <string>
 
 namespace sweeptrace {
 
 // Throws InputError unless `out` has an image extension the writer knows (.exr, .pfm, .png) and
 // its folder exists: checked before any work.
 void check_denoise_output(const std::filesystem::path& out);
+
+// Throws InputError naming `what` when NFOR's copy of a width x height image and its working
+// buffers (nfor_memory_bytes) would not fit the memory available: render --denoise asks before
+// it renders, denoise_file before it filters.
+void check_denoise_memory(const std::string& what, int width, int height, int threads);
 
 struct DenoiseReport {
     int width = 0, height = 0;

@@ -21,6 +21,7 @@
 #include "raytracer/accel/accel.hpp"
 #include "raytracer/cli/aov_outputs.hpp"
 #include "raytracer/cli/commands.hpp"
+#include "raytracer/cli/denoise_image.hpp"
 #include "raytracer/cli/render_identity.hpp"
 #include "raytracer/cli/render_part.hpp"
 #include "raytracer/cli/interrupt.hpp"
@@ -62,6 +63,7 @@ struct RenderArgs {
     bool skip_existing = false;
     bool strict = false;  // a .pbrt scene: anything approximated or ignored is an error
     bool aovs = false;    // feature outputs (cli/aov_outputs.hpp); also the scene's film.aovs
+    std::string denoise;  // --denoise FILE: NFOR on the feature image -o writes (cli/denoise_image.hpp)
     CLI::Option* time_opt = nullptr;
 };
 
@@ -188,12 +190,24 @@ int run_render(const RenderArgs& a) {
                     "--forensics '" + a.forensics + "': its report or picture (" + forensics_picture(f).string() +
                         ") would overwrite another output");
         }
+        if (!a.denoise.empty()) {
+            // The raw render stays: it is the feature image -o names, and the denoised one goes beside it.
+            require(a.samples.empty(), "--denoise makes a whole image: merge the farm parts, then run sweeptrace denoise on the result");
+            require(lowercase_extension(out) == ".exr",
+                    "--denoise needs -o OUT.exr: the feature image NFOR reads, kept beside the denoised image; got '" + out.string() + "'");
+            check_denoise_output(a.denoise);
+            // Absolute first: weakly_canonical leaves a relative path with no existing prefix as it is.
+            const auto resolved = [](const std::string& p) { return std::filesystem::weakly_canonical(std::filesystem::absolute(p)); };
+            for (const std::string& other : {out.string(), a.variance, a.forensics})
+                require(other.empty() || resolved(a.denoise) != resolved(other),
+                        "--denoise '" + a.denoise + "' would overwrite another output ('" + other + "')");
+        }
     }
 
     Scene scene = pbrt ? std::move(*pbrt_scene) : load_scene(scene_path);
     for (const std::string& w : emitters_facing_nothing(scene)) std::fprintf(stderr, "sweeptrace: warning: %s\n", escape_control(w).c_str());
     a.limits.apply(scene);
-    if (a.aovs) scene.film.aovs = true;
+    if (a.aovs || !a.denoise.empty()) scene.film.aovs = true;
     if (!a.sampler.empty()) scene.film.sampler = a.sampler == "independent" ? SamplerKind::Independent : SamplerKind::Sobol;
     if (!a.integrator.empty())
         scene.film.integrator = a.integrator == "vcm"    ? IntegratorKind::Vcm
@@ -204,6 +218,7 @@ int run_render(const RenderArgs& a) {
     for (const std::filesystem::path& f : scene.input_files) inputs.push_back({"scene's input", f});
     refuse_output_over_input(out, inputs);
     if (!a.variance.empty()) refuse_output_over_input(a.variance, inputs);
+    if (!a.denoise.empty()) refuse_output_over_input(a.denoise, inputs);
     if (!a.forensics.empty()) {
         refuse_output_over_input(a.forensics, inputs);
         refuse_output_over_input(forensics_picture(a.forensics), inputs);
@@ -212,6 +227,7 @@ int run_render(const RenderArgs& a) {
         check_aov_outputs(out, inputs,
                           {out, a.variance, a.forensics, a.forensics.empty() ? std::filesystem::path() : forensics_picture(a.forensics)});
     check_render_memory(scene, a.limits.memory_limit(), a.adaptive != "off");
+    if (!a.denoise.empty()) check_denoise_memory("--denoise '" + a.denoise + "'", scene.film.width, scene.film.height, thread_count);
 
     // A farm part: which samples, and the render they belong to; a re-run task skips a finished one.
     const SampleRange range =
@@ -317,6 +333,10 @@ int run_render(const RenderArgs& a) {
     if (st.cancelled)
         std::fprintf(stderr, "sweeptrace: interrupted: wrote %s with %d of %d samples per pixel\n", out.string().c_str(),
                      st.completed_spp, opt.spp);
+    else if (!a.denoise.empty()) {
+        const DenoiseReport d = denoise_file(out, a.denoise, thread_count);
+        if (!a.quiet) std::fprintf(stderr, "%s -> %s (NFOR, %.2f s)\n", out.string().c_str(), a.denoise.c_str(), d.seconds);
+    }
     if (st.budget_spent && !a.quiet)
         std::fprintf(stderr, "sweeptrace: --time %g s spent: %d spp reached\n", a.time, st.completed_spp);
     if (!a.quiet) {
@@ -397,6 +417,9 @@ void add_render_command(CLI::App& app, int& exit_code) {
                   "the first non-specular vertex, their variances and the even/odd half buffers. With -o OUT.exr all "
                   "in that one EXR (pbrt-v4 gbuffer channel names: Albedo.R, Ns.X, P.Z, ...); with .png/.pfm beside it "
                   "OUT.albedo.pfm, OUT.normal.pfm, OUT.depth.pfm (docs/aovs.md)");
+    cmd->add_option("--denoise", args->denoise,
+                    "Also write FILE (.exr, .pfm or .png): the render denoised by NFOR from its features (implies --aovs; "
+                    "-o must be an .exr, the feature image, which is kept; docs/denoising.md)");
     cmd->add_flag("--strict", args->strict,
                   "A .pbrt scene: refuse (exit 2) anything the translation would approximate or ignore, instead of a warning");
     cmd->add_option("--samples", args->samples,

@@ -53,10 +53,10 @@ TEST_CASE("denoise cli: an image without features, a NaN feature, -o naming the 
           "[denoise][cli]") {
     ScratchDir dir("denoise-cli-bad");
     const SyntheticImage s = textured_image(16, 8, 3, 0.1f);
-    ChannelImage good = as_channels(s.input);
+    ExrChannels good = as_channels(s.input);
     write_exr_channels(good, dir / "in.exr");
     write_image(Image(16, 8), dir / "plain.exr");
-    ChannelImage nan = good;
+    ExrChannels nan = good;
     nan.channels["Even.P.Z"][3] = std::nanf("");
     write_exr_channels(nan, dir / "nan.exr");
 
@@ -73,4 +73,29 @@ TEST_CASE("denoise cli: an image without features, a NaN feature, -o naming the 
     CHECK(r.err.find("output './in.exr' is the image to denoise 'in.exr'") != std::string::npos);
     CHECK(bytes_of(dir / "in.exr") == before);
     CHECK_FALSE(std::filesystem::exists(dir / "out.exr"));
+}
+
+TEST_CASE("render --denoise: the feature image -o names is kept and the denoised image written beside it", "[denoise][cli]") {
+    ScratchDir dir("render-denoise");
+    const std::string scene = std::string(SWEEPTRACE_SOURCE_DIR) + "/scenes/cornell-box.json";
+    test::CliRun r = test::run_sweeptrace(dir.path(), "render '" + scene + "' --width 24 --height 24 --spp 4 --threads 2 -o raw.exr --denoise clean.pfm --quiet");
+    INFO(r.err);
+    REQUIRE(r.exit_code == 0);
+    const ExrChannels raw = read_exr_channels(dir / "raw.exr");
+    CHECK(raw.find("Even.Albedo.R") != nullptr);
+    const Image clean = read_image(dir / "clean.pfm");
+    CHECK(clean.width == 24);
+    // the same as denoising the kept feature image afterwards
+    r = test::run_sweeptrace(dir.path(), "denoise raw.exr -o again.pfm --threads 1 --quiet");
+    REQUIRE(r.exit_code == 0);
+    CHECK(bytes_of(dir / "again.pfm") == bytes_of(dir / "clean.pfm"));
+
+    r = test::run_sweeptrace(dir.path(), "render '" + scene + "' --width 24 --height 24 --spp 4 -o raw.png --denoise clean2.pfm --quiet");
+    CHECK(r.exit_code == 2);
+    CHECK(r.err.find("--denoise needs -o OUT.exr") != std::string::npos);
+    r = test::run_sweeptrace(dir.path(), "render '" + scene + "' --width 24 --height 24 --spp 4 -o raw2.exr --denoise ./raw2.exr --quiet");
+    CHECK(r.exit_code == 2);
+    CHECK(r.err.find("would overwrite another output") != std::string::npos);
+    CHECK_FALSE(std::filesystem::exists(dir / "clean2.pfm"));
+    CHECK_FALSE(std::filesystem::exists(dir / "raw2.exr"));
 }
