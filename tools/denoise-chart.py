@@ -20,6 +20,9 @@ Usage:
   /usr/bin/python3 tools/denoise-chart.py [--binary build/sweeptrace] [--bitterli ../shared/bitterli]
       [--refs /work/denoise-refs] [--ref-spp 4096] [--work /tmp/denoise-chart] [--threads 2]
       [--spp 4,8,16,32,64,128,256] [--denoise-spp 4,8,16,32,64] [--scenes cornell-box,classroom]
+      [--compare 32:256]     the table's and pictures' NFOR spp and raw spp (the issue's 32 and 256)
+      [--scale N]            sizes divided by N (a quick check of the script: --scale 8 --ref-spp 16
+                             --spp 4,8 --denoise-spp 4 --compare 4:8 --docs /tmp/docs-copy)
 """
 import argparse
 import os
@@ -119,11 +122,11 @@ def measure_scene(args, name, w, h, depth):
 
 def equal_relmse_spp(rows, target):
     """The raw spp whose relMSE would equal `target`, from relMSE - floor = a / spp."""
-    raw = [r for r in rows if r["kind"] == "raw" and r["spp"] >= 64]
+    raw = [r for r in rows if r["kind"] == "raw" and r["spp"] >= 64] or [r for r in rows if r["kind"] == "raw"][-1:]
     if not raw:
         return float("nan")
     floor = raw[0]["floor"]
-    a = float(np.median([(r["relmse"] - floor) * r["spp"] for r in raw]))
+    a = float(np.median([(r["relmse"] - floor) * r["spp"] for r in raw]))  # one point per spp: their median
     return a / (target - floor) if target > floor else float("inf")
 
 
@@ -132,12 +135,14 @@ def display(img):
 
 
 def picture(args, name, ref, docs):
+    nspp, rspp = args.compare
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
     work = os.path.join(args.work, name)
-    panels = [("raw 32 spp", colour(os.path.join(work, "raw-32.exr"))), ("NFOR 32 spp", colour(os.path.join(work, "nfor-32.pfm"))),
-              ("raw 256 spp", colour(os.path.join(work, "raw-256.exr"))), (f"reference {args.ref_spp} spp", ref)]
+    panels = [(f"raw {nspp} spp", colour(os.path.join(work, f"raw-{nspp}.exr"))),
+              (f"NFOR {nspp} spp", colour(os.path.join(work, f"nfor-{nspp}.pfm"))),
+              (f"raw {rspp} spp", colour(os.path.join(work, f"raw-{rspp}.exr"))), (f"reference {args.ref_spp} spp", ref)]
     scale = 1.0 / max(np.percentile(ref.max(axis=-1), 99), 1e-6)
     h, w = ref.shape[:2]
     fig, axes = plt.subplots(1, 4, figsize=(4 * w / 80, h / 80 + 0.35), dpi=100)
@@ -177,14 +182,16 @@ def chart(rows, docs):
     plt.close(fig)
 
 
-def table(rows, command):
+def table(rows, command, compare):
+    nspp, rspp = compare
     lines = [f"Generated {time.strftime('%Y-%m-%d %H:%M UTC', time.gmtime())} by:", "```", command, "```",
-             "| scene | raw 32 spp relMSE / FLIP | NFOR 32 spp relMSE / FLIP | raw 256 spp relMSE / FLIP | NFOR 32 <= raw 256 (relMSE, FLIP) "
-             "| raw spp of NFOR 32's relMSE | reference floor | CPU s: render 32 + denoise / render 256 |",
+             f"| scene | raw {nspp} spp relMSE / FLIP | NFOR {nspp} spp relMSE / FLIP | raw {rspp} spp relMSE / FLIP "
+             f"| NFOR {nspp} <= raw {rspp} (relMSE, FLIP) | raw spp of NFOR {nspp}'s relMSE | reference floor "
+             f"| CPU s: render {nspp} + denoise / render {rspp} |",
              "|---|---|---|---|---|---|---|---|"]
     for name in dict.fromkeys(r["scene"] for r in rows):
         get = {(r["kind"], r["spp"]): r for r in rows if r["scene"] == name}
-        r32, n32, r256 = get.get(("raw", 32)), get.get(("nfor", 32)), get.get(("raw", 256))
+        r32, n32, r256 = get.get(("raw", nspp)), get.get(("nfor", nspp)), get.get(("raw", rspp))
         if not (r32 and n32 and r256):
             continue
         eq = equal_relmse_spp([r for r in rows if r["scene"] == name], n32["relmse"])
@@ -207,7 +214,10 @@ def main():
     p.add_argument("--spp", default="4,8,16,32,64,128,256")
     p.add_argument("--denoise-spp", default="4,8,16,32,64")
     p.add_argument("--scenes", default=",".join(s[0] for s in SCENES))
+    p.add_argument("--compare", default="32:256")
+    p.add_argument("--scale", type=int, default=1)
     args = p.parse_args()
+    args.compare = tuple(int(v) for v in args.compare.split(":"))
     args.spp = [int(s) for s in args.spp.split(",")]
     args.denoise_spp = [int(s) for s in args.denoise_spp.split(",")]
     wanted = args.scenes.split(",")
@@ -215,9 +225,9 @@ def main():
     for name, w, h, depth in SCENES:
         if name not in wanted:
             continue
-        scene_rows, ref = measure_scene(args, name, w, h, depth)
+        scene_rows, ref = measure_scene(args, name, w // args.scale, h // args.scale, depth)
         rows += scene_rows
-        if 32 in args.denoise_spp and 256 in args.spp:
+        if args.compare[0] in args.denoise_spp and args.compare[1] in args.spp:
             picture(args, name, ref, args.docs)
     keys = ["scene", "kind", "spp", "cpu", "denoise_cpu", "relmse", "flip", "floor"]
     with open(os.path.join(args.docs, "denoising-data.tsv"), "w") as f:
@@ -230,8 +240,8 @@ def main():
     text = open(md).read()
     begin, end = "<!-- denoise-chart: begin (generated, do not edit) -->", "<!-- denoise-chart: end -->"
     i, j = text.index(begin) + len(begin), text.index(end)
-    open(md, "w").write(text[:i] + "\n" + table(rows, command) + "\n" + text[j:])
-    print(table(rows, command))
+    open(md, "w").write(text[:i] + "\n" + table(rows, command, args.compare) + "\n" + text[j:])
+    print(table(rows, command, args.compare))
 
 
 if __name__ == "__main__":
