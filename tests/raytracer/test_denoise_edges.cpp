@@ -107,7 +107,7 @@ double flat_mse(const Image& a, const Image& ref, const std::vector<bool>& edges
 }  // namespace
 
 TEST_CASE("nfor keeps a texture edge, a thin bright line and a mirror reflection that a blur of its strength loses",
-          "[.][denoise][nfor-edges]") {
+          "[.][nfor-edges]") {
     ScratchDir dir("denoise-edges");
     { std::ofstream(dir / "edges.json") << kScene; }
     test::CliRun r = test::run_sweeptrace(dir.path(), "render edges.json --aovs -o raw.exr --quiet");
