@@ -54,6 +54,15 @@ inline SumUInt magnitude(SumInt x) { return x < 0 ? static_cast<SumUInt>(0) - st
 // x^2 added to q, x a fixed-point sample (to_fixed).
 inline void add_square(SquareSum& q, SumInt x) {
     const SumUInt m = magnitude(x);
+    if ((m >> 64) == 0) {  // |x| < 2^64 (a sample below 256): one 64 x 64 -> 128-bit product
+        const SumUInt p = m * m;
+        const SumUInt lo = (static_cast<SumUInt>(q.limb[1]) << 64 | q.limb[0]) + p;
+        const bool carry = lo < p;
+        q.limb[0] = static_cast<std::uint64_t>(lo);
+        q.limb[1] = static_cast<std::uint64_t>(lo >> 64);
+        if (carry && ++q.limb[2] == 0) ++q.limb[3];
+        return;
+    }
     q += wide_product(m, m);
 }
 

@@ -42,6 +42,34 @@ inline PlaneTruth plane_truth(int size, int sub, const std::function<int(double,
     return t;
 }
 
+// The scene plane_truth's camera sees: a square film of `size` pixels, the camera at (0, 0, 3)
+// looking at the origin with a 50-degree field of view, nothing in it yet.
+inline Scene plane_test_scene(int size) {
+    Scene scene = empty_scene(size, size);
+    scene.camera.position = {0.0f, 0.0f, 3.0f};
+    scene.camera.vfov_degrees = 50.0f;
+    return scene;
+}
+
+// The checker the plane tests texture a unit square with (3 x 3 squares over it, uv = its object
+// x, y), and the region of world point (wx, wy) once the square is moved to [-1, 1]^2 (scale 2,
+// translate -1): 0 or 1, the checker's colours a or b; 2, off the square.
+inline Texture plane_checker() {
+    Texture checker;
+    checker.a = glm::vec3(0.2f);
+    checker.b = glm::vec3(0.7f, 0.5f, 0.3f);
+    checker.scale = 3.0f;
+    return checker;
+}
+inline int checker_square_region(double wx, double wy) {
+    const double u = (wx + 1) / 2, v = (wy + 1) / 2;
+    const bool on = u > 0 && u < 1 && v > 0 && v < 1;
+    return on ? int(std::floor(3 * u) + std::floor(3 * v)) % 2 : 2;
+}
+inline glm::mat4 checker_square_placement() {
+    return glm::translate(glm::mat4(1.0f), {-1.0f, -1.0f, 0.0f}) * glm::scale(glm::mat4(1.0f), glm::vec3(2.0f));
+}
+
 // Deterministic: every sample of a masked pixel reads exactly albedo x L (a diffuse surface facing
 // only the sky; the cosine sample's weight is the albedo); 1e-6 covers its roundings.
 inline void check_plane_render(const Scene& scene, const PlaneTruth& truth) {

@@ -5,6 +5,7 @@
 // untouched by them, adaptive sampling's own counts, and bdpt and vcm recording the path tracer's
 // quantity (means within noise on a scene with glass, whose delta bounces each integrator draws
 // with its own numbers).
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <string>
@@ -117,27 +118,16 @@ TEST_CASE("aovs: variance of the mean from exact sums is 0 for equal samples and
 
 TEST_CASE("aovs: a checker-textured quad's albedo, normal and depth against the closed form, misses zero", "[render][aovs]") {
     constexpr int size = 32, sub = 8;
-    Scene scene = empty_scene(size, size);
-    scene.camera.position = {0.0f, 0.0f, 3.0f};
-    scene.camera.vfov_degrees = 50.0f;
-    Texture checker;
-    checker.a = glm::vec3(0.2f);
-    checker.b = glm::vec3(0.7f, 0.5f, 0.3f);
-    checker.scale = 3.0f;
+    Scene scene = plane_test_scene(size);
+    const Texture checker = plane_checker();
     scene.textures.push_back(checker);
     Material m = diffuse(0.0f);
     m.albedo_texture = 0;
-    const glm::mat4 xf = glm::translate(glm::mat4(1.0f), {-1.0f, -1.0f, 0.0f}) * glm::scale(glm::mat4(1.0f), glm::vec3(2.0f));
-    add_object(scene, collision::Quad{glm::vec3(0.0f), {1.0f, 0.0f, 0.0f}, {0.0f, 1.0f, 0.0f}}, add_material(scene, m), xf, "q");
+    add_object(scene, collision::Quad{glm::vec3(0.0f), {1.0f, 0.0f, 0.0f}, {0.0f, 1.0f, 0.0f}}, add_material(scene, m),
+               checker_square_placement(), "q");
     // Region 0/1: the checker's colours, 2: the background (a miss: albedo 0).
-    const PlaneTruth truth = plane_truth(
-        size, sub,
-        [](double wx, double wy) {
-            const double u = (wx + 1) / 2, v = (wy + 1) / 2;
-            const bool on = u > 0 && u < 1 && v > 0 && v < 1;
-            return on ? int(std::floor(3 * u) + std::floor(3 * v)) % 2 : 2;
-        },
-        [&](int cell) { return cell == 2 ? glm::vec3(0.0f) : cell == 0 ? checker.a : checker.b; });
+    const PlaneTruth truth = plane_truth(size, sub, checker_square_region,
+                                         [&](int cell) { return cell == 2 ? glm::vec3(0.0f) : cell == 0 ? checker.a : checker.b; });
     const auto accel = make_accel(AccelKind::Bvh, scene);
     const RenderResult r = render_aovs(scene, *accel, 6, 1, IntegratorKind::Path);
     REQUIRE(r.features.size() == r.sums.size());
@@ -217,7 +207,7 @@ TEST_CASE("aovs: a sphere seen through a mirror gives its own normals and albedo
             }
         }
         INFO("largest |z| " << worst_z);
-        CHECK(tested > 40);
+        CHECK(tested >= 40);  // the pixels whose every film position sees the sphere in the mirror
     }
 }
 

@@ -93,7 +93,7 @@ TEST_CASE("aovs cli: farm parts with features merge into the whole render's EXR 
         REQUIRE(test::run_sweeptrace(dir.path(), "render aovs.json --quiet --spp 7 --samples 3:7 -o plain.exr").exit_code == 0);
         const test::CliRun bad = test::run_sweeptrace(dir.path(), "merge a.exr plain.exr -o mixed.exr");
         CHECK(bad.exit_code == 2);
-        CHECK_THAT(bad.err, Catch::Contains("feature outputs (--aovs) on vs off"));
+        CHECK_THAT(bad.err, Catch::Contains("feature outputs (--aovs) 'on' vs 'off'"));
         CHECK_FALSE(std::filesystem::exists(dir.path() / "mixed.exr"));
     }
     SECTION("adaptive, parts inside and past the pilot") {
@@ -148,6 +148,7 @@ TEST_CASE("aovs cli: a side file that is another output or an input is refused b
     std::filesystem::copy_file(dir.path() / "aovs.json", dir.path() / "s.depth.pfm");
     const test::CliRun over = test::run_sweeptrace(dir.path(), "render s.depth.pfm --aovs -o s.png");
     CHECK(over.exit_code == 2);
+    CHECK_THAT(over.err, Catch::Contains("output 's.depth.pfm' is the scene"));
     CHECK_FALSE(std::filesystem::exists(dir.path() / "s.png"));
     CHECK(aov_file_bytes(dir.path() / "s.depth.pfm") == aov_file_bytes(dir.path() / "aovs.json"));
     // A scene key of the wrong type names the key.

@@ -90,31 +90,19 @@ namespace {
 // adds the square (a quad, or an OBJ mesh with vt) with the given material.
 void check_checker_square(const std::function<void(Scene&, std::uint32_t, const glm::mat4&)>& add_square) {
     constexpr int size = 32, sub = 8;
-    Scene scene = empty_scene(size, size);
-    scene.camera.position = {0.0f, 0.0f, 3.0f};
-    scene.camera.vfov_degrees = 50.0f;
+    Scene scene = plane_test_scene(size);
     const glm::vec3 L(1.0f, 0.8f, 0.6f);
     scene.background.color = L;
-    Texture checker;
-    checker.a = glm::vec3(0.2f);
-    checker.b = glm::vec3(0.7f, 0.5f, 0.3f);
-    checker.scale = 3.0f;
+    const Texture checker = plane_checker();
     scene.textures.push_back(checker);
     Material m = diffuse(0.0f);
     m.albedo_texture = 0;
     // The unit quad in object space, scaled by 2 and moved: uv follows the object, not the world.
-    const glm::mat4 xf = glm::translate(glm::mat4(1.0f), {-1.0f, -1.0f, 0.0f}) * glm::scale(glm::mat4(1.0f), glm::vec3(2.0f));
-    add_square(scene, add_material(scene, m), xf);
+    add_square(scene, add_material(scene, m), checker_square_placement());
     // Truth: a pixel sees the plane z = 0 at world (x, y); uv = ((x + 1) / 2, (y + 1) / 2) on
     // the quad, the sky elsewhere. A diffuse surface facing only the sky reflects albedo x L.
-    const PlaneTruth truth = plane_truth(
-        size, sub,
-        [](double wx, double wy) {
-            const double u = (wx + 1) / 2, v = (wy + 1) / 2;
-            const bool on = u > 0 && u < 1 && v > 0 && v < 1;
-            return on ? int(std::floor(3 * u) + std::floor(3 * v)) % 2 : 2;
-        },
-        [&](int cell) { return cell == 2 ? L : (cell == 0 ? checker.a : checker.b) * L; });
+    const PlaneTruth truth = plane_truth(size, sub, checker_square_region,
+                                         [&](int cell) { return cell == 2 ? L : (cell == 0 ? checker.a : checker.b) * L; });
     check_plane_render(scene, truth);
 }
 

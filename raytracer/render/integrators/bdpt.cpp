@@ -95,6 +95,7 @@ glm::vec3 BdptIntegrator::sample(float x, float y, const glm::vec2& lens, float 
                                  std::uint64_t& rays, std::vector<Splat>& splats, SampleFeatures* features) const {
     thread_local Subpaths sp;
     glm::vec3 l(0.0f);
+    if (features != nullptr) *features = SampleFeatures{};  // light tracing alone: no camera subpath, a miss
     if (light_tracing_only_) {
         light_walk(time, sampler, rays, sp);
         for (int s = 1; s <= static_cast<int>(sp.light.size()) && s <= max_depth_; ++s)
