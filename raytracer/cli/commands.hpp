@@ -12,5 +12,6 @@ void add_noise_bench_command(CLI::App& app, int& exit_code);
 void add_merge_command(CLI::App& app, int& exit_code);
 void add_convert_command(CLI::App& app, int& exit_code);
 void add_reference_check_command(CLI::App& app, int& exit_code);
+void add_denoise_command(CLI::App& app, int& exit_code);
 
 }  // namespace sweeptrace

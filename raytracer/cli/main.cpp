@@ -1,4 +1,4 @@
-// sweeptrace: render | diff | accuracy | bench | noise-bench | merge | convert | reference-check. Bad input exits 2 with one message on stderr.
+// sweeptrace: render | diff | accuracy | bench | noise-bench | merge | convert | reference-check | denoise. Bad input exits 2 with one message on stderr.
 #include <cstdio>
 #include <exception>
 
@@ -19,6 +19,7 @@ int main(int argc, char** argv) {
     sweeptrace::add_merge_command(app, exit_code);
     sweeptrace::add_convert_command(app, exit_code);
     sweeptrace::add_reference_check_command(app, exit_code);
+    sweeptrace::add_denoise_command(app, exit_code);
     try {
         app.parse(argc, argv);
     } catch (const CLI::Success& e) {  // --help

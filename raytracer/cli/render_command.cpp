@@ -21,6 +21,7 @@
 #include "raytracer/accel/accel.hpp"
 #include "raytracer/cli/aov_outputs.hpp"
 #include "raytracer/cli/commands.hpp"
+#include "raytracer/cli/denoise_image.hpp"
 #include "raytracer/cli/render_identity.hpp"
 #include "raytracer/cli/render_part.hpp"
 #include "raytracer/cli/interrupt.hpp"
@@ -63,6 +64,7 @@ struct RenderArgs {
     bool skip_existing = false;
     bool strict = false;  // a .pbrt scene: anything approximated or ignored is an error
     bool aovs = false;    // feature outputs (cli/aov_outputs.hpp); also the scene's film.aovs
+    std::string denoise;  // --denoise FILE: NFOR on the feature image -o writes (cli/denoise_image.hpp)
     CLI::Option* time_opt = nullptr;
 };
 
@@ -144,6 +146,7 @@ std::vector<NamedFile> render_outputs(const RenderArgs& a, const std::filesystem
         outputs.push_back({"--forensics", a.forensics});
         outputs.push_back({"--forensics picture", forensics_picture(a.forensics)});
     }
+    if (!a.denoise.empty()) outputs.push_back({"--denoise", a.denoise});
     return outputs;
 }
 
@@ -187,6 +190,13 @@ int run_render(const RenderArgs& a) {
         }
         require(a.forensics.empty() || std::filesystem::path(a.forensics).extension() == ".json",
                 "--forensics '" + a.forensics + "': the report is a .json file");
+        if (!a.denoise.empty()) {
+            // The raw render stays: it is the feature image -o names, and the denoised one goes beside it.
+            require(a.samples.empty(), "--denoise makes a whole image: merge the farm parts, then run sweeptrace denoise on the result");
+            require(lowercase_extension(out) == ".exr",
+                    "--denoise needs -o OUT.exr: the feature image NFOR reads, kept beside the denoised image; got '" + out.string() + "'");
+            check_denoise_output(a.denoise);
+        }
     }
     const std::vector<NamedFile> outputs = render_outputs(a, out);
     check_outputs(outputs, {{"scene", scene_path}});  // the outputs' own clashes, before the load
@@ -194,7 +204,7 @@ int run_render(const RenderArgs& a) {
     Scene scene = pbrt ? std::move(*pbrt_scene) : load_scene(scene_path);
     for (const std::string& w : emitters_facing_nothing(scene)) std::fprintf(stderr, "sweeptrace: warning: %s\n", escape_control(w).c_str());
     a.limits.apply(scene);
-    if (a.aovs) scene.film.aovs = true;
+    if (a.aovs || !a.denoise.empty()) scene.film.aovs = true;
     if (!a.sampler.empty()) scene.film.sampler = a.sampler == "independent" ? SamplerKind::Independent : SamplerKind::Sobol;
     if (!a.integrator.empty())
         scene.film.integrator = a.integrator == "vcm"    ? IntegratorKind::Vcm
@@ -207,6 +217,7 @@ int run_render(const RenderArgs& a) {
     if (scene.film.aovs && !part) add_aov_outputs(all_outputs, out);  // a farm part keeps its feature sums in itself
     check_outputs(all_outputs, inputs);
     check_render_memory(scene, a.limits.memory_limit(), a.adaptive != "off");
+    if (!a.denoise.empty()) check_denoise_memory("--denoise '" + a.denoise + "'", scene.film.width, scene.film.height, thread_count);
 
     // A farm part: which samples, and the render they belong to; a re-run task skips a finished one.
     const SampleRange range =
@@ -312,6 +323,10 @@ int run_render(const RenderArgs& a) {
     if (st.cancelled)
         std::fprintf(stderr, "sweeptrace: interrupted: wrote %s with %d of %d samples per pixel\n", out.string().c_str(),
                      st.completed_spp, opt.spp);
+    else if (!a.denoise.empty()) {
+        const DenoiseReport d = denoise_file(out, a.denoise, thread_count);
+        if (!a.quiet) std::fprintf(stderr, "%s -> %s (NFOR, %.2f s)\n", out.string().c_str(), a.denoise.c_str(), d.seconds);
+    }
     if (st.budget_spent && !a.quiet)
         std::fprintf(stderr, "sweeptrace: --time %g s spent: %d spp reached\n", a.time, st.completed_spp);
     if (!a.quiet) {
@@ -392,6 +407,9 @@ void add_render_command(CLI::App& app, int& exit_code) {
                   "the first non-specular vertex, their variances and the even/odd half buffers. With -o OUT.exr all "
                   "in that one EXR (pbrt-v4 gbuffer channel names: Albedo.R, Ns.X, P.Z, ...); with .png/.pfm beside it "
                   "OUT.albedo.pfm, OUT.normal.pfm, OUT.depth.pfm (docs/aovs.md)");
+    cmd->add_option("--denoise", args->denoise,
+                    "Also write FILE (.exr, .pfm or .png): the render denoised by NFOR from its features (implies --aovs; "
+                    "-o must be an .exr, the feature image, which is kept; docs/denoising.md)");
     cmd->add_flag("--strict", args->strict,
                   "A .pbrt scene: refuse (exit 2) anything the translation would approximate or ignore, instead of a warning");
     args->samples_opt = cmd->add_option("--samples", args->samples,

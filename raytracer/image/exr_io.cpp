@@ -19,15 +19,14 @@
 #include "raytracer/input_error.hpp"
 
 namespace sweeptrace::formats {
-namespace {
 
-// The data window as the first header states it, read before OpenEXR sees the file:
+// exr_header_window (image_formats.hpp): the data window as the first header states it, read before OpenEXR sees the file:
 // Imf::InputFile allocates line buffers from the header's width while it opens the file, so a
 // 391-byte file claiming 3-million-pixel lines took 1.8 s and hundreds of MB under ASan before
 // any check could run (found by tests/fuzz/fuzz_exr). Attributes are name\0 type\0 int32 size,
 // then the value; an empty name ends the header. Nullopt when the bytes are not that shape
 // (OpenEXR then says what is wrong).
-std::optional<std::pair<long long, long long>> header_window(const std::filesystem::path& path) {
+std::optional<std::pair<long long, long long>> exr_header_window(const std::filesystem::path& path) {
     std::ifstream in(path, std::ios::binary);
     std::vector<char> b(1 << 16);
     in.read(b.data(), static_cast<std::streamsize>(b.size()));
@@ -59,8 +58,6 @@ std::optional<std::pair<long long, long long>> header_window(const std::filesyst
     }
 }
 
-}  // namespace
-
 void write_exr(const Image& image, const std::filesystem::path& path) {
     if (image.width <= 0 || image.height <= 0)
         throw InputError("cannot write '" + path.string() + "': image is " + std::to_string(image.width) + "x" +
@@ -86,7 +83,7 @@ void write_exr(const Image& image, const std::filesystem::path& path) {
 
 Image read_exr(const std::filesystem::path& path) {
     check_image_file(path);
-    if (const auto window = header_window(path)) check_image_size(path, "EXR data window", window->first, window->second);
+    if (const auto window = exr_header_window(path)) check_image_size(path, "EXR data window", window->first, window->second);
     try {
         Imf::InputFile file(path.c_str());
         const Imath::Box2i window = file.header().dataWindow();

@@ -16,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "raytracer/image/exr_channels.hpp"
 #include "raytracer/image/feature_sums.hpp"
 
 namespace sweeptrace {
@@ -26,13 +27,6 @@ std::vector<std::string> feature_exr_channel_names();
 // Atomic (temporary file + rename). Throws InputError naming `path`.
 void write_feature_exr(const FeatureLayers& layers, int spp, const std::filesystem::path& path);
 
-// Every channel of an EXR file as float, by name (tests, tools): the data window's size, and
-// `sweeptrace:spp` when present (else -1). Throws InputError naming `path`.
-struct ExrChannels {
-    int width = 0, height = 0;
-    int spp = -1;
-    std::map<std::string, std::vector<float>> channels;
-};
-ExrChannels read_exr_channels(const std::filesystem::path& path);
+// It is read back, as every EXR's named channels are, by read_exr_channels (exr_channels.hpp).
 
 }  // namespace sweeptrace

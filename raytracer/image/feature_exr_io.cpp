@@ -2,7 +2,6 @@
 #include <OpenEXR/ImfChannelList.h>
 #include <OpenEXR/ImfFrameBuffer.h>
 #include <OpenEXR/ImfHeader.h>
-#include <OpenEXR/ImfInputFile.h>
 #include <OpenEXR/ImfIntAttribute.h>
 #include <OpenEXR/ImfOutputFile.h>
 
@@ -18,8 +17,6 @@
 
 namespace sweeptrace {
 namespace {
-
-constexpr const char* kSppAttribute = "sweeptrace:spp";
 
 // A channel: its name and where its floats are (base pointer and stride in bytes).
 struct Plane {
@@ -72,7 +69,7 @@ void write_feature_exr(const FeatureLayers& layers, int spp, const std::filesyst
         try {
             Imf::Header header(w, h);
             header.compression() = Imf::ZIP_COMPRESSION;
-            header.insert(kSppAttribute, Imf::IntAttribute(spp));
+            header.insert(kExrSppAttribute, Imf::IntAttribute(spp));
             Imf::FrameBuffer frame;
             for (const Plane& p : planes) {
                 header.channels().insert(p.name, Imf::Channel(Imf::FLOAT));
@@ -86,37 +83,6 @@ void write_feature_exr(const FeatureLayers& layers, int spp, const std::filesyst
             throw InputError("cannot write '" + path.string() + "': " + reason_or(e.what(), "OpenEXR failed"));
         }
     });
-}
-
-ExrChannels read_exr_channels(const std::filesystem::path& path) {
-    formats::check_image_file(path);
-    try {
-        Imf::InputFile file(path.c_str());
-        const Imath::Box2i win = file.header().dataWindow();
-        const long long w = static_cast<long long>(win.max.x) - win.min.x + 1;
-        const long long h = static_cast<long long>(win.max.y) - win.min.y + 1;
-        formats::check_image_size(path, "EXR data window", w, h);
-        ExrChannels out;
-        out.width = static_cast<int>(w);
-        out.height = static_cast<int>(h);
-        if (const auto* spp = file.header().findTypedAttribute<Imf::IntAttribute>(kSppAttribute)) out.spp = spp->value();
-        Imf::FrameBuffer frame;
-        for (auto it = file.header().channels().begin(); it != file.header().channels().end(); ++it) {
-            std::vector<float>& v = out.channels[it.name()];
-            v.assign(static_cast<std::size_t>(w * h), 0.0f);
-            char* base = reinterpret_cast<char*>(v.data()) -
-                         (static_cast<std::ptrdiff_t>(win.min.x) + static_cast<std::ptrdiff_t>(win.min.y) * w) *
-                             static_cast<std::ptrdiff_t>(sizeof(float));
-            frame.insert(it.name(), Imf::Slice(Imf::FLOAT, base, sizeof(float), sizeof(float) * static_cast<std::size_t>(w)));
-        }
-        file.setFrameBuffer(frame);
-        file.readPixels(win.min.y, win.max.y);
-        return out;
-    } catch (const InputError&) {
-        throw;
-    } catch (const std::exception& e) {
-        throw InputError("cannot read '" + path.string() + "': not a valid EXR file (" + reason_or(e.what(), "OpenEXR failed") + ")");
-    }
 }
 
 }  // namespace sweeptrace

@@ -4,6 +4,8 @@
 // naming the file.
 #include <cstddef>
 #include <filesystem>
+#include <optional>
+#include <utility>
 #include <vector>
 
 #include "raytracer/image/image.hpp"
@@ -18,6 +20,10 @@ Image read_pfm(const std::filesystem::path& path);
 
 void write_exr(const Image& image, const std::filesystem::path& path);
 Image read_exr(const std::filesystem::path& path);
+// The data window's width and height as the file's first header states it, read from the bytes
+// before OpenEXR opens the file (which allocates from it); nullopt when the bytes are not a
+// plain EXR header (OpenEXR then says what is wrong). Both EXR readers check it first.
+std::optional<std::pair<long long, long long>> exr_header_window(const std::filesystem::path& path);
 
 // Radiance .hdr (RGBE), read only: linear float.
 Image read_hdr(const std::filesystem::path& path);

@@ -856,6 +856,78 @@ pbrt_case("pbrt-medium-g", E + r"scene\.pbrt:3: MakeNamedMedium \"fog\": \"g\" m
           PBRT_OK + 'MakeNamedMedium "fog" "string type" "homogeneous" "float g" 1\nMediumInterface "fog" ""\nShape "sphere"\n')
 
 
+# --- sweeptrace denoise (issue 42): feature images without a channel NFOR reads, a NaN feature, a
+# layer smaller than the image; the output naming the input. Written as uncompressed scanline EXRs.
+def denoise_channel_names():
+    names = []
+    for n in ["R", "G", "B", "Albedo.R", "Albedo.G", "Albedo.B", "Ns.X", "Ns.Y", "Ns.Z", "P.Z"]:
+        layer, _, rest = n.rpartition(".")
+        names += [n, "Even." + n, "Odd." + n, f"{layer}Variance.{rest}" if layer else "Variance." + n]
+    return names
+
+
+def float_exr(w, h, channels, sampling=None):
+    """An uncompressed scanline EXR of FLOAT channels {name: list of values (row-major, per
+    sampled pixel)}; sampling {name: (xs, ys)} subsamples a channel."""
+    sampling = sampling or {}
+    names = sorted(channels)
+    def attr(name, kind, value):
+        return name.encode() + b"\0" + kind.encode() + b"\0" + struct.pack("<i", len(value)) + value
+    chlist = b"".join(n.encode() + b"\0" + struct.pack("<iB3xii", 2, 0, *sampling.get(n, (1, 1))) for n in names) + b"\0"
+    box = struct.pack("<iiii", 0, 0, w - 1, h - 1)
+    header = (b"\x76\x2f\x31\x01" + struct.pack("<i", 2) + attr("channels", "chlist", chlist) +
+              attr("compression", "compression", b"\0") + attr("dataWindow", "box2i", box) +
+              attr("displayWindow", "box2i", box) + attr("lineOrder", "lineOrder", b"\0") +
+              attr("pixelAspectRatio", "float", struct.pack("<f", 1.0)) +
+              attr("screenWindowCenter", "v2f", struct.pack("<ff", 0, 0)) +
+              attr("screenWindowWidth", "float", struct.pack("<f", 1.0)) + b"\0")
+    lines = []
+    for y in range(h):
+        data = b""
+        for n in names:
+            xs, ys = sampling.get(n, (1, 1))
+            if y % ys == 0:
+                sw = w // xs
+                row = channels[n][(y // ys) * sw:(y // ys + 1) * sw]
+                data += struct.pack(f"<{sw}f", *row)
+        lines.append(struct.pack("<ii", y, len(data)) + data)
+    at = len(header) + 8 * h
+    table = b""
+    for line in lines:
+        table += struct.pack("<Q", at)
+        at += len(line)
+    return header + table + b"".join(lines)
+
+
+def feature_exr(w=4, h=4, drop=(), nan=None, sampling=None):
+    sampling = sampling or {}
+    ch = {}
+    for n in denoise_channel_names():
+        if n in drop:
+            continue
+        xs, ys = sampling.get(n, (1, 1))
+        ch[n] = [0.5] * ((w // xs) * (h // ys))
+    if nan:
+        name, x, y = nan
+        ch[name][y * w + x] = float("nan")
+    return float_exr(w, h, ch, sampling)
+
+
+def denoise_case(name, pattern, image, args="-o out.exr"):
+    case(name, 2, pattern, f"denoise in.exr {args}", {"in.exr": image})
+
+
+denoise_case("denoise-no-features", E + r"'in\.exr' has no channel 'Even\.R': denoise needs colour, features",
+             float_exr(4, 4, {c: [0.5] * 16 for c in "RGB"}))
+denoise_case("denoise-no-odd-albedo", E + r"'in\.exr' has no channel 'Odd\.Albedo\.G'", feature_exr(drop=("Odd.Albedo.G",)))
+denoise_case("denoise-nan-feature", E + r"'in\.exr': channel 'Ns\.X' is NaN at pixel \(1, 2\)", feature_exr(nan=("Ns.X", 1, 2)))
+denoise_case("denoise-layer-smaller", E + r"cannot read 'in\.exr': channel 'Albedo\.R' is subsampled 2x2: its layer is smaller than the image's 4x4",
+             feature_exr(sampling={"Albedo.R": (2, 2)}))
+denoise_case("denoise-out-is-input", E + r"output '\./in\.exr' is the image to denoise 'in\.exr'", feature_exr(), "-o ./in.exr")
+denoise_case("denoise-out-extension", E + r"output 'out\.txt': unknown image extension '\.txt'", feature_exr(), "-o out.txt")
+case("denoise-not-exr", 2, E + r"cannot denoise 'in\.png': a feature image is an \.exr file", "denoise in.png -o out.exr", {"in.png": GOOD})
+
+
 def main():
     with open(os.path.join(HERE, "manifest.tsv"), "w") as f:
         f.write("# name\texit\tpattern (Python re, searched in the one stderr line)\targuments\tsetup\n")

@@ -1,0 +1,100 @@
+// The NFOR pipeline (nfor.hpp). The parameters are the paper's, as Tungsten's implementation
+// sets them: features prefiltered with 7x7 patches in 11x11 windows at k = 0.5; regression
+// windows of 19x19 with 7x7 patches; candidates k = 0.5 and 1.0; error and selection maps
+// smoothed with 3x3 patches in 19x19 windows at k = 1; the second pass's features with 7x7
+// patches in 5x5 windows at k = 0.5.
+#include "raytracer/denoise/nfor.hpp"
+
+#include <algorithm>
+#include <utility>
+#include <vector>
+
+#include "raytracer/denoise/nl_means.hpp"
+#include "raytracer/denoise/regression.hpp"
+#include "raytracer/denoise/tiles.hpp"
+
+namespace sweeptrace::denoise {
+namespace {
+
+constexpr float kCandidateK[2] = {0.5f, 1.0f};
+
+// The mean of two buffers and, as its variance of the mean, a quarter of their squared
+// difference: the two-sample estimate for two independent estimates of the same value.
+std::pair<Planes, Planes> mean_and_variance(const Planes& a, const Planes& b) {
+    Planes mean(a.width, a.height, a.channels), variance(a.width, a.height, a.channels);
+    for (std::size_t i = 0; i < a.data.size(); ++i) {
+        const float d = b.data[i] - a.data[i];
+        mean.data[i] = 0.5f * (a.data[i] + b.data[i]);
+        variance.data[i] = 0.25f * d * d;
+    }
+    return {std::move(mean), std::move(variance)};
+}
+
+}  // namespace
+
+Planes nfor(const NforInput& in) {
+    const Buffers& color = in.color;
+    const Buffers& features = in.features;
+
+    // 1. Feature prefiltering: each half guided by the other.
+    const NlMeansParams prefilter{3, 5, 0.5f, 2.0f};
+    Planes features_even = nl_means(features.even, features.odd, features.variance, prefilter);
+    Planes features_odd = nl_means(features.odd, features.even, features.variance, prefilter);
+
+    // 2. Each half's colour regressed on the other half's features, weighted on the other half's
+    // colour, per candidate bandwidth; 3. its error estimated from the halves.
+    Planes candidate_even[2], candidate_odd[2], error[2];
+    for (int k = 0; k < 2; ++k) {
+        const RegressionParams regression{3, 9, kCandidateK[k], 2.0f};
+        candidate_even[k] = collaborative_regression(color.even, color.odd, color.variance, features_odd, regression);
+        candidate_odd[k] = collaborative_regression(color.odd, color.even, color.variance, features_even, regression);
+        // The even half's filtered value against the odd half's noisy one: the squared difference
+        // overestimates the error by the odd half's variance (twice the full mean's), and the
+        // same the other way; the two filtered halves' own spread is taken out too.
+        Planes noisy_error(color.mean.width, color.mean.height, 3);
+        for (std::size_t i = 0; i < noisy_error.data.size(); ++i) {
+            const float v2 = 2.0f * color.variance.data[i];
+            const float de = color.odd.data[i] - candidate_even[k].data[i], dodd = color.even.data[i] - candidate_odd[k].data[i];
+            const float spread = candidate_odd[k].data[i] - candidate_even[k].data[i];
+            noisy_error.data[i] = 0.5f * ((de * de - v2) + (dodd * dodd - v2)) - 0.25f * spread * spread;
+        }
+        error[k] = nl_means(noisy_error, color.mean, color.variance, {1, 9, 1.0f, 1.0f});
+    }
+    // Selection: 1 where the wider candidate's error is smaller, smoothed like the error maps.
+    Planes select(color.mean.width, color.mean.height, 3);
+    for (std::size_t i = 0; i < select.data.size(); ++i) select.data[i] = error[0].data[i] < error[1].data[i] ? 0.0f : 1.0f;
+    select = nl_means(select, color.mean, color.variance, {1, 9, 1.0f, 1.0f});
+    Planes result_even(color.mean.width, color.mean.height, 3), result_odd = result_even;
+    for (std::size_t i = 0; i < select.data.size(); ++i) {
+        const float s = select.data[i];
+        result_even.data[i] = candidate_even[0].data[i] + s * (candidate_even[1].data[i] - candidate_even[0].data[i]);
+        result_odd.data[i] = candidate_odd[0].data[i] + s * (candidate_odd[1].data[i] - candidate_odd[0].data[i]);
+    }
+    for (int k = 0; k < 2; ++k) candidate_even[k] = candidate_odd[k] = error[k] = Planes();
+
+    // 4. Second pass: the halves' mean, regressed on the halves' mean features (lightly
+    // filtered), with the halves' spread as the variance of both.
+    auto [feature_mean, feature_variance] = mean_and_variance(features_even, features_odd);
+    features_even = features_odd = Planes();
+    const Planes final_features = nl_means(feature_mean, feature_mean, feature_variance, {3, 2, 0.5f, 1.0f});
+    feature_mean = feature_variance = Planes();
+    const auto [color_mean, color_variance] = mean_and_variance(result_even, result_odd);
+    return collaborative_regression(color_mean, color_mean, color_variance, final_features, {3, 9, 1.0f, 2.0f});
+}
+
+std::uint64_t nfor_memory_bytes(int width, int height, int feature_channels, int threads) {
+    // Whole-image float channels alive at once, at the heaviest step (the second candidate's
+    // regression): the prefiltered features of both halves (2m), four candidates (12), two error
+    // maps and one being made (9), and the regression's own result, weights and its tiles'
+    // accumulation buffers (4 channels over tiles grown by R = 9 on each side: (50/32)^2 < 2.5,
+    // so 4 + 10). The second pass holds at most 4m + 12. 4m + 40 bounds both.
+    const std::uint64_t pixels = std::uint64_t(width) * std::uint64_t(height);
+    const std::uint64_t channels = 4 * std::uint64_t(feature_channels) + 40;
+    // Per thread: a regression tile's weights (19^2 offsets x 32^2 centres) and an NL-means
+    // tile's double sums (2 x channels x 32^2), with the patch scratch (below 64 KiB).
+    const std::uint64_t tile = std::uint64_t(kTileSize) * kTileSize;
+    const std::uint64_t per_thread = 19 * 19 * tile * sizeof(float) + 2 * std::uint64_t(std::max(feature_channels, 3)) * tile * sizeof(double) + (64u << 10);
+    return pixels * channels * sizeof(float) + std::uint64_t(std::max(threads, 1)) * per_thread;
+}
+
+}  // namespace sweeptrace::denoise

@@ -1,0 +1,43 @@
+#pragma once
+// NL-means with the variance-aware patch distance of Rousselle, Manzi and Zwicker, "Robust
+// denoising using feature and color information" (2013), as NFOR uses it (Bitterli et al. 2016,
+// sections 5.1 and 5.3): for pixels p, q of a guide u with variance of the mean Var,
+//     d(p, q) = ((u(p) - u(q))^2 - (Var p + min(Var p, Var q))) / (k^2 (Var p + Var q)),
+// averaged over the (2F + 1)^2 patch pairs around p and q (clipped to the image), and the weight
+// of q in p's average is exp(-max(0, d)). Subtracting the variance makes two noisy copies of the
+// same value distance 0 in expectation; k scales how far apart they may be. Each channel is
+// weighted by its own distance (nl_means), or all by the largest (regression.hpp).
+#include <vector>
+
+#include "raytracer/denoise/planes.hpp"
+
+namespace sweeptrace::denoise {
+
+struct NlMeansParams {
+    int patch_radius = 3;   // F: patches of (2F + 1)^2 pixels
+    int search_radius = 5;  // R: a pixel averages its (2R + 1)^2 neighbours
+    float k = 0.5f;         // larger: dissimilar patches count more (stronger filtering)
+    // The guide's variance is this times `variance`: 2 when a half buffer (half the samples) is
+    // guided by the full image's variance of the mean.
+    float variance_scale = 1.0f;
+};
+
+// Working buffers of patch_distances, reused across offsets by one task.
+struct PatchScratch {
+    std::vector<float> pixel, row;
+    std::vector<double> column, patch_columns;
+};
+
+// The patch distance d of every pixel p of `tile` whose neighbour p + (dx, dy) is inside the
+// image, per channel of `guide`: written to dist[c * tile pixels + (y - tile.y0) * tile.width()
+// + (x - tile.x0)] (dist is resized to channels * tile pixels). Returns the part of `tile` that
+// was written (pixels whose neighbour is outside are left as they were).
+Rect patch_distances(const Planes& guide, const Planes& variance, const NlMeansParams& params, const Rect& tile, int dx, int dy,
+                     PatchScratch& scratch, std::vector<float>& dist);
+
+// `image` filtered by NL-means weights computed on `guide` (same size and channels; `variance`
+// is the guide's variance of the mean): each channel averaged with its own weights. Parallel
+// over tiles, each pixel's sum taken in one fixed order: bit-identical at any thread count.
+Planes nl_means(const Planes& image, const Planes& guide, const Planes& variance, const NlMeansParams& params);
+
+}  // namespace sweeptrace::denoise

@@ -1,0 +1,35 @@
+#pragma once
+// The denoiser's unit of parallel work: square tiles of the image, each computed by one task from
+// its inputs alone, so the result does not depend on how many threads run them.
+#include <algorithm>
+#include <vector>
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+#include "raytracer/denoise/planes.hpp"
+
+namespace sweeptrace::denoise {
+
+// 32 pixels: a tile's working buffers (a few channels of (32 + 2 * patch radius)^2 floats per
+// offset) stay in the core's cache, and a 320x180 image still has 60 tiles for the threads.
+inline constexpr int kTileSize = 32;
+
+inline std::vector<Rect> image_tiles(int width, int height) {
+    std::vector<Rect> tiles;
+    for (int y = 0; y < height; y += kTileSize)
+        for (int x = 0; x < width; x += kTileSize)
+            tiles.push_back({x, y, std::min(x + kTileSize, width), std::min(y + kTileSize, height)});
+    return tiles;
+}
+
+// Calls work(tile_index, tile) for every tile, in parallel (the caller's tbb::task_arena sets the
+// threads); `work` must write only what belongs to its tile.
+template <class Work>
+void for_each_tile(const std::vector<Rect>& tiles, const Work& work) {
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, tiles.size(), 1), [&](const tbb::blocked_range<std::size_t>& r) {
+        for (std::size_t i = r.begin(); i != r.end(); ++i) work(i, tiles[i]);
+    });
+}
+
+}  // namespace sweeptrace::denoise

@@ -1,0 +1,134 @@
+// NFOR (raytracer/denoise/) on synthetic images whose truth is known: a constant image comes back
+// unchanged, a colour that depends linearly on a high-frequency feature is recovered (which no
+// spatial filter of the noisy colour can do), any thread count gives the same bits, and the
+// regression's solve survives the singular windows every flat wall gives it.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <cstring>
+#include <random>
+
+#include <tbb/task_arena.h>
+
+#include "denoise_test_images.hpp"
+#include "raytracer/denoise/least_squares.hpp"
+#include "raytracer/denoise/nfor.hpp"
+#include "raytracer/input_error.hpp"
+
+namespace {
+
+using namespace sweeptrace;
+using namespace sweeptrace::testing;
+
+double rmse(const denoise::Planes& a, const denoise::Planes& b) {
+    double s = 0.0;
+    for (std::size_t i = 0; i < a.data.size(); ++i) s += double(a.data[i] - b.data[i]) * double(a.data[i] - b.data[i]);
+    return std::sqrt(s / double(a.data.size()));
+}
+
+denoise::Planes run_nfor(const denoise::NforInput& in, int threads) {
+    tbb::task_arena arena(threads);
+    denoise::Planes out;
+    arena.execute([&] { out = denoise::nfor(in); });
+    return out;
+}
+
+// A box filter of the noisy mean, radius r: the "blur of the same strength" NFOR must beat.
+denoise::Planes box_blur(const denoise::Planes& img, int r) {
+    denoise::Planes out(img.width, img.height, img.channels);
+    for (int c = 0; c < img.channels; ++c)
+        for (int y = 0; y < img.height; ++y)
+            for (int x = 0; x < img.width; ++x) {
+                double s = 0.0;
+                int n = 0;
+                for (int dy = -r; dy <= r; ++dy)
+                    for (int dx = -r; dx <= r; ++dx)
+                        if (x + dx >= 0 && x + dx < img.width && y + dy >= 0 && y + dy < img.height) {
+                            s += img.at(c, x + dx, y + dy);
+                            ++n;
+                        }
+                out.at(c, x, y) = float(s / n);
+            }
+    return out;
+}
+
+}  // namespace
+
+TEST_CASE("nfor: a constant image comes back unchanged, whatever its noisy features", "[denoise]") {
+    std::mt19937_64 rng(7);
+    std::uniform_real_distribution<float> u(0.0f, 1.0f);
+    const float value[3] = {0.25f, 0.5f, 4.0f};
+    SyntheticImage s = synthetic_image(
+        40, 36, 3, 0.0f, [&](int, int, int) { return u(rng); }, [&](int, int, int c, const float*) { return value[c]; });
+    // Noise is stated (variance of the mean 1e-2) though none was drawn, so the filters average.
+    for (float& v : s.input.color.variance.data) v = 1e-2f;
+    for (float& v : s.input.features.variance.data) v = 1e-2f;
+    const denoise::Planes out = run_nfor(s.input, 2);
+    REQUIRE(out.width == 40);
+    REQUIRE(out.height == 36);
+    double worst = 0.0;
+    for (int c = 0; c < 3; ++c)
+        for (int y = 0; y < out.height; ++y)
+            for (int x = 0; x < out.width; ++x) worst = std::max(worst, std::abs(double(out.at(c, x, y)) / value[c] - 1.0));
+    INFO("largest relative deviation " << worst);
+    // float rounding of sums over a few hundred window pixels, not a filter's error
+    CHECK(worst < 1e-5);
+}
+
+TEST_CASE("nfor: a colour linear in a per-pixel texture is recovered from its noise, which a box blur cannot do", "[denoise]") {
+    const float sigma = 0.1f;  // one half's noise; the mean's is 0.071
+    const SyntheticImage s = textured_image(48, 40, 11, sigma);
+    const denoise::Planes out = run_nfor(s.input, 2);
+    const double raw = rmse(s.input.color.mean, s.truth), denoised = rmse(out, s.truth);
+    const double blurred = rmse(box_blur(s.input.color.mean, 2), s.truth);
+    INFO("rmse raw " << raw << ", NFOR " << denoised << ", 5x5 box " << blurred);
+    // The regression fits colour = a + b albedo in every window and the truth is exactly that:
+    // what is left is the fit's noise, a small share of the raw noise.
+    CHECK(denoised < 0.5 * raw);
+    // The texture is per pixel: a spatial filter blurs it away and ends worse than the raw image.
+    CHECK(blurred > raw);
+}
+
+TEST_CASE("nfor: 1 and 2 threads give the same bits", "[denoise]") {
+    const SyntheticImage s = textured_image(70, 40, 5, 0.2f);  // 3x2 tiles, one partial
+    const denoise::Planes one = run_nfor(s.input, 1), two = run_nfor(s.input, 2);
+    REQUIRE(one.data.size() == two.data.size());
+    CHECK(std::memcmp(one.data.data(), two.data.data(), one.data.size() * sizeof(float)) == 0);
+}
+
+TEST_CASE("nfor: the window solve gives a constant feature coefficient 0 and still fits the rest", "[denoise]") {
+    // colour = 2 + 3 t over t = 0..4, with a second column constant 0 (a flat wall's normal,
+    // relative to the centre) and a third equal to the first (two features that say the same).
+    const int n = 4;
+    double a[n * n] = {}, b[n * 3] = {}, beta[n * 3];
+    for (int t = 0; t < 5; ++t) {
+        const double x[n] = {1.0, double(t), 0.0, double(t)};
+        const double y = 2.0 + 3.0 * t;
+        for (int i = 0; i < n; ++i) {
+            for (int j = 0; j < n; ++j) a[i * n + j] += x[i] * x[j];
+            for (int c = 0; c < 3; ++c) b[i * 3 + c] += x[i] * y * (c + 1);
+        }
+    }
+    denoise::solve_normal_equations(a, b, n, beta);
+    for (int c = 0; c < 3; ++c) {
+        CHECK(beta[0 * 3 + c] == Approx(2.0 * (c + 1)));
+        CHECK(beta[2 * 3 + c] == 0.0);
+        // The two equal columns share the slope; which one carries it is the pivot's choice.
+        CHECK(beta[1 * 3 + c] + beta[3 * 3 + c] == Approx(3.0 * (c + 1)));
+    }
+}
+
+TEST_CASE("nfor input: a missing channel and a NaN feature are named", "[denoise]") {
+    const SyntheticImage s = textured_image(8, 6, 1, 0.1f);
+    ExrChannels channels = as_channels(s.input);
+    REQUIRE_NOTHROW(denoise::nfor_input(channels, "in.exr"));
+    ExrChannels missing = channels;
+    missing.channels.erase("Odd.Ns.Y");
+    CHECK_THROWS_WITH(denoise::nfor_input(missing, "in.exr"), Catch::Contains("'in.exr' has no channel 'Odd.Ns.Y'"));
+    ExrChannels nan = channels;
+    nan.channels["Ns.X"][2 * 8 + 5] = std::nanf("");
+    CHECK_THROWS_WITH(denoise::nfor_input(nan, "in.exr"), Catch::Contains("channel 'Ns.X' is NaN at pixel (5, 2)"));
+    ExrChannels negative = channels;
+    negative.channels["AlbedoVariance.G"][0] = -1.0f;
+    CHECK_THROWS_WITH(denoise::nfor_input(negative, "in.exr"), Catch::Contains("channel 'AlbedoVariance.G' is negative at pixel (0, 0)"));
+}
