@@ -134,7 +134,7 @@ TEST_CASE("diff --variance-a/-b: noise-only pairs pass, a defect under the same 
     }
 }
 
-TEST_CASE("diff: a heatmap that is a folder is refused before the comparison; one that can be written is", "[image][diff][cli]") {
+TEST_CASE("diff: a heatmap that is a folder is refused before the comparison, and one that can be written is accepted", "[image][diff][cli]") {
     ScratchDir dir("diff-heat");
     Image t = read_image(reference_png);
     for (auto& p : t.pixels) p *= 0.8f;
