@@ -39,9 +39,14 @@ struct PixelSum {
 inline SumInt to_fixed(float v, bool& clamped) {
     clamped = std::fabs(v) > kSampleLimit;
     const float c = clamped ? std::copysign(kSampleLimit, v) : v;
-    // Exact: a power-of-two scale of a float in double. nearbyint rounds to the nearest integer
-    // (ties to even, the default mode); the result is an integer below 2^96, exact in SumInt.
-    const double r = std::nearbyint(static_cast<double>(c) * 0x1p56);
+    // Exact: a power-of-two scale of a float in double. Magnitudes of 2^33 and more are integers
+    // already (a float of magnitude >= 2^-33 is a multiple of 2^-56); below 2^51, adding and
+    // subtracting 1.5 * 2^52 rounds to the nearest integer, ties to even, because the sum lies in
+    // [2^52, 2^53), where doubles are the integers, and 1.5 * 2^52 is even: the very integer
+    // nearbyint gives in the default rounding mode, without its library call (feature outputs
+    // convert 12 values a sample). The result is an integer below 2^96, exact in SumInt.
+    double r = static_cast<double>(c) * 0x1p56;
+    if (std::fabs(r) < 0x1p51) r = (r + 0x1.8p52) - 0x1.8p52;
     // Below 2^62 (|v| < 64, nearly every sample) through int64: the same integer, without the
     // library call a double -> 128-bit conversion is (feature outputs convert 12 values a sample).
     if (std::fabs(r) < 0x1p62) return static_cast<std::int64_t>(r);

@@ -5,9 +5,12 @@
 #include <catch2/catch.hpp>
 
 #include <algorithm>
+#include <cmath>
+#include <cstdint>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <random>
 #include <string>
 #include <vector>
 
@@ -127,6 +130,35 @@ TEST_CASE("farm: double sums depend on the split, the fixed-point sum is exact d
     add_sample(s, glm::vec3(1.0f, -2.0f, 0x1p50f), clamped);
     CHECK(clamped);
     CHECK(mean_of(s, 1) == glm::vec3(1.0f, -2.0f, 0x1p40f));
+}
+
+TEST_CASE("farm: to_fixed rounds every float as nearbyint does, without calling it", "[farm]") {
+    // to_fixed rounds by adding and subtracting 1.5 * 2^52 below 2^51 and takes larger values as
+    // they are: the integer must be nearbyint's (ties to even) for every float, so sums made
+    // before the change and after agree. Each binary exponent from the subnormals to the clamp,
+    // both signs, its extreme mantissas and the ties between grid steps, and random mantissas.
+    std::mt19937 rng(7);
+    std::uniform_int_distribution<std::uint32_t> mantissa(0, (1u << 23) - 1);
+    std::int64_t checked = 0, mismatched = 0;
+    auto check = [&](std::uint32_t bits) {
+        float v;
+        std::memcpy(&v, &bits, sizeof v);
+        if (!std::isfinite(v) || std::fabs(v) > kSampleLimit) return;
+        bool clamped = true;
+        const SumInt got = to_fixed(v, clamped);
+        const SumInt want = static_cast<SumInt>(std::nearbyint(static_cast<double>(v) * 0x1p56));
+        ++checked;
+        mismatched += got != want || clamped ? 1 : 0;
+    };
+    for (std::uint32_t sign = 0; sign < 2; ++sign)
+        for (std::uint32_t exponent = 0; exponent <= 127 + 40; ++exponent) {
+            const std::uint32_t high = sign << 31 | exponent << 23;
+            for (std::uint32_t m : {0u, 1u, 2u, 3u, (1u << 22) - 1, 1u << 22, (1u << 22) + 1, (1u << 23) - 2, (1u << 23) - 1})
+                check(high | m);
+            for (int k = 0; k < 2048; ++k) check(high | mantissa(rng));
+        }
+    CHECK(checked > 600000);
+    CHECK(mismatched == 0);
 }
 
 TEST_CASE("farm: a part file keeps every bit of its sums and its identity, and rejects damage", "[farm]") {
