@@ -8,6 +8,7 @@
 #include "raytracer/image/partial_sum.hpp"
 #include "raytracer/input_error.hpp"
 #include "raytracer/render/integrators/path_vertex.hpp"
+#include "raytracer/render/renderer.hpp"
 
 namespace sweeptrace {
 
@@ -25,12 +26,12 @@ constexpr std::uint64_t kVcmBytesPerLightVertex = sizeof(PathVertex) + 20 + 16;
 // part whose range starts inside the pilot (its own pilot passes beside the whole pilot's).
 constexpr std::uint64_t kAdaptiveBytesPerPixel = sizeof(int) + sizeof(double) + 2 * (sizeof(PixelSum) + sizeof(glm::dvec3));
 // Feature outputs (film.aovs, render --aovs; image/feature_sums.hpp): per pixel the renderer's
-// exact sums by half and the pass in flight's features, then either the output's images (15
+// exact sums by half and the colours and features of the passes not yet added to them, then either the output's images (15
 // colour-sized layers and the depth variance) or, for a farm part, the sums' copy and their
 // words; the larger of those two counted. Adaptive sampling adds its copies of the sums (the
 // pass in flight's, and a part's own pilot passes), as for the colour.
 constexpr std::uint64_t kAovBytesPerPixel =
-    sizeof(FeatureSums) + sizeof(SampleFeatures) +
+    sizeof(FeatureSums) + kAovPendingPasses * (sizeof(SampleFeatures) + sizeof(glm::vec3)) +
     std::max<std::uint64_t>(15 * sizeof(glm::vec3) + sizeof(float), sizeof(FeatureSums) + kFeatureWords * sizeof(std::uint32_t));
 constexpr std::uint64_t kAovAdaptiveBytesPerPixel = 2 * sizeof(FeatureSums);
 // Per primitive of the acceleration structure (a triangle, or an analytic object at the top

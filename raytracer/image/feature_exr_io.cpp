@@ -69,6 +69,9 @@ void write_feature_exr(const FeatureLayers& layers, int spp, const std::filesyst
         try {
             Imf::Header header(w, h);
             header.compression() = Imf::ZIP_COMPRESSION;
+            // zlib's fastest level: on a 320x180 cornell-box feature image 0.100 CPU-s against
+            // 0.122 at OpenEXR's default (4), the file 2.7 MB at both: float noise barely deflates.
+            header.zipCompressionLevel() = 1;
             header.insert(kExrSppAttribute, Imf::IntAttribute(spp));
             Imf::FrameBuffer frame;
             for (const Plane& p : planes) {

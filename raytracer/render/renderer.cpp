@@ -74,7 +74,8 @@ public:
         if (opt.forensics != nullptr) opt.forensics->start(width_, height_, kTileSize, lights_);
         if (opt.aovs) {
             feature_sums_.resize(sum_.size());
-            pass_features_.resize(sum_.size());
+            pending_features_.resize(sum_.size() * kAovPendingPasses);
+            pending_colors_.resize(pending_features_.size());
         }
     }
 
@@ -131,6 +132,7 @@ public:
             completed_spp_.store(std::max(0, sample + 1 - keep_from), std::memory_order_release);
             samples_done_.fetch_add(static_cast<std::int64_t>(sum_.size()), std::memory_order_relaxed);
         }
+        add_pending_features();
         return done;
     }
 
@@ -279,14 +281,36 @@ private:
                                       add_sample(kept_sum_[i], pass_[i], c);
                                       kept_sq_[i] += v * v;
                                   }
-                                  if (!feature_sums_.empty()) {
-                                      bool fc = false;  // the colour's clamp is counted above
-                                      add_feature_sample(feature_sums_[i], sample, pass_[i], pass_features_[i], fc);
-                                      if (kept) add_feature_sample(kept_features_[i], sample, pass_[i], pass_features_[i], fc);
-                                  }
+                                  if (!feature_sums_.empty())
+                                      pending_colors_[i * kAovPendingPasses + pending_passes_.size()] = pass_[i];
                               }
                               if (clamped != 0) clamped_.fetch_add(clamped, std::memory_order_relaxed);
                           });
+        if (feature_sums_.empty()) return;
+        pending_passes_.push_back({sample, kept});
+        if (pending_passes_.size() == kAovPendingPasses) add_pending_features();
+    }
+
+    // The pending passes' colours and features added to the exact feature sums, each pixel's in
+    // pass order. Touching a pixel's 712 bytes of sums once per kAovPendingPasses passes instead
+    // of every pass is what made AOVs cheap on a fast scene: the sums are integers, so the result
+    // is the same whenever they are added (cornell-box 320x180, 64 spp: see docs/aovs.md).
+    void add_pending_features() {
+        if (pending_passes_.empty()) return;
+        tbb::parallel_for(tbb::blocked_range<std::size_t>(0, feature_sums_.size(), 1024),
+                          [&](const tbb::blocked_range<std::size_t>& r) {
+                              for (std::size_t i = r.begin(); i < r.end(); ++i)
+                                  for (std::size_t k = 0; k < pending_passes_.size(); ++k) {
+                                      const std::size_t slot = i * kAovPendingPasses + k;
+                                      bool clamped = false;  // the colour's clamp is counted with its sum
+                                      add_feature_sample(feature_sums_[i], pending_passes_[k].sample, pending_colors_[slot],
+                                                         pending_features_[slot], clamped);
+                                      if (pending_passes_[k].kept)
+                                          add_feature_sample(kept_features_[i], pending_passes_[k].sample,
+                                                             pending_colors_[slot], pending_features_[slot], clamped);
+                                  }
+                          });
+        pending_passes_.clear();
     }
 
     // The light-tracing splats of the pass just finished, added to its pixels tile by tile in tile
@@ -388,7 +412,8 @@ private:
                 }
                 const std::size_t pixel = static_cast<std::size_t>(y) * width_ + x;
                 if (tally != nullptr) tally->begin();
-                SampleFeatures* features = pass_features_.empty() ? nullptr : &pass_features_[pixel];
+                SampleFeatures* features =
+                    feature_sums_.empty() ? nullptr : &pending_features_[pixel * kAovPendingPasses + pending_passes_.size()];
                 const glm::vec3 l = sample_pixel(x, y, sample, rays, nonfinite, records, splats, tally, features);
                 if (tally != nullptr) opt_.forensics->finish_sample(tile, pixel, *tally, l);
                 pass_[pixel] = l;
@@ -495,10 +520,18 @@ private:
     std::vector<glm::dvec3> round_sq_;
     std::vector<PixelSum> kept_sum_;       // adaptive part starting inside the pilot: its own pilot passes
     std::vector<glm::dvec3> kept_sq_;
-    // AOVs (opt.aovs; else empty): per pixel, the exact colour and feature sums by half, the
-    // pass in flight's features, and the adaptive copies as for the colour above.
+    // AOVs (opt.aovs; else empty): per pixel, the exact colour and feature sums by half; the
+    // colours and features of up to kAovPendingPasses finished passes not yet added to them and
+    // of the pass in flight (pixel-major: slot k of pixel i at i * kAovPendingPasses + k),
+    // add_pending_features; and the adaptive copies as for the colour above.
+    struct PendingPass {
+        int sample;
+        bool kept;
+    };
     std::vector<FeatureSums> feature_sums_;
-    std::vector<SampleFeatures> pass_features_;
+    std::vector<SampleFeatures> pending_features_;
+    std::vector<glm::vec3> pending_colors_;
+    std::vector<PendingPass> pending_passes_;
     std::vector<FeatureSums> round_features_;
     std::vector<FeatureSums> kept_features_;
     std::atomic<int> completed_spp_{0};

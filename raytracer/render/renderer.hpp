@@ -1,6 +1,7 @@
 #pragma once
 // Rendering a scene through an acceleration structure into a linear-RGB image.
 #include <atomic>
+#include <cstddef>
 #include <cstdint>
 #include <functional>
 #include <vector>
@@ -17,6 +18,10 @@
 namespace sweeptrace {
 
 class PathForensics;
+
+// With AOVs, how many finished passes' colours and features the renderer holds per pixel before
+// adding them to the exact feature sums at once (the memory estimate counts them).
+inline constexpr std::size_t kAovPendingPasses = 4;
 
 enum class Sampling {
     NeeMis,    // next event estimation + BSDF sampling, combined by the power heuristic
