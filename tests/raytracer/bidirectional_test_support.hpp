@@ -66,6 +66,19 @@ inline void check_agrees_with_path(const Scene& scene, const Accel& accel, Integ
     CHECK(r.stats.nonfinite_samples == 0);
 }
 
+// bdpt and vcm at `spp` (seed 2) each against one path tracer render at `path_spp` (seed 1).
+inline void check_bidirectional_agree_with_path(const Scene& scene, const Accel& accel, int path_spp, int spp, int block) {
+    const RenderResult path = render_as(scene, accel, IntegratorKind::Path, path_spp, 1);
+    for (const IntegratorKind method : {IntegratorKind::Bdpt, IntegratorKind::Vcm}) {
+        INFO((method == IntegratorKind::Vcm ? "vcm" : "bdpt"));
+        const RenderResult r = render_as(scene, accel, method, spp, 2);
+        const BlockTestResult t = against_path(path, r, block);
+        INFO(t.summary());
+        CHECK(t.pass());
+        CHECK(r.stats.nonfinite_samples == 0);
+    }
+}
+
 // default.json at 24x14, depth 5, with every kind of light at once: its sphere, a point, a spot,
 // a sun (the determinism tests').
 inline Scene every_light_scene() {

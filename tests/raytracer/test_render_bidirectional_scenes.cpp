@@ -20,14 +20,6 @@ TEST_CASE("bdpt and vcm: converge to the path tracer's image on the other shippe
         INFO(name);
         const Scene scene = shipped(name, w, h);
         const auto accel = make_accel(AccelKind::Bvh, scene);
-        const RenderResult path = render_as(scene, *accel, IntegratorKind::Path, 512, 1);
-        for (const IntegratorKind method : {IntegratorKind::Bdpt, IntegratorKind::Vcm}) {
-            INFO((method == IntegratorKind::Vcm ? "vcm" : "bdpt"));
-            const RenderResult r = render_as(scene, *accel, method, 128, 2);
-            const BlockTestResult t = against_path(path, r, 4);
-            INFO(t.summary());
-            CHECK(t.pass());
-            CHECK(r.stats.nonfinite_samples == 0);
-        }
+        check_bidirectional_agree_with_path(scene, *accel, 512, 128, 4);
     }
 }

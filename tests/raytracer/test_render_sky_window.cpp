@@ -6,6 +6,7 @@
 // portalled sky; the pbrt form's portal is imported onto the same window; the key's messages.
 #include <catch2/catch.hpp>
 
+#include <cstdint>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -32,6 +33,25 @@ Scene sky_window_room(bool portal) {
     return s;
 }
 
+struct PortalCheck {
+    RenderResult reference, portal;
+};
+
+// The room with its portal (`portalled`, `spp` at seed `seed`) against the same room without it
+// by BSDF sampling alone (1024 spp, seed 1): the block z-test must pass.
+PortalCheck check_portal_against_bsdf_only(const Scene& portalled, int spp, std::uint64_t seed) {
+    Scene plain = portalled;
+    plain.background.has_portal = false;
+    const auto accel = make_accel(AccelKind::Bvh, portalled);
+    PortalCheck c{render_as(plain, *accel, IntegratorKind::Path, 1024, 1, PlantedDefect::None, 0, 0, Sampling::BsdfOnly),
+                  render_as(portalled, *accel, IntegratorKind::Path, spp, seed)};
+    const BlockTestResult t = against_path(c.reference, c.portal, 4);
+    INFO(t.summary());
+    CHECK(t.pass());
+    CHECK(c.portal.stats.nonfinite_samples == 0);
+    return c;
+}
+
 double sky_window_mean_variance(const Image& variance) {
     double sum = 0.0;
     for (const glm::vec3& v : variance.pixels) sum += luminance(v);
@@ -46,13 +66,7 @@ TEST_CASE("sky through a window: sampled through its portal, the same image as B
     // Without the portal the uniform sky is no light (scene_lights.cpp): BSDF sampling alone finds it.
     CHECK_FALSE(LightSet(plain).background_is_light());
     CHECK(LightSet(portalled).background_is_light());
-    const auto accel = make_accel(AccelKind::Bvh, plain);
-    const RenderResult reference = render_as(plain, *accel, IntegratorKind::Path, 1024, 1, PlantedDefect::None, 0, 0, Sampling::BsdfOnly);
-    const RenderResult portal = render_as(portalled, *accel, IntegratorKind::Path, 64, 3);
-    const BlockTestResult t = against_path(reference, portal, 4);
-    INFO(t.summary());
-    CHECK(t.pass());
-    CHECK(portal.stats.nonfinite_samples == 0);
+    const auto [reference, portal] = check_portal_against_bsdf_only(portalled, 64, 3);
     // Noise at equal samples per pixel: the portal's directions all reach the sky (but for the
     // room's own occluders), BSDF directions seldom do.
     const double bsdf_variance_64 = sky_window_mean_variance(reference.variance) * (1024.0 / 64.0);
@@ -67,28 +81,13 @@ TEST_CASE("sky through a window: a portal covering only part of the opening stay
     Scene wide = sky_window_room(true);
     std::erase_if(wide.objects, [](const Object& o) { return o.name == "window right"; });
     REQUIRE(wide.objects.size() == sky_window_room(true).objects.size() - 1);
-    Scene plain = wide;
-    plain.background.has_portal = false;
-    const auto accel = make_accel(AccelKind::Bvh, wide);
-    const RenderResult reference = render_as(plain, *accel, IntegratorKind::Path, 1024, 1, PlantedDefect::None, 0, 0, Sampling::BsdfOnly);
-    const RenderResult portal = render_as(wide, *accel, IntegratorKind::Path, 128, 4);
-    const BlockTestResult t = against_path(reference, portal, 4);
-    INFO(t.summary());
-    CHECK(t.pass());
+    check_portal_against_bsdf_only(wide, 128, 4);
 }
 
 TEST_CASE("sky through a window: bdpt and vcm converge to the path tracer under the portalled sky", "[render][portal][bdpt][vcm][convergence]") {
     const Scene scene = sky_window_room(true);
     const auto accel = make_accel(AccelKind::Bvh, scene);
-    const RenderResult path = render_as(scene, *accel, IntegratorKind::Path, 512, 1);
-    for (const IntegratorKind method : {IntegratorKind::Bdpt, IntegratorKind::Vcm}) {
-        INFO((method == IntegratorKind::Vcm ? "vcm" : "bdpt"));
-        const RenderResult r = render_as(scene, *accel, method, 128, 2);
-        const BlockTestResult t = against_path(path, r, 4);
-        INFO(t.summary());
-        CHECK(t.pass());
-        CHECK(r.stats.nonfinite_samples == 0);
-    }
+    check_bidirectional_agree_with_path(scene, *accel, 512, 128, 4);
 }
 
 TEST_CASE("sky through a window: the pbrt scene's constant infinite light keeps its portal", "[pbrt][portal]") {
