@@ -82,6 +82,7 @@ GOLDEN_TEST("spheres-field", spheres_field)
 GOLDEN_TEST("motion", motion)
 GOLDEN_TEST("caustic", caustic)  // rendered by bdpt, its film.integrator
 GOLDEN_TEST("sky-window", sky_window)
+GOLDEN_TEST("fog", fog)  // a homogeneous medium and an absorbing glass interior
 
 // A scene added to scenes/ without a golden would go untested: every top-level scenes/*.json
 // needs its goldens.txt line, its golden and variance files, and both image tests registered.
