@@ -314,7 +314,7 @@ private:
     // vcm: the iteration's light subpaths and their splats, tile by tile (any thread), then its
     // photons into the grid, before any camera subpath of the pass.
     void light_pass(int tiles, int sample) {
-        vcm_->begin_iteration(sample);
+        vcm_->begin_iteration(sample, tiles);
         tbb::parallel_for(tbb::blocked_range<int>(0, tiles, 1), [&](const tbb::blocked_range<int>& r) {
             for (int t = r.begin(); t < r.end(); ++t) {
                 const int x0 = (t % tiles_x_) * kTileSize, y0 = (t / tiles_x_) * kTileSize;
@@ -331,8 +331,9 @@ private:
                         const float time = start_camera_sample(camera).time;
                         PixelSampler light(opt_.sampler, opt_.seed, pixel, static_cast<std::uint64_t>(sample),
                                            SamplerStream::LightSubpath);
-                        vcm_->trace_light(pixel, time, light, rays, splats);
+                        vcm_->trace_light(t, pixel, time, light, rays, splats);
                     }
+                vcm_->finish_tile(t);
                 rays_.fetch_add(rays, std::memory_order_relaxed);
             }
         });
