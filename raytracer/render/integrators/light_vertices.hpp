@@ -29,6 +29,10 @@ static_assert(sizeof(Photon) <= 80, "a photon is at most 80 bytes (issue 39)");
 
 class LightVertices {
 public:
+    // What a stored vertex costs vcm in an iteration: its photon and surface here, and the grid's
+    // pointer, slot and table share (photon_grid.hpp). For memory estimates (cli/memory_budget.cpp).
+    static constexpr std::size_t kBytesPerVertex = sizeof(Photon) + 32 + sizeof(void*) + 2 * sizeof(std::uint32_t);
+
     void clear();
     // light[b] (b >= 1, a surface vertex whose material is not a delta one), its MIS quantities set.
     void push(const PathVertex& v);
@@ -47,6 +51,7 @@ private:
         glm::vec3 point_error;
         std::uint32_t material;  // into Scene::materials, or into textured_ with kTextured set
     };
+    static_assert(sizeof(Surface) <= 32);
     static constexpr std::uint32_t kTextured = 0x80000000u;
     std::vector<Photon> photons_;
     std::vector<Surface> surfaces_;
