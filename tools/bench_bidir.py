@@ -1,7 +1,12 @@
 #!/usr/bin/python3
 """The bidirectional methods' cost, one build against another (issue 39's speed targets), each
 measurement run by both binaries alternately in one sitting, --repeat times, the least taken:
-  - vcm on scenes/caustic.json at 320x180: iterations (spp) per CPU second, one thread;
+  - vcm on scenes/caustic.json at 320x180: iterations (spp) per CPU second, one thread, 32
+    iterations (scene loading and the accelerator's build included);
+  - vcm's equal-time RMSE on the same: a reference rendered once by the after build's bdpt (unbiased,
+    --ref-time CPU seconds, kept in --ref-cache), then each build's vcm at --rmse-time CPU seconds
+    (render --time T --time-clock cpu), --rmse-seeds seeds each, the RMSE of each image against the
+    reference, their root mean square printed (the reference's own noise adds to both alike);
   - vcm's peak memory (maximum resident set of the process) at 1920x1080, depth 8, one iteration;
   - the path tracer's samples per CPU second on Bitterli's kitchen and classroom (textured), from
     ../shared/bitterli beside the checkout;
@@ -9,6 +14,7 @@ measurement run by both binaries alternately in one sitting, --repeat times, the
 CPU time is user + system of the child, so other work on a shared machine counts little; memory
 is GNU time's %M. Prints a markdown table (what, before, after, after / before).
 Usage: /usr/bin/python3 tools/bench_bidir.py BEFORE_BINARY AFTER_BINARY [--repeat 2] [--skip-memory]
+       [--skip-rmse] [--rmse-time 4] [--rmse-seeds 3] [--ref-time 120] [--ref-cache FILE.pfm]
 """
 import argparse
 import os
@@ -16,6 +22,10 @@ import re
 import subprocess
 import sys
 import tempfile
+
+import numpy as np
+
+from equal_time import read_pfm  # tools/equal_time.py's PFM reader
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 SHARED = os.path.join(os.path.dirname(ROOT), "shared")
@@ -44,6 +54,11 @@ def main():
     ap.add_argument("after")
     ap.add_argument("--repeat", type=int, default=2)
     ap.add_argument("--skip-memory", action="store_true")
+    ap.add_argument("--skip-rmse", action="store_true")
+    ap.add_argument("--rmse-time", type=float, default=4.0)
+    ap.add_argument("--rmse-seeds", type=int, default=3)
+    ap.add_argument("--ref-time", type=float, default=120.0)
+    ap.add_argument("--ref-cache", default=None)
     a = ap.parse_args()
     binaries = (("before", a.before), ("after", a.after))
     out = os.path.join(tempfile.mkdtemp(), "bench.pfm")
@@ -55,10 +70,30 @@ def main():
         sys.stdout.flush()
 
     caustic = os.path.join(ROOT, "scenes", "caustic.json")
-    spp = 8
+    spp = 32
     t = best_of(binaries, ["render", caustic, "--integrator", "vcm", "--threads", "1", "--spp", str(spp), "--width",
                            "320", "--height", "180"] + common, a.repeat, lambda r: r[0])
     row("vcm caustic.json 320x180: iterations per CPU s", spp / t["before"], spp / t["after"])
+
+    if not a.skip_rmse:
+        size = ["--width", "320", "--height", "180", "--quiet"]
+        ref_path = a.ref_cache or os.path.join(os.path.dirname(out), "reference.pfm")
+        if not os.path.exists(ref_path):
+            subprocess.run([a.after, "render", caustic, "--integrator", "bdpt", "--time", str(a.ref_time),
+                            "--time-clock", "cpu", "--threads", "2", "--seed", "1000", "-o", ref_path] + size,
+                           check=True)
+        ref = read_pfm(ref_path)
+        sq = {"before": [], "after": []}
+        for seed in range(1, a.rmse_seeds + 1):
+            for name, exe in binaries:
+                img = os.path.join(os.path.dirname(out), "%s-%d.pfm" % (name, seed))
+                subprocess.run([exe, "render", caustic, "--integrator", "vcm", "--time", str(a.rmse_time),
+                                "--time-clock", "cpu", "--threads", "1", "--seed", str(seed), "-o", img] + size,
+                               check=True)
+                sq[name].append(float(np.mean((read_pfm(img) - ref) ** 2)))
+        rmse = {name: float(np.sqrt(np.mean(v))) for name, v in sq.items()}
+        row("vcm caustic.json 320x180: RMSE at %g CPU s (%d seeds; bdpt reference %g CPU s)" %
+            (a.rmse_time, a.rmse_seeds, a.ref_time), rmse["before"], rmse["after"])
 
     if not a.skip_memory:
         m = best_of(binaries, ["render", caustic, "--integrator", "vcm", "--spp", "1", "--max-depth", "8", "--width",

@@ -4,6 +4,7 @@
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
 
 #include "collision/hashed_grid.hpp"
 
@@ -26,12 +27,22 @@ void PhotonGrid::build(const std::vector<std::span<const Photon>>& runs, float c
             for (std::size_t i = 0; i < runs[run].size(); ++i) slot_[offset[run] + i] = slot_of(runs[run][i].point);
     });
     // Counting sort: counts, their running sum (start_[s] = where slot s ends, then begins), and
-    // a stable scatter.
-    for (std::size_t i = 0; i < n; ++i) ++start_[slot_[i] + 1];
+    // a stable scatter. Counting and scattering go in parallel by ranges of slots, each range's
+    // task reading every photon's slot and taking its own: a slot's photons keep their given order
+    // whatever the number of tasks, and no two tasks write the same place.
+    const std::size_t parts = std::max<std::size_t>(1, static_cast<std::size_t>(tbb::this_task_arena::max_concurrency()));
+    const auto by_slot_range = [&](auto&& take) {
+        tbb::parallel_for(std::size_t(0), parts, [&](std::size_t p) {
+            const std::size_t lo = n * p / parts, hi = n * (p + 1) / parts;
+            for (std::size_t run = 0, i = 0; run < runs.size(); ++run)
+                for (std::size_t j = 0; j < runs[run].size(); ++j, ++i)
+                    if (slot_[i] >= lo && slot_[i] < hi) take(slot_[i], runs[run][j]);
+        });
+    };
+    by_slot_range([&](std::uint32_t slot, const Photon&) { ++start_[slot + 1]; });
     for (std::size_t s = 1; s <= n; ++s) start_[s] += start_[s - 1];
     photons_.resize(n);
-    for (std::size_t run = 0; run < runs.size(); ++run)
-        for (std::size_t i = 0; i < runs[run].size(); ++i) photons_[start_[slot_[offset[run] + i]]++] = &runs[run][i];
+    by_slot_range([&](std::uint32_t slot, const Photon& photon) { photons_[start_[slot]++] = &photon; });
     // start_[s] now holds where slot s ends: shift back to where it begins.
     for (std::size_t s = n; s > 0; --s) start_[s] = start_[s - 1];
     if (n > 0) start_[0] = 0;

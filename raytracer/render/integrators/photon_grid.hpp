@@ -5,8 +5,9 @@
 // of radius r touches 8 cells (27 when it ends on a cell's face); cells that share a slot share its run (the distance test
 // drops the strangers) and a slot is visited once per query however many of its cells the ball
 // touches. Building allocates nothing once the arrays have grown to an iteration's photon count
-// (they keep their capacity), computes the slots in parallel, and is stable: a cell's photons stay
-// in the order given, so the merges add them in the same order at any thread count.
+// (they keep their capacity), computes the slots, counts and scatters in parallel, and is stable:
+// a cell's photons stay in the order given, so the merges add them in the same order at any
+// thread count.
 #include <cstdint>
 #include <span>
 #include <vector>
