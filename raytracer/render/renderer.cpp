@@ -65,7 +65,7 @@ public:
           pass_(sum_.size()) {
         if (opt.integrator != IntegratorKind::Path) tile_splats_.resize(static_cast<std::size_t>(tiles_x_) * tiles_y_);
         bdpt_.set_cancel(opt.cancel);  // a depth-1024 sample takes seconds: it stops inside, its pass dropped
-        if (opt.integrator == IntegratorKind::Vcm) vcm_.emplace(scene, accel, camera_, lights_, bdpt_, opt.max_depth);
+        if (opt.integrator == IntegratorKind::Vcm) vcm_.emplace(scene, accel, camera_, bdpt_, opt.max_depth);
         if (opt.guiding) {
             tile_records_.resize(static_cast<std::size_t>(tiles_x_) * tiles_y_);
             integrator_.set_guide(&guide_);

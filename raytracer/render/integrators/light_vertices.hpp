@@ -5,7 +5,9 @@
 // its own). Stored as two flat arrays: the photon, 80 bytes, all a merge reads (the camera
 // vertex's BSDF is the only one a merge evaluates, so the photon needs no material), and what a
 // connection reads besides (the shading normal and point error of the hit, the material: an index
-// into the scene's, or into the textured ones kept here when the material reads a texture).
+// into the scene's, or into the textured ones kept here when the material reads a texture). A
+// medium vertex, when bdpt and vcm carry media, would keep its phase function's parameters in
+// the place of the material; the photon and its MIS quantities stay as they are.
 #include <cstdint>
 #include <span>
 #include <vector>

@@ -13,15 +13,14 @@
 #include "raytracer/render/bsdf.hpp"
 #include "raytracer/render/integrators/bidir_mis.hpp"
 #include "raytracer/render/integrators/mis_window.hpp"
-#include "raytracer/render/lights.hpp"
 #include "raytracer/render/sampling.hpp"
 #include "raytracer/scene/film_limits.hpp"
 
 namespace sweeptrace {
 
-VcmIntegrator::VcmIntegrator(const Scene& scene, const Accel& accel, const CameraModel& camera, const LightSet& lights,
+VcmIntegrator::VcmIntegrator(const Scene& scene, const Accel& accel, const CameraModel& camera,
                              const BdptIntegrator& bdpt, int max_depth)
-    : scene_(scene), lights_(lights), bdpt_(bdpt), max_depth_(max_depth), r1_(first_radius(scene, accel, camera)) {
+    : scene_(scene), bdpt_(bdpt), max_depth_(max_depth), r1_(first_radius(scene, accel, camera)) {
     for (const Object& o : scene.objects) merging_ = merging_ && !(scene.camera.shutter && o.motion.moving());
     pixels_ = static_cast<std::size_t>(scene.film.width) * static_cast<std::size_t>(scene.film.height);
     runs_.resize(pixels_);

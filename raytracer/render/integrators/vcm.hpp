@@ -50,7 +50,7 @@ public:
 
     // `bdpt` is the renderer's, already set up for the scene; its camera subpaths are weighted
     // with the iteration's merge density.
-    VcmIntegrator(const Scene& scene, const Accel& accel, const CameraModel& camera, const LightSet& lights,
+    VcmIntegrator(const Scene& scene, const Accel& accel, const CameraModel& camera,
                   const BdptIntegrator& bdpt, int max_depth);
 
     // r_1 for `scene` seen by `camera`: film.vcm_radius or the default above (the scene's
@@ -87,7 +87,6 @@ private:
     };
 
     const Scene& scene_;
-    const LightSet& lights_;
     const BdptIntegrator& bdpt_;
     int max_depth_;
     float r1_;
