@@ -66,8 +66,9 @@ public:
 
     // Single-threaded, before the light pass of iteration i, with the renderer's tile count.
     void begin_iteration(int iteration, int tiles);
-    // The light pass: pixel's light subpath (one call per pixel, a tile's pixels from one thread at
-    // a time, in pixel order), its splats appended; then finish_tile once per tile.
+    // The light pass: pixel's light subpath (one call per pixel), its splats appended; then
+    // finish_tile once per tile. A tile's calls, its finish_tile last, come from one thread with no
+    // other tile's in between (the thread's scratch store collects the tile's vertices).
     void trace_light(int tile, std::size_t pixel, float time, PixelSampler& sampler, std::uint64_t& rays,
                      std::vector<Splat>& splats);
     void finish_tile(int tile);
