@@ -7,7 +7,7 @@
 #include "raytracer/image/feature_sums.hpp"
 #include "raytracer/image/partial_sum.hpp"
 #include "raytracer/input_error.hpp"
-#include "raytracer/render/integrators/path_vertex.hpp"
+#include "raytracer/render/integrators/light_vertices.hpp"
 #include "raytracer/render/renderer.hpp"
 
 namespace sweeptrace {
@@ -17,10 +17,10 @@ namespace {
 // Per pixel: renderer sums and sums of squares (2 x dvec3), the pass in flight, the mean and the
 // variance images (3 x vec3), the display copy (vec3) and the 8-bit RGB buffer plus its encoding.
 constexpr std::uint64_t kFilmBytesPerPixel = 2 * 24 + 3 * 12 + 12 + 2 * 3;
-// vcm keeps every pixel's light subpath of the iteration (integrators/vcm.hpp): per vertex, the
-// vertex itself, its photon (point, pixel, index) and its id in a grid cell with the table's share.
+// vcm keeps every pixel's light subpath of the iteration (integrators/vcm.hpp): per vertex, its
+// photon and surface, its pointer in a grid cell with the table's share (light_vertices.hpp).
 // Counted at max_depth vertices per pixel, the most a light subpath holds.
-constexpr std::uint64_t kVcmBytesPerLightVertex = sizeof(PathVertex) + 20 + 16;
+constexpr std::uint64_t kVcmBytesPerLightVertex = LightVertices::kBytesPerVertex;
 // Adaptive sampling (render/renderer.cpp, run_adaptive): per pixel its count of samples (int) and
 // weight (double), the pass in flight's sums and sums of squares, and once more those for a farm
 // part whose range starts inside the pilot (its own pilot passes beside the whole pilot's).

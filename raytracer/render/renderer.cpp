@@ -65,7 +65,7 @@ public:
           pass_(sum_.size()) {
         if (opt.integrator != IntegratorKind::Path) tile_splats_.resize(static_cast<std::size_t>(tiles_x_) * tiles_y_);
         bdpt_.set_cancel(opt.cancel);  // a depth-1024 sample takes seconds: it stops inside, its pass dropped
-        if (opt.integrator == IntegratorKind::Vcm) vcm_.emplace(scene, accel, camera_, lights_, bdpt_, opt.max_depth);
+        if (opt.integrator == IntegratorKind::Vcm) vcm_.emplace(scene, accel, camera_, bdpt_, opt.max_depth);
         if (opt.guiding) {
             tile_records_.resize(static_cast<std::size_t>(tiles_x_) * tiles_y_);
             integrator_.set_guide(&guide_);
@@ -338,7 +338,7 @@ private:
     // vcm: the iteration's light subpaths and their splats, tile by tile (any thread), then its
     // photons into the grid, before any camera subpath of the pass.
     void light_pass(int tiles, int sample) {
-        vcm_->begin_iteration(sample);
+        vcm_->begin_iteration(sample, tiles);
         tbb::parallel_for(tbb::blocked_range<int>(0, tiles, 1), [&](const tbb::blocked_range<int>& r) {
             for (int t = r.begin(); t < r.end(); ++t) {
                 const int x0 = (t % tiles_x_) * kTileSize, y0 = (t / tiles_x_) * kTileSize;
@@ -355,8 +355,9 @@ private:
                         const float time = start_camera_sample(camera).time;
                         PixelSampler light(opt_.sampler, opt_.seed, pixel, static_cast<std::uint64_t>(sample),
                                            SamplerStream::LightSubpath);
-                        vcm_->trace_light(pixel, time, light, rays, splats);
+                        vcm_->trace_light(t, pixel, time, light, rays, splats);
                     }
+                vcm_->finish_tile(t);
                 rays_.fetch_add(rays, std::memory_order_relaxed);
             }
         });

@@ -14,20 +14,18 @@ inline MisPath random_mis_path(std::mt19937& rng) {
     std::uniform_real_distribution<float> decade(-2.0f, 2.0f);
     std::uniform_real_distribution<float> unit(0.0f, 1.0f);
     MisPath p;
-    p.k = 1 + static_cast<int>(unit(rng) * 8.0f);
-    const auto size = static_cast<std::size_t>(p.k + 1);
-    p.from_light.resize(size);
-    p.from_camera.resize(size);
-    p.delta.assign(size, 0);
-    for (std::size_t i = 0; i < size; ++i) {
-        p.from_light[i] = std::pow(10.0f, decade(rng));
-        p.from_camera[i] = std::pow(10.0f, decade(rng));
+    const int k = 1 + static_cast<int>(unit(rng) * 8.0f);
+    p.reset(k, 0, k);  // the whole path, no tails: the explicit sums
+    for (int i = 0; i <= k; ++i) {
+        p.fl(i) = std::pow(10.0f, decade(rng));
+        p.fc(i) = std::pow(10.0f, decade(rng));
     }
-    for (int i = 1; i < p.k; ++i)
+    p.emit0 = p.fl(0);
+    for (int i = 1; i < k; ++i)
         if (unit(rng) < 0.25f) {
-            p.delta[static_cast<std::size_t>(i)] = 1;
-            p.from_light[static_cast<std::size_t>(i + 1)] = 0.0f;
-            p.from_camera[static_cast<std::size_t>(i - 1)] = 0.0f;
+            p.delta(i) = 1;
+            p.fl(i + 1) = 0.0f;
+            p.fc(i - 1) = 0.0f;
         }
     p.nee0 = std::pow(10.0f, decade(rng));
     p.light_hittable = unit(rng) < 0.7f;

@@ -8,7 +8,7 @@
 #include "raytracer/cli/memory_budget.hpp"
 #include "raytracer/image/feature_sums.hpp"
 #include "raytracer/input_error.hpp"
-#include "raytracer/render/integrators/path_vertex.hpp"
+#include "raytracer/render/integrators/light_vertices.hpp"
 
 using namespace sweeptrace;
 
@@ -31,8 +31,8 @@ TEST_CASE("render memory estimate: vcm's light subpaths and adaptive sampling's 
     const std::uint64_t pixels = 64 * 32;
     const MemoryEstimate base = estimate_render_memory(path);
     CHECK(estimate_render_memory(memory_estimate_scene(IntegratorKind::Bdpt)).film == base.film);
-    // vcm: at least one path vertex per light-subpath vertex, max_depth of them per pixel.
-    CHECK(estimate_render_memory(vcm).film >= base.film + pixels * 8 * sizeof(PathVertex));
+    // vcm: at least one photon per light-subpath vertex, max_depth of them per pixel.
+    CHECK(estimate_render_memory(vcm).film >= base.film + pixels * 8 * sizeof(Photon));
     const MemoryEstimate adaptive = estimate_render_memory(path, true);
     CHECK(adaptive.film > base.film);
     CHECK((adaptive.film - base.film) % pixels == 0);  // a cost per pixel

@@ -119,7 +119,7 @@ TEST_CASE("vcm: the radius follows r_i = r_1 i^((alpha - 1) / 2), r_1 half a pix
     const CameraModel camera(scene.camera, 8, 8);
     const auto accel = make_accel(AccelKind::Bvh, scene);
     BdptIntegrator bdpt(scene, *accel, lights, camera, 5, PlantedDefect::None);
-    const VcmIntegrator vcm(scene, *accel, camera, lights, bdpt, 5);
+    const VcmIntegrator vcm(scene, *accel, camera, bdpt, 5);
     const float r1 = VcmIntegrator::first_radius(scene, *accel, camera);
     CHECK(vcm.radius(0) == Approx(r1));
     CHECK(vcm.radius(9) == Approx(r1 * std::pow(10.0f, -0.125f)));

@@ -68,7 +68,7 @@ TEST_CASE("vcm: the radius schedule stays finite and above 0 for any first radiu
         const CameraModel camera(scene.camera, 8, 8);
         const auto accel = make_accel(AccelKind::Bvh, scene);
         BdptIntegrator bdpt(scene, *accel, lights, camera, 5, PlantedDefect::None);
-        const VcmIntegrator vcm(scene, *accel, camera, lights, bdpt, 5);
+        const VcmIntegrator vcm(scene, *accel, camera, bdpt, 5);
         for (const int i : {0, 1, 1000, 1 << 20, std::numeric_limits<int>::max() - 1}) {
             INFO("iteration " << i);
             const float r = vcm.radius(i);

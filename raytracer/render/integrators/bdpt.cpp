@@ -7,6 +7,7 @@
 
 #include "raytracer/render/bsdf.hpp"
 #include "raytracer/render/integrators/bidir_mis.hpp"
+#include "raytracer/render/integrators/mis_window.hpp"
 #include "raytracer/render/integrators/path.hpp"
 #include "raytracer/render/sampling.hpp"
 #include "raytracer/render/texture.hpp"
@@ -44,6 +45,7 @@ void set_material(const Scene& scene, PathVertex& v) {
 
 struct BdptIntegrator::Subpaths {
     std::vector<PathVertex> cam, light;
+    LightVertices stored;  // bdpt's own sample: the light subpath's vertices that connect
     MisPath mis;
     float merge_eta = 0.0f;  // the merging density the weights count (vcm's, per iteration), 0 for bdpt
 };
@@ -72,12 +74,15 @@ bool BdptIntegrator::blocked(const collision::Ray& ray, float time) const {
     return moving_ ? accel_.occluded(ray, time) : accel_.occluded(ray);
 }
 
+MisDefect BdptIntegrator::mis_defect() const {
+    return defect_ == PlantedDefect::BdptDropsNee     ? MisDefect::DropNee
+           : defect_ == PlantedDefect::VcmDropsMerges ? MisDefect::DropMerges
+                                                      : MisDefect::None;
+}
+
 float BdptIntegrator::weight(const MisPath& path, int s, float merge_eta) const {
     if (light_tracing_only_) return 1.0f;
-    const MisDefect defect = defect_ == PlantedDefect::BdptDropsNee     ? MisDefect::DropNee
-                             : defect_ == PlantedDefect::VcmDropsMerges ? MisDefect::DropMerges
-                                                                        : MisDefect::None;
-    return mis_weight(path, s, false, merge_eta, defect);
+    return mis_weight(path, s, false, merge_eta, mis_defect());
 }
 
 glm::vec3 BdptIntegrator::sample(float x, float y, const glm::vec2& lens, float time, PixelSampler& sampler,
@@ -85,56 +90,69 @@ glm::vec3 BdptIntegrator::sample(float x, float y, const glm::vec2& lens, float 
     thread_local Subpaths sp;
     glm::vec3 l(0.0f);
     if (features != nullptr) *features = SampleFeatures{};  // light tracing alone: no camera subpath, a miss
+    sp.merge_eta = 0.0f;
     if (light_tracing_only_) {
         light_walk(time, sampler, rays, sp);
         for (int s = 1; s <= static_cast<int>(sp.light.size()) && s <= max_depth_ && !cancelled(); ++s)
             light_to_camera(sp, s, time, sampler, rays, splats);
         return l;
     }
-    sp.merge_eta = 0.0f;
     camera_walk(x, y, lens, time, sampler, rays, sp, l);
     if (features != nullptr) *features = features_of_subpath(scene_, sp.cam, camera_);
     light_walk(time, sampler, rays, sp);
-    l += connections(sp, time, sampler, rays);
+    sp.stored.clear();
+    store_light_vertices(sp, sp.stored);
+    l += connections(sp, sp.stored, 0, sp.stored.size(), time, sampler, rays);
     const int nl = static_cast<int>(sp.light.size());
     for (int s = 1; s <= nl && s <= max_depth_ && !cancelled(); ++s) light_to_camera(sp, s, time, sampler, rays, splats);
     return l;
 }
 
-// Every strategy with t >= 2: emitters found (s = 0), next event estimation (s = 1), connections.
-glm::vec3 BdptIntegrator::connections(Subpaths& sp, float time, PixelSampler& sampler, std::uint64_t& rays) const {
+// Every strategy with t >= 2: emitters found (s = 0), next event estimation (s = 1), connections
+// to the stored light vertices [first, first + count) of one light subpath (in depth order).
+glm::vec3 BdptIntegrator::connections(Subpaths& sp, const LightVertices& light, std::size_t first, std::size_t count,
+                                      float time, PixelSampler& sampler, std::uint64_t& rays) const {
     glm::vec3 l(0.0f);
-    const int nc = static_cast<int>(sp.cam.size()), nl = static_cast<int>(sp.light.size());
+    const int nc = static_cast<int>(sp.cam.size());
     for (int t = 2; t <= nc && !cancelled(); ++t) {
         const int j = t - 1;
         l += emitter_hit(sp, j);
         if (!scatters(sp.cam[j].mat(scene_)) || is_delta(sp.cam[j].mat(scene_))) continue;
         if (j + 1 <= max_depth_) l += next_event(sp, j, time, sampler, rays);
-        for (int s = 2; s <= nl && s + t - 1 <= max_depth_; ++s) l += connect(sp, s, t, time, rays);
+        for (std::size_t i = first; i < first + count; ++i) {
+            if (light.photon(i).mis.depth + t > max_depth_) break;  // s + t - 1 vertices after the light
+            l += connect(sp, light, i, t, time, rays);
+        }
     }
     return l;
 }
 
+// The walk's vertices that a later technique can end at (light_vertices.hpp).
+void BdptIntegrator::store_light_vertices(const Subpaths& sp, LightVertices& out) const {
+    for (std::size_t b = 1; b < sp.light.size(); ++b)
+        if (!is_delta(sp.light[b].mat(scene_))) out.push(sp.light[b]);
+}
+
 void BdptIntegrator::light_subpath(float time, PixelSampler& sampler, std::uint64_t& rays, float merge_eta,
-                                   std::vector<PathVertex>& light, std::vector<Splat>& splats) const {
+                                   LightVertices& light, std::vector<Splat>& splats) const {
     thread_local Subpaths sp;
     sp.merge_eta = merge_eta;
     light_walk(time, sampler, rays, sp);
     const int nl = static_cast<int>(sp.light.size());
     for (int s = 1; s <= nl && s <= max_depth_ && !cancelled(); ++s) light_to_camera(sp, s, time, sampler, rays, splats);
-    light.assign(sp.light.begin(), sp.light.end());
+    store_light_vertices(sp, light);
 }
 
 glm::vec3 BdptIntegrator::camera_subpath(float x, float y, const glm::vec2& lens, float time, PixelSampler& sampler,
-                                         std::uint64_t& rays, const std::vector<PathVertex>& light, float merge_eta,
-                                         std::vector<PathVertex>& cam, SampleFeatures* features) const {
+                                         std::uint64_t& rays, const LightVertices& light, std::size_t first,
+                                         std::size_t count, float merge_eta, std::vector<PathVertex>& cam,
+                                         SampleFeatures* features) const {
     thread_local Subpaths sp;
     sp.merge_eta = merge_eta;
     glm::vec3 l(0.0f);
     camera_walk(x, y, lens, time, sampler, rays, sp, l);
     if (features != nullptr) *features = features_of_subpath(scene_, sp.cam, camera_);
-    sp.light.assign(light.begin(), light.end());
-    l += connections(sp, time, sampler, rays);
+    l += connections(sp, light, first, count, time, sampler, rays);
     std::swap(cam, sp.cam);
     return l;
 }
@@ -164,6 +182,7 @@ void BdptIntegrator::camera_walk(float x, float y, const glm::vec2& lens, float 
         set_material(scene_, v);
         v.pdf_own = area_density(pdf, sp.cam.back().point(), v);
         sp.cam.push_back(std::move(v));
+        sp.cam.back().above = camera_vertex_above(sp.cam, depth, sp.merge_eta, mis_defect());
         const PathVertex& at = sp.cam.back();
         const MaterialParameters& mat = at.mat(scene_);
         if (depth >= max_depth_ || !scatters(mat)) return;
@@ -211,6 +230,9 @@ void BdptIntegrator::light_walk(float time, PixelSampler& sampler, std::uint64_t
     v0.delta_direction = em.delta_direction;
     v0.beta = glm::vec3(1.0f / (em.selection * em.pdf_pos));
     v0.pdf_own = em.selection * (em.at_infinity ? em.pdf_dir : em.pdf_pos);
+    const bool light_hittable =
+        !v0.delta_position && !v0.delta_direction && (!v0.at_infinity || lights_.light_is_found_at_infinity(v0.light));
+    v0.light_mis = light_origin_mis(v0, light_hittable);
     sp.light.push_back(v0);
     const float cos0 = v0.on_surface() ? std::abs(glm::dot(em.normal, em.dir)) : 1.0f;
     glm::vec3 beta = em.le * (cos0 / (em.selection * em.pdf_pos * em.pdf_dir));
@@ -244,10 +266,12 @@ void BdptIntegrator::light_walk(float time, PixelSampler& sampler, std::uint64_t
             } else {
                 l0.pdf_nee = area_density(lights_.pdf(v.point(), v.hit.object, l0.hit), v.point(), l0);
             }
+            l0.light_mis.nee0 = l0.pdf_nee;
         }
         const MaterialParameters& mat = v.mat(scene_);
         if (!scatters(mat)) return;  // an absorber: every connection through it is zero
         sp.light.push_back(std::move(v));
+        sp.light.back().light_mis = light_vertex_mis(sp.light, b, light_hittable, sp.merge_eta, mis_defect());
         PathVertex& at = sp.light.back();
         if (b + 1 >= max_depth_) return;
         const ShadingContext ctx = make_shading_context(at.hit, at.wo);
@@ -271,13 +295,6 @@ void BdptIntegrator::light_walk(float time, PixelSampler& sampler, std::uint64_t
     }
 }
 
-// The densities of the path light[0..s) + cam[t-1..0], in light order, as the subpaths sampled
-// them; the connection's own entries are the caller's to set.
-void BdptIntegrator::gather(Subpaths& sp, int s, int t) const {
-    gather_mis_path(sp.mis, s + t - 1, std::span<const PathVertex>(sp.light).first(static_cast<std::size_t>(s)),
-                    std::span<const PathVertex>(sp.cam).first(static_cast<std::size_t>(t)), lights_);
-}
-
 // s = 0 at infinity: the camera subpath escaped along `dir` from its last vertex, sampled with
 // solid-angle density `pdf` there. A background that is no light has no other strategy.
 glm::vec3 BdptIntegrator::escaped_radiance(const Subpaths& sp, const glm::vec3& dir, const glm::vec3& beta,
@@ -286,18 +303,22 @@ glm::vec3 BdptIntegrator::escaped_radiance(const Subpaths& sp, const glm::vec3& 
     if (!lights_.background_is_light()) sum += beta * background_radiance(scene_.background, dir);
     if (infinite_lights_.empty()) return sum;
     const int k = static_cast<int>(sp.cam.size());  // the light is x_0, cam.back() is x_1
+    const int j = k - 1;
     MisPath m;
-    gather_mis_path(m, k, {}, sp.cam, lights_);  // x_1 .. x_k; x_0, the light, is set below
-    m.from_camera[0] = pdf;
+    m.reset(k, 0, std::min(k, 3));
+    m.fc(0) = pdf;
     m.light_to_camera = false;
     const PathVertex& x1 = sp.cam.back();
+    // x_2's density from x_1 is the walk's: x_1 sampled the escaping direction.
+    const float fl2 = j >= 2 ? sp.cam[static_cast<std::size_t>(j - 1)].pdf_other : 0.0f;
     for (const std::uint32_t light : infinite_lights_) {
         const glm::vec3 le = lights_.radiance_at_infinity(light, dir);
         if (!(luminance(le) > 0.0f)) continue;
         const LightSet::EmissionDensity d = lights_.emission_density(light, -dir, -dir);
-        m.from_light[0] = d.pos;
+        m.emit0 = d.pos;
         m.nee0 = lights_.nee_density_of_light(light, x1.point(), dir);  // emission's and NEE's differ under a portal
-        if (k >= 2) m.from_light[1] = d.dir * std::abs(glm::dot(x1.hit.normal, dir));
+        const float fl1 = k >= 2 ? d.dir * std::abs(glm::dot(x1.hit.normal, dir)) : 0.0f;
+        put_camera_end(m, sp.cam, j, 1, fl1, fl2, true);
         sum += beta * le * weight(m, 0, sp.merge_eta);
     }
     return sum;
@@ -310,21 +331,20 @@ glm::vec3 BdptIntegrator::emitter_hit(Subpaths& sp, int j) const {
     if (le == glm::vec3(0.0f)) return le;
     if (!lights_.is_light(z.hit.object)) return z.beta * le;  // no light sampling finds it
     MisPath& m = sp.mis;
-    gather_mis_path(m, j, {}, std::span<const PathVertex>(sp.cam).first(static_cast<std::size_t>(j + 1)), lights_);
-    m.delta[0] = 0;
+    m.reset(j, 0, std::min(j, 2));
     const auto light = static_cast<std::uint32_t>(lights_.light_of_object(z.hit.object));  // an emitter: is_light
     const LightSet::EmissionDensity d = lights_.emission_density(light, z.hit.normal, z.wo);
-    m.from_light[0] = d.pos;
+    m.emit0 = d.pos;
     m.nee0 = d.pos;
+    float fl1 = 0.0f;
     if (j >= 2) {
         const PathVertex& x1 = sp.cam[static_cast<std::size_t>(j - 1)];
-        m.from_light[1] = area_density(d.dir, z.point(), x1);
-        PathVertex as_light = z;
-        as_light.kind = PathVertex::Kind::Light;
-        m.nee0 = area_density(lights_.pdf(x1.point(), x1.hit.object, z.hit), x1.point(), as_light);
+        fl1 = area_density(d.dir, z.point(), x1);
+        m.nee0 = area_density(lights_.pdf(x1.point(), x1.hit.object, z.hit), x1.point(), z.point(), z.hit.normal);
     }
     m.light_hittable = true;
     m.light_to_camera = true;
+    put_camera_end(m, sp.cam, j, 0, 0.0f, fl1);
     return z.beta * le * weight(m, 0, sp.merge_eta);
 }
 
@@ -354,49 +374,50 @@ glm::vec3 BdptIntegrator::next_event(Subpaths& sp, int j, float time, PixelSampl
     x0.delta_position = lights_.light_is_delta_position(light);
     x0.delta_direction = ls.delta && ls.at_infinity;
     const LightSet::EmissionDensity d = lights_.emission_density(light, ls.normal, -ls.wi);
-    x0.pdf_own = d.pos;
-    x0.pdf_nee = ls.at_infinity || x0.delta_position ? ls.pdf : area_density(ls.pdf, z.point(), x0);
-    x0.pdf_other = area_density(e.pdf_wi, z.point(), x0);
-    sp.light.resize(std::max<std::size_t>(sp.light.size(), 1));
-    const PathVertex saved = sp.light.front();
-    sp.light.front() = x0;
-    gather(sp, 1, j + 1);
-    sp.light.front() = saved;
     MisPath& m = sp.mis;
-    m.delta[1] = 0;
-    m.from_light[1] = ls.at_infinity ? d.dir * std::abs(glm::dot(z.hit.normal, ls.wi)) : area_density(d.dir, ls.point, z);
-    if (j >= 2) m.from_light[2] = area_density(e.pdf_wo, z.point(), sp.cam[static_cast<std::size_t>(j - 1)]);
+    const int k = j + 1;
+    m.reset(k, 0, std::min(k, 3));
+    m.emit0 = d.pos;
+    m.nee0 = ls.at_infinity || x0.delta_position ? ls.pdf : area_density(ls.pdf, z.point(), x0);
+    m.light_hittable = !x0.delta_position && !x0.delta_direction &&
+                       (!x0.at_infinity || lights_.light_is_found_at_infinity(light));
+    m.light_to_camera = !x0.at_infinity;
+    m.fc(0) = area_density(e.pdf_wi, z.point(), x0);
+    const float fl1 = ls.at_infinity ? d.dir * std::abs(glm::dot(z.hit.normal, ls.wi)) : area_density(d.dir, ls.point, z);
+    const float fl2 = j >= 2 ? area_density(e.pdf_wo, z.point(), sp.cam[static_cast<std::size_t>(j - 1)]) : 0.0f;
+    put_camera_end(m, sp.cam, j, 1, fl1, fl2);
     return c * weight(m, 1, sp.merge_eta);
 }
 
-// s >= 2, t >= 2: light[s-1] joined to cam[t-1] by a shadow ray.
-glm::vec3 BdptIntegrator::connect(Subpaths& sp, int s, int t, float time, std::uint64_t& rays) const {
-    const PathVertex& y = sp.light[static_cast<std::size_t>(s - 1)];
-    const PathVertex& z = sp.cam[static_cast<std::size_t>(t - 1)];
-    const MaterialParameters& my = y.mat(scene_);
-    if (is_delta(my)) return glm::vec3(0.0f);
-    glm::vec3 w = z.point() - y.point();
+// s >= 2, t >= 2: the stored light vertex `i` (x_{s-1}) joined to cam[t-1] by a shadow ray.
+glm::vec3 BdptIntegrator::connect(Subpaths& sp, const LightVertices& light, std::size_t i, int t, float time,
+                                  std::uint64_t& rays) const {
+    const Photon& yp = light.photon(i);
+    const SurfaceHit yhit = light.hit(i);
+    const int j = t - 1, b = yp.mis.depth, s = b + 1;
+    const PathVertex& z = sp.cam[static_cast<std::size_t>(j)];
+    const MaterialParameters& my = light.material(i, scene_);
+    glm::vec3 w = z.point() - yp.point;
     const float d2 = glm::dot(w, w);
     if (!(d2 > 0.0f)) return glm::vec3(0.0f);
     w /= std::sqrt(d2);
-    const BsdfEvalBoth ey = eval_bsdf_both(my, y.hit, y.wo, w);
+    const BsdfEvalBoth ey = eval_bsdf_both(my, yhit, yp.wo, w);
     if (!(ey.pdf_wi > 0.0f)) return glm::vec3(0.0f);
     const BsdfEvalBoth ez = eval_bsdf_both(z.mat(scene_), z.hit, z.wo, -w);
     if (!(ez.pdf_wi > 0.0f)) return glm::vec3(0.0f);
     const float fy_scale =
-        importance_refraction_scale(my, make_shading_context(y.hit, y.wo), w) * shading_correction(y.hit, y.wo, w);
-    const glm::vec3 c = y.beta * ey.f_cos * fy_scale * ez.f_cos * z.beta / d2;
+        importance_refraction_scale(my, make_shading_context(yhit, yp.wo), w) * shading_correction(yhit, yp.wo, w);
+    const glm::vec3 c = yp.beta * ey.f_cos * fy_scale * ez.f_cos * z.beta / d2;
     if (!(max_component(c) > 0.0f)) return glm::vec3(0.0f);
     ++rays;
-    if (blocked(spawn_ray_to(y.hit, z.point(), z.hit.point_error, z.hit.normal), time)) return glm::vec3(0.0f);
-    gather(sp, s, t);
+    if (blocked(spawn_ray_to(yhit, z.point(), z.hit.point_error, z.hit.normal), time)) return glm::vec3(0.0f);
     MisPath& m = sp.mis;
-    const auto at = [](int i) { return static_cast<std::size_t>(i); };
-    m.delta[at(s - 1)] = m.delta[at(s)] = 0;
-    m.from_camera[at(s - 1)] = area_density(ez.pdf_wi, z.point(), y);
-    m.from_camera[at(s - 2)] = area_density(ey.pdf_wo, y.point(), sp.light[at(s - 2)]);
-    m.from_light[at(s)] = area_density(ey.pdf_wi, y.point(), z);
-    if (t >= 3) m.from_light[at(s + 1)] = area_density(ez.pdf_wo, z.point(), sp.cam[at(t - 2)]);
+    const int k = s + j;
+    m.reset(k, b - 1, std::min(k, s + 2));
+    put_light_end(m, yp.mis, ey.pdf_wo);
+    m.fc(b) = area_density(ez.pdf_wi, z.point(), yp.point, yp.normal);
+    const float fl_next = j >= 2 ? area_density(ez.pdf_wo, z.point(), sp.cam[static_cast<std::size_t>(j - 1)]) : 0.0f;
+    put_camera_end(m, sp.cam, j, s, area_density(ey.pdf_wi, yp.point, z), fl_next);
     return c * weight(m, s, sp.merge_eta);
 }
 
@@ -442,19 +463,14 @@ void BdptIntegrator::light_to_camera(Subpaths& sp, int s, float time, PixelSampl
         shadow.tmax = 1.0f;  // the far end is the lens or the clip plane: no surface to stop short of
     }
     if (blocked(shadow, time)) return;
-    PathVertex cam0;
-    cam0.kind = PathVertex::Kind::Camera;
-    cam0.hit.point = lens;
-    sp.cam.resize(std::max<std::size_t>(sp.cam.size(), 1));
-    const PathVertex saved = sp.cam.front();
-    sp.cam.front() = cam0;
-    gather(sp, s, 1);
-    sp.cam.front() = saved;
+    // The path light[0..s) + the lens point x_k, k = s (whose densities count nowhere: t = 0 is
+    // impossible).
     MisPath& m = sp.mis;
-    const auto at = [](int i) { return static_cast<std::size_t>(i); };
-    m.delta[at(s - 1)] = 0;
-    m.from_camera[at(s - 1)] = area_density(camera_.direction_pdf(cos_theta), lens, y);
-    if (s >= 2) m.from_camera[at(s - 2)] = area_density(ey.pdf_wo, y.point(), sp.light[at(s - 2)]);
+    const int b = s - 1;
+    m.reset(s, std::max(0, b - 1), s);
+    put_light_end(m, y.light_mis, ey.pdf_wo);
+    m.fc(b) = area_density(camera_.direction_pdf(cos_theta), lens, y);
+    m.light_to_camera = !sp.light.front().at_infinity;
     const glm::vec3 value = c * weight(m, s, sp.merge_eta);
     // The pixels whose filter reaches the film point, each by its normalised filter weight.
     const PixelFilter& filter = camera_.filter();

@@ -27,6 +27,7 @@
 #include "raytracer/accel/accel.hpp"
 #include "raytracer/render/camera.hpp"
 #include "raytracer/render/integrators/bidir_mis.hpp"
+#include "raytracer/render/integrators/light_vertices.hpp"
 #include "raytracer/render/integrators/path_vertex.hpp"
 #include "raytracer/render/lights.hpp"
 #include "raytracer/render/planted_defect.hpp"
@@ -58,15 +59,18 @@ public:
                      std::vector<Splat>& splats, SampleFeatures* features = nullptr) const;
 
     // The two halves of sample() for vcm.cpp, which traces every light subpath of an iteration
-    // before any camera subpath: the light subpath (into `light`) with its t = 1 splats, and the
-    // camera subpath (into `cam`) joined to a given light subpath by every strategy with t >= 2,
-    // returning what sample() returns. `merge_eta` (bidir_mis.hpp: eta = pi r^2 N) > 0 puts the
-    // merges into every strategy's weight, the light subpath's splats' too; 0 gives bdpt's.
-    void light_subpath(float time, PixelSampler& sampler, std::uint64_t& rays, float merge_eta,
-                       std::vector<PathVertex>& light, std::vector<Splat>& splats) const;
+    // before any camera subpath: the light subpath with its t = 1 splats, its vertices that
+    // connect appended to `light` (light_vertices.hpp), and the camera subpath (into `cam`) joined
+    // to the light subpath whose vertices are light's [first, first + count) by every strategy with
+    // t >= 2, returning what sample() returns. `merge_eta` (bidir_mis.hpp: eta = pi r^2 N) > 0 puts
+    // the merges into every strategy's weight, the light subpath's splats' too; 0 gives bdpt's.
+    void light_subpath(float time, PixelSampler& sampler, std::uint64_t& rays, float merge_eta, LightVertices& light,
+                       std::vector<Splat>& splats) const;
     glm::vec3 camera_subpath(float x, float y, const glm::vec2& lens, float time, PixelSampler& sampler,
-                             std::uint64_t& rays, const std::vector<PathVertex>& light, float merge_eta,
-                             std::vector<PathVertex>& cam, SampleFeatures* features = nullptr) const;
+                             std::uint64_t& rays, const LightVertices& light, std::size_t first, std::size_t count,
+                             float merge_eta, std::vector<PathVertex>& cam, SampleFeatures* features = nullptr) const;
+    // The planted defect's form in the MIS weights (bidir_mis.hpp).
+    MisDefect mis_defect() const;
     // The render's cancel flag: once set, a sample's strategy loops stop where they are (at depth
     // 1024 one sample joins ~10^6 vertex pairs, over a second), and the renderer drops the pass
     // the cut samples belong to, so no cut sample reaches an image.
@@ -78,15 +82,16 @@ private:
     void camera_walk(float x, float y, const glm::vec2& lens, float time, PixelSampler& sampler, std::uint64_t& rays,
                      Subpaths& sp, glm::vec3& escaped) const;
     void light_walk(float time, PixelSampler& sampler, std::uint64_t& rays, Subpaths& sp) const;
-    glm::vec3 connections(Subpaths& sp, float time, PixelSampler& sampler, std::uint64_t& rays) const;
+    glm::vec3 connections(Subpaths& sp, const LightVertices& light, std::size_t first, std::size_t count, float time,
+                          PixelSampler& sampler, std::uint64_t& rays) const;
+    void store_light_vertices(const Subpaths& sp, LightVertices& out) const;
     glm::vec3 escaped_radiance(const Subpaths& sp, const glm::vec3& dir, const glm::vec3& beta, float pdf) const;
     glm::vec3 emitter_hit(Subpaths& sp, int j) const;
     glm::vec3 next_event(Subpaths& sp, int j, float time, PixelSampler& sampler, std::uint64_t& rays) const;
-    glm::vec3 connect(Subpaths& sp, int s, int t, float time, std::uint64_t& rays) const;
+    glm::vec3 connect(Subpaths& sp, const LightVertices& light, std::size_t i, int t, float time,
+                      std::uint64_t& rays) const;
     void light_to_camera(Subpaths& sp, int s, float time, PixelSampler& sampler, std::uint64_t& rays,
                          std::vector<Splat>& splats) const;
-    // Fills sp.mis with the densities of the path made of light[0..s) and cam[0..t) (t >= 1).
-    void gather(Subpaths& sp, int s, int t) const;
     bool blocked(const collision::Ray& ray, float time) const;
     float weight(const MisPath& path, int s, float merge_eta) const;
 

@@ -1,6 +1,20 @@
 #include "raytracer/render/integrators/bidir_mis.hpp"
 
+#include <stdexcept>
+
 namespace sweeptrace {
+
+void MisPath::reset(int path_k, int first, int last) {
+    if (!(0 <= first && first <= last && last <= path_k && last - first < kCapacity))
+        throw std::logic_error("MisPath: window outside the path or over capacity");
+    k = path_k;
+    lo = first;
+    hi = last;
+    from_light.fill(0.0f);
+    from_camera.fill(0.0f);
+    delta_flags.fill(0);
+    below = above = MisTail{};
+}
 
 namespace {
 
@@ -10,28 +24,39 @@ bool connection_possible(const MisPath& p, int i) {
     if (i < 0 || i > p.k) return false;
     if (i == 0) return p.light_hittable;
     if (i == 1 && p.k == 1 && !p.light_to_camera) return false;
-    if (p.delta[static_cast<std::size_t>(i - 1)]) return false;
-    return i == p.k || !p.delta[static_cast<std::size_t>(i)];
+    if (p.delta(i - 1)) return false;
+    return i == p.k || !p.delta(i);
 }
 
-bool merge_possible(const MisPath& p, int i, float eta) {
-    return eta > 0.0f && i >= 1 && i <= p.k - 1 && !p.delta[static_cast<std::size_t>(i)];
-}
+bool merge_possible(const MisPath& p, int i, float eta) { return eta > 0.0f && i >= 1 && i <= p.k - 1 && !p.delta(i); }
 
 // p_{i+1} / p_i of the connection strategies.
 double density_ratio(const MisPath& p, int i) {
-    const auto at = [](const std::vector<float>& v, int j) { return remap0(v[static_cast<std::size_t>(j)]); };
-    const double a1 = p.k >= 2 ? remap0(p.nee0) : at(p.from_light, 0);
-    if (i == 0) return a1 / at(p.from_camera, 0);
-    if (i == 1) return at(p.from_light, 0) * at(p.from_light, 1) / (a1 * at(p.from_camera, 1));
-    return at(p.from_light, i) / at(p.from_camera, i);
+    const double a1 = p.k >= 2 ? remap0(p.nee0) : remap0(p.emit0);
+    if (i == 0) return a1 / remap0(p.fc(0));
+    if (i == 1) return remap0(p.emit0) * remap0(p.fl(1)) / (a1 * remap0(p.fc(1)));
+    return remap0(p.fl(i)) / remap0(p.fc(i));
 }
 
 // p_VM(i) / p_VC(i).
 double merge_factor(const MisPath& p, int i, float eta) {
-    double f = double(eta) * remap0(p.from_light[static_cast<std::size_t>(i)]);
-    if (i == 1 && p.k >= 2) f *= remap0(p.from_light[0]) / remap0(p.nee0);
+    double f = double(eta) * remap0(p.fl(i));
+    if (i == 1 && p.k >= 2) f *= remap0(p.emit0) / remap0(p.nee0);
     return f;
+}
+
+// The techniques at x_i relative to connection i: connection's and merge's squared.
+struct Terms {
+    double conn, merge;
+};
+Terms terms(const MisPath& p, int i, float eta, bool drop_connection) {
+    Terms t{0.0, 0.0};
+    if (!drop_connection && connection_possible(p, i)) t.conn = 1.0;
+    if (merge_possible(p, i, eta)) {
+        const double m = merge_factor(p, i, eta);
+        t.merge = m * m;
+    }
+    return t;
 }
 
 }  // namespace
@@ -41,58 +66,43 @@ float mis_weight(const MisPath& path, int s, bool merge, float eta, MisDefect de
     // rel = p_VC(i) / p_VC(s), along the chain of ratios out from s in both directions.
     const bool count_merges = merge || defect != MisDefect::DropMerges;
     const auto term = [&](int i, double rel) {
-        double t = 0.0;
-        if (connection_possible(path, i) && !(defect == MisDefect::DropNee && i == 1 && i != s)) t += rel * rel;
-        if (count_merges && merge_possible(path, i, eta)) {
-            const double m = rel * merge_factor(path, i, eta);
-            t += m * m;
-        }
-        return t;
+        const Terms t = terms(path, i, eta, defect == MisDefect::DropNee && i == 1 && i != s);
+        return rel * rel * (t.conn + (count_merges ? t.merge : 0.0));
+    };
+    const auto tail = [&](const MisTail& t, double rel) {
+        return rel * rel * (double(t.conn) + (count_merges ? double(t.merge) : 0.0));
     };
     double sum = term(s, 1.0);
     double rel = 1.0;
-    for (int i = s; i < path.k; ++i) {
+    for (int i = s; i < path.hi; ++i) {
         rel *= density_ratio(path, i);
         sum += term(i + 1, rel);
     }
+    sum += tail(path.above, rel);
     rel = 1.0;
-    for (int i = s - 1; i >= 0; --i) {
+    for (int i = s - 1; i >= path.lo; --i) {
         rel /= density_ratio(path, i);
         sum += term(i, rel);
     }
+    sum += tail(path.below, rel);
     const double own = merge ? merge_factor(path, s, eta) : 1.0;
     return static_cast<float>(own * own / sum);
 }
 
-void gather_mis_path(MisPath& m, int k, std::span<const PathVertex> light, std::span<const PathVertex> cam,
-                     const LightSet& lights) {
-    m.k = k;
-    const auto n = static_cast<std::size_t>(k + 1);
-    m.from_light.assign(n, 0.0f);
-    m.from_camera.assign(n, 0.0f);
-    m.delta.assign(n, 0);
-    // A light subpath's vertex was sampled from x_{i-1} (its own walk) and would be from x_{i+1}
-    // by the camera's; a camera subpath's the other way round.
-    for (std::size_t i = 0; i < light.size() && i < n; ++i) {
-        const PathVertex& v = light[i];
-        m.from_light[i] = v.pdf_own;
-        m.from_camera[i] = v.pdf_other;
-        m.delta[i] = v.delta;
-    }
-    for (std::size_t j = 0; j < cam.size() && j < n; ++j) {
-        const std::size_t i = n - 1 - j;
-        const PathVertex& v = cam[j];
-        m.from_light[i] = v.pdf_other;
-        m.from_camera[i] = v.pdf_own;
-        m.delta[i] = v.delta;
-    }
-    if (!light.empty()) {
-        const PathVertex& l0 = light.front();
-        m.nee0 = l0.pdf_nee;
-        m.light_hittable = !l0.delta_position && !l0.delta_direction &&
-                           (!l0.at_infinity || lights.light_is_found_at_infinity(l0.light));
-        m.light_to_camera = !l0.at_infinity;
-    }
+// below_{i+1} = (below_i + w_i) (p_i / p_{i+1})^2.
+MisTail mis_tail_below(const MisPath& path, int i, const MisTail& below, float eta, MisDefect defect) {
+    const Terms t = terms(path, i, eta, defect == MisDefect::DropNee && i == 1);
+    const double r = density_ratio(path, i);
+    const double f = 1.0 / (r * r);
+    return {static_cast<float>((double(below.conn) + t.conn) * f), static_cast<float>((double(below.merge) + t.merge) * f)};
+}
+
+// above_{i-1} = (above_i + w_i) (p_i / p_{i-1})^2.
+MisTail mis_tail_above(const MisPath& path, int i, const MisTail& above, float eta, MisDefect defect) {
+    const Terms t = terms(path, i, eta, defect == MisDefect::DropNee && i == 1);
+    const double r = density_ratio(path, i - 1);
+    const double f = r * r;
+    return {static_cast<float>((double(above.conn) + t.conn) * f), static_cast<float>((double(above.merge) + t.merge) * f)};
 }
 
 }  // namespace sweeptrace

@@ -7,20 +7,23 @@
 #include <vector>
 
 #include <glm/geometric.hpp>
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
 
 #include "raytracer/render/bsdf.hpp"
 #include "raytracer/render/integrators/bidir_mis.hpp"
-#include "raytracer/render/lights.hpp"
+#include "raytracer/render/integrators/mis_window.hpp"
 #include "raytracer/render/sampling.hpp"
 #include "raytracer/scene/film_limits.hpp"
 
 namespace sweeptrace {
 
-VcmIntegrator::VcmIntegrator(const Scene& scene, const Accel& accel, const CameraModel& camera, const LightSet& lights,
+VcmIntegrator::VcmIntegrator(const Scene& scene, const Accel& accel, const CameraModel& camera,
                              const BdptIntegrator& bdpt, int max_depth)
-    : scene_(scene), lights_(lights), bdpt_(bdpt), max_depth_(max_depth), r1_(first_radius(scene, accel, camera)) {
+    : scene_(scene), bdpt_(bdpt), max_depth_(max_depth), r1_(first_radius(scene, accel, camera)) {
     for (const Object& o : scene.objects) merging_ = merging_ && !(scene.camera.shutter && o.motion.moving());
-    paths_.resize(static_cast<std::size_t>(scene.film.width) * static_cast<std::size_t>(scene.film.height));
+    pixels_ = static_cast<std::size_t>(scene.film.width) * static_cast<std::size_t>(scene.film.height);
+    runs_.resize(pixels_);
     // The radii the schedule may take. Below the rounding of the scene's largest coordinate no
     // two points can be told apart (and a grid cell index, |p| / 2r, stays below 2^22); above the
     // scene's size every photon is in range already. Both also keep eta = pi r^2 N a normal,
@@ -28,7 +31,7 @@ VcmIntegrator::VcmIntegrator(const Scene& scene, const Accel& accel, const Camer
     const collision::Bounds3 world = scene_world_bounds(scene);
     float extent = world.empty() ? 1.0f : std::max({glm::length(world.lo), glm::length(world.hi), glm::length(world.hi - world.lo)});
     if (!std::isfinite(extent) || !(extent > 0.0f)) extent = 1.0f;
-    const double n = static_cast<double>(paths_.size());
+    const double n = static_cast<double>(pixels_);
     const double eta_lo = std::sqrt(double(std::numeric_limits<float>::min()) / (kPi * n));
     const double eta_hi = std::sqrt(double(std::numeric_limits<float>::max()) / (kPi * n));
     r_min_ = static_cast<float>(std::max(double(extent) * std::numeric_limits<float>::epsilon(), 2.0 * eta_lo));
@@ -80,38 +83,60 @@ float VcmIntegrator::radius(int iteration) const {
 
 float VcmIntegrator::merge_density(int iteration) const {
     const double r = radius(iteration);
-    return static_cast<float>(kPi * r * r * static_cast<double>(paths_.size()));
+    return static_cast<float>(kPi * r * r * static_cast<double>(pixels_));
 }
 
-void VcmIntegrator::begin_iteration(int iteration) {
+void VcmIntegrator::begin_iteration(int iteration, int tiles) {
     radius_ = radius(iteration);
     eta_ = merging_ ? merge_density(iteration) : 0.0f;
+    light_.resize(static_cast<std::size_t>(tiles));
+    // A pixel the light pass skips (a cancelled pass, which is dropped) has no light vertices.
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, pixels_, 1 << 16), [&](const tbb::blocked_range<std::size_t>& r) {
+        std::fill(runs_.begin() + static_cast<std::ptrdiff_t>(r.begin()), runs_.begin() + static_cast<std::ptrdiff_t>(r.end()),
+                  PixelRun{});
+    });
 }
 
-void VcmIntegrator::trace_light(std::size_t pixel, float time, PixelSampler& sampler, std::uint64_t& rays,
+// A tile's light vertices go to a scratch store of the thread's first (its capacity kept), then
+// to the tile's at their exact size: the iteration's stores hold no growth slack.
+namespace {
+LightVertices& scratch_store() {
+    thread_local LightVertices scratch;
+    return scratch;
+}
+}  // namespace
+
+void VcmIntegrator::trace_light(int tile, std::size_t pixel, float time, PixelSampler& sampler, std::uint64_t& rays,
                                 std::vector<Splat>& splats) {
-    bdpt_.light_subpath(time, sampler, rays, eta_, paths_[pixel], splats);
+    LightVertices& scratch = scratch_store();
+    const auto first = static_cast<std::uint32_t>(scratch.size());
+    bdpt_.light_subpath(time, sampler, rays, eta_, scratch, splats);
+    runs_[pixel] = {static_cast<std::uint32_t>(tile), first, static_cast<std::uint32_t>(scratch.size()) - first};
+}
+
+void VcmIntegrator::finish_tile(int tile) {
+    LightVertices& scratch = scratch_store();
+    LightVertices& store = light_[static_cast<std::size_t>(tile)];
+    store.clear();
+    store.append(scratch);
+    scratch.clear();
 }
 
 void VcmIntegrator::build_grid() {
-    photons_.clear();
+    std::vector<std::span<const Photon>> runs;
     if (eta_ > 0.0f) {
-        for (std::size_t p = 0; p < paths_.size(); ++p) {
-            const std::vector<PathVertex>& path = paths_[p];
-            for (std::size_t b = 1; b < path.size(); ++b) {
-                const PathVertex& v = path[b];
-                if (v.kind != PathVertex::Kind::Surface || is_delta(v.mat(scene_))) continue;
-                photons_.push_back({v.point(), static_cast<std::uint32_t>(p), static_cast<std::uint32_t>(b)});
-            }
-        }
+        runs.reserve(light_.size());
+        for (const LightVertices& tile : light_) runs.push_back(tile.photons());
     }
-    grid_.build(photons_, 2.0f * radius_);
+    grid_.build(runs, 2.0f * radius_);
 }
 
 glm::vec3 VcmIntegrator::sample(std::size_t pixel, float x, float y, const glm::vec2& lens, float time,
                                 PixelSampler& sampler, std::uint64_t& rays, SampleFeatures* features) const {
     thread_local std::vector<PathVertex> cam;
-    glm::vec3 l = bdpt_.camera_subpath(x, y, lens, time, sampler, rays, paths_[pixel], eta_, cam, features);
+    const PixelRun& run = runs_[pixel];
+    glm::vec3 l = bdpt_.camera_subpath(x, y, lens, time, sampler, rays, light_[run.tile], run.first, run.count, eta_,
+                                       cam, features);
     if (!(eta_ > 0.0f)) return l;
     for (int j = 1; j < static_cast<int>(cam.size()) && j < max_depth_ && !bdpt_.cancelled(); ++j) {  // cut: pass dropped
         const MaterialParameters& mat = cam[static_cast<std::size_t>(j)].mat(scene_);
@@ -128,33 +153,30 @@ glm::vec3 VcmIntegrator::merge(const std::vector<PathVertex>& cam, int j) const 
     const PathVertex& z = cam[static_cast<std::size_t>(j)];
     const MaterialParameters& mat = z.mat(scene_);
     const float r2 = radius_ * radius_;
-    thread_local MisPath m;
+    MisPath m;
     glm::vec3 sum(0.0f);
-    grid_.for_each_near(z.point(), radius_, [&](const Photon& ph) {
-        const glm::vec3 d = ph.point - z.point();
+    grid_.for_each_near(z.point(), radius_, [&](const Photon& y) {
+        const glm::vec3 d = y.point - z.point();
         if (glm::dot(d, d) > r2) return;
-        const int s = static_cast<int>(ph.index), k = s + j;
+        const int s = y.mis.depth, k = s + j;
         if (k > max_depth_) return;
-        const std::vector<PathVertex>& light = paths_[ph.pixel];
-        const PathVertex& y = light[ph.index];
         // Only a photon on a surface facing this one's way: light arriving at a wall is
         // no sample of what arrives at the floor beside it (a leak around the corner).
-        if (!(glm::dot(y.hit.normal, z.hit.normal) > 0.0f)) return;
+        if (!(glm::dot(y.normal, z.hit.normal) > 0.0f)) return;
         const BsdfEvalBoth e = eval_bsdf_both(mat, z.hit, z.wo, y.wo);
         // The photon's power is per unit of its own surface's area: its own geometric
         // cosine turns it back into radiance, the camera BSDF's shading cosine applies it.
-        const float cos_g = std::abs(glm::dot(y.wo, y.hit.normal));
+        const float cos_g = std::abs(glm::dot(y.wo, y.normal));
         if (!(e.pdf_wi > 0.0f) || !(cos_g > 0.0f)) return;
         const glm::vec3 c = z.beta * e.f_cos * y.beta / cos_g;
         if (!(max_component(c) > 0.0f)) return;
-        // The path light[0..s) + cam[j..0], x_s the camera's vertex.
-        const auto at = [](int i) { return static_cast<std::size_t>(i); };
-        gather_mis_path(m, k, std::span<const PathVertex>(light).first(at(s)),
-                        std::span<const PathVertex>(cam).first(at(j + 1)), lights_);
-        m.from_light[at(s)] = y.pdf_own;
-        m.delta[at(s)] = 0;
-        m.from_camera[at(s - 1)] = area_density(e.pdf_wi, z.point(), light[at(s - 1)]);
-        if (j >= 2) m.from_light[at(s + 1)] = area_density(e.pdf_wo, z.point(), cam[at(j - 1)]);
+        // The path x_0..x_s of the photon's subpath + cam[j..0], x_s the camera's vertex: the
+        // camera BSDF's densities toward the photon's predecessor (through the photon's own
+        // last segment, SmallVCM's) and toward cam[j - 1].
+        m.reset(k, s - 1, std::min(k, s + 2));
+        put_light_end(m, y.mis, e.pdf_wi);
+        const float fl_next = j >= 2 ? area_density(e.pdf_wo, z.point(), cam[static_cast<std::size_t>(j - 1)]) : 0.0f;
+        put_camera_end(m, cam, j, s, y.mis.pdf_own, fl_next);
         sum += c * mis_weight(m, s, true, eta_);
     });
     return sum / eta_;
