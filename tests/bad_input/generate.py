@@ -806,6 +806,16 @@ case("merge-part-65536", 2, E + r"'big\.exr': data window is not 1\.\.16384 pixe
      {"big.exr": part_header(65536, 65536)})
 case("merge-part-directory", 2, E + r"cannot read 'd\.exr': is a directory", "merge d.exr -o out.exr", {"d.exr/keep": ""})
 case("merge-part-fifo", 2, E + r"cannot read 'f\.exr': is a FIFO", "merge f.exr -o out.exr", {}, "fifo f.exr")
+# The memory bdpt's light splats and --forensics take, charged before the render (issue 40): a
+# depth-1024 bdpt may hold 1024 splats a sample for a wave of 64 tiles (671 MB), and forensics
+# keeps 256 path types a region of a 1024 x 1024 image (4096 regions). Main's estimate left both
+# out and rendered.
+render_case("mem-bdpt-splats", E + r"scene\.json: the render needs an estimated .* \(film 128x128: .*, light splats at depth 1024: "
+            r"671\.1 MB, scene: .*\), more than the .* that --max-memory allows",
+            scene(film__width=128, film__height=128), args="--integrator bdpt --max-depth 1024 --max-memory 200M")
+render_case("mem-forensics-regions", E + r"scene\.json: the render needs an estimated .* \(film 1024x1024: .*, --forensics: "
+            r".* MB, scene: .*\), more than the .* that --max-memory allows",
+            scene(film__width=1024, film__height=1024), args="--forensics f.json --max-memory 300M")
 
 
 # --- participating media (issue 41, scene/load_media.hpp): placed errors, nothing written --------------
