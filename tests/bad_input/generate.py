@@ -587,9 +587,11 @@ case("pbrt-film-filename-is-texture", 2, O + r"tex\.png" + IN + r"tex\.png'", "r
 # Memory: one budget for the load (load_budget.hpp), run under a 4 GB address space as a user's
 # `ulimit -v` would; each used to end in bad_alloc (exit 3) or take 4-16 GB.
 AS = "address-space 4096"
-# 2,000,000 faces of 255 uchar corners in a 0.5 MB .ply.gz (written by the runner): 488 MiB
-# inflated, 2 GB of corners, 506 M triangles (6 GB): refused when the triangles are charged.
-render_case("mem-ply-gz-fans", E + r"scene\.json: objects\[0\]\.file: .*fans\.ply\.gz: 2000000 faces as 506000000 triangles needs 6\.07 GB, "
+# 2,000,000 faces of 255 uchar corners in a 2 MB .ply.gz (written by the runner): 488 MiB
+# inflated, 2 GB of corners, 506 M triangles (6 GB): refused when the faces are charged, counted
+# before a corner is read.
+render_case("mem-ply-gz-fans", E + r"scene\.json: objects\[0\]\.file: .*fans\.ply\.gz: 2000000 faces as 506000000 triangles "
+            r"\(510000000 corners\) needs 8\.13 GB, "
             r"which would bring the scene's data to .*, over the load budget of .* \(the memory available; --max-memory sets it\)",
             mesh_scene("fans.ply.gz"), setup="ply-gz-fans fans.ply.gz 2000000 ; " + AS)
 # Six 2 MiB RLE TGAs of 8192 x 8192 (0.8 GB each decoded, each within the per-image limit): the
