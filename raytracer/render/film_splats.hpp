@@ -6,10 +6,11 @@
 // (SplatFootprint). Kept spread, one splat was one entry per pixel of the filter's footprint:
 // (2 r)^2 = 1024 of them for a Gaussian of radius 16, 3 GB for one 640x640 bdpt pass.
 //
-// The renderer adds a pass's splats in waves of kSplatWaveTiles tiles (renderer.cpp, run_tiles),
-// so its buffers hold one wave's splats at a time whatever the image's size: at most max_depth
-// per sample (a light subpath has at most max_depth vertices, each joined to the lens once), which
-// splat_buffer_bytes charges to the memory estimate.
+// The renderer adds a pass's splats in waves of kSplatWaveTiles tiles (renderer.cpp, run_tiles)
+// to a per-pixel sum of the pass's splats, so its buffers hold one wave's splats at a time
+// whatever the image's size: at most max_depth per sample (a light subpath has at most max_depth
+// vertices, each joined to the lens once), which splat_buffer_bytes charges to the memory
+// estimate with the per-pixel sum.
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
@@ -75,8 +76,9 @@ private:
 // threads busier between the wave's serial additions; smaller ones bound the buffers tighter.
 inline constexpr int kSplatWaveTiles = 64;
 
-// The splat buffers of a width x height render at most: one wave's samples, max_depth splats
-// each, twice for the vectors' growth (a vector's capacity is under twice the most it held).
+// The splat buffers of a width x height render at most: the pass's per-pixel sum (a vec3), and one
+// wave's samples, max_depth splats each, twice for the vectors' growth (a vector's capacity is
+// under twice the most it held).
 std::uint64_t splat_buffer_bytes(int width, int height, int max_depth);
 
 }  // namespace sweeptrace

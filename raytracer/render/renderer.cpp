@@ -64,8 +64,10 @@ public:
           sum_(static_cast<std::size_t>(width_) * height_),
           sum_sq_(sum_.size(), glm::dvec3(0.0)),
           pass_(sum_.size()) {
-        if (opt.integrator != IntegratorKind::Path)
+        if (opt.integrator != IntegratorKind::Path) {
             tile_splats_.resize(static_cast<std::size_t>(std::min(tiles_x_ * tiles_y_, kSplatWaveTiles)));
+            splat_sum_.resize(sum_.size());
+        }
         bdpt_.set_cancel(opt.cancel);  // a depth-1024 sample takes seconds: it stops inside, its pass dropped
         if (opt.integrator == IntegratorKind::Vcm) vcm_.emplace(scene, accel, camera_, lights_, bdpt_, opt.max_depth);
         if (opt.guiding) {
@@ -120,6 +122,7 @@ public:
                 if (opt_.forensics != nullptr) opt_.forensics->drop_pass();
                 break;
             }
+            if (splatting()) add_splat_sums();
             if (opt_.guiding && guide_.training()) learn(s + 1);
             accumulate_pass(sample, !kept_sum_.empty() && sample >= keep_from);
             if (opt_.forensics != nullptr) opt_.forensics->end_pass();
@@ -285,12 +288,19 @@ private:
                           });
     }
 
-    // bdpt, vcm: the pass's values start at 0 and gather the camera samples and the splats in
-    // the order run_tiles adds them.
+    // bdpt, vcm: the pass's splats are summed per pixel apart from its camera samples, in the
+    // order run_tiles adds them, and join them once the pass is whole (add_splat_sums): the same
+    // additions whether the splats come before the camera samples (vcm's light pass) or with them
+    // (bdpt), so vcm without merging is bdpt bit for bit.
     bool splatting() const { return !tile_splats_.empty(); }
     void start_splat_pass() {
-        std::fill(pass_.begin(), pass_.end(), glm::vec3(0.0f));
+        std::fill(splat_sum_.begin(), splat_sum_.end(), glm::vec3(0.0f));
         for (std::vector<Splat>& slot : tile_splats_) slot.clear();  // a dropped pass's
+    }
+    void add_splat_sums() {
+        tbb::parallel_for(tbb::blocked_range<std::size_t>(0, pass_.size(), 4096), [&](const tbb::blocked_range<std::size_t>& r) {
+            for (std::size_t i = r.begin(); i < r.end(); ++i) pass_[i] += splat_sum_[i];
+        });
     }
     std::vector<Splat>& splat_slot(int tile) { return tile_splats_[static_cast<std::size_t>(tile % kSplatWaveTiles)]; }
 
@@ -321,9 +331,10 @@ private:
     // The light-tracing splats of tiles [w0, w1), added to the pixels their filter reaches tile by
     // tile in tile order and, within a tile, in the order its samples made them: the same float
     // additions for any thread count, and a pass's values depend only on its sample index, so farm
-    // parts merge bit for bit. The pass value of a pixel is then its camera sample plus every splat
-    // of that pass, each pass an independent estimate of the pixel, so the variance of result()
-    // (the spread of those values over passes) is that of the whole estimator, splats included.
+    // parts merge bit for bit. The pass value of a pixel is then its camera sample plus the sum of
+    // every splat of that pass, each pass an independent estimate of the pixel, so the variance of
+    // result() (the spread of those values over passes) is that of the whole estimator, splats
+    // included.
     void add_splats(int w0, int w1) {
         std::uint64_t nonfinite = 0;
         for (int t = w0; t < w1; ++t) {
@@ -331,7 +342,7 @@ private:
             for (const Splat& sp : slot)
                 splat_footprint_.spread(sp, [&](std::size_t pixel, const glm::vec3& value) {
                     const glm::vec3 v = limited(value);
-                    if (collision::finite(v)) pass_[pixel] += v;
+                    if (collision::finite(v)) splat_sum_[pixel] += v;
                     else ++nonfinite;
                 });
             slot.clear();
@@ -422,8 +433,7 @@ private:
                 SampleFeatures* features = pass_features_.empty() ? nullptr : &pass_features_[pixel];
                 const glm::vec3 l = sample_pixel(x, y, sample, rays, nonfinite, records, splats, tally, features);
                 if (tally != nullptr) opt_.forensics->finish_sample(tile, pixel, *tally, l);
-                if (bdpt) pass_[pixel] += l;  // beside the splats of the waves before (start_splat_pass)
-                else pass_[pixel] = l;
+                pass_[pixel] = l;
             }
         }
         rays_.fetch_add(rays, std::memory_order_relaxed);
@@ -518,6 +528,7 @@ private:
     SplatFootprint splat_footprint_;
     // bdpt, vcm: the wave in flight's light-tracing splats, a slot per tile of the wave (run_tiles)
     std::vector<std::vector<Splat>> tile_splats_;
+    std::vector<glm::vec3> splat_sum_;  // bdpt, vcm: the pass in flight's splats, per pixel
     std::vector<PixelSum> sum_;     // per-pixel exact sum over completed passes
     std::vector<glm::dvec3> sum_sq_;  // per-pixel sum of squares, for the variance
     std::vector<glm::vec3> pass_;   // the pass in flight

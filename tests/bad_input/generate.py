@@ -813,7 +813,7 @@ case("merge-part-fifo", 2, E + r"cannot read 'f\.exr': is a FIFO", "merge f.exr 
 # keeps 256 path types a region of a 1024 x 1024 image (4096 regions). Main's estimate left both
 # out and rendered.
 render_case("mem-bdpt-splats", E + r"scene\.json: the render needs an estimated .* \(film 128x128: .*, light splats at depth 1024: "
-            r"671\.1 MB, scene: .*\), more than the .* that --max-memory allows",
+            r"671\.3 MB, scene: .*\), more than the .* that --max-memory allows",
             scene(film__width=128, film__height=128), args="--integrator bdpt --max-depth 1024 --max-memory 200M")
 render_case("mem-forensics-regions", E + r"scene\.json: the render needs an estimated .* \(film 1024x1024: .*, --forensics: "
             r".* MB, scene: .*\), more than the .* that --max-memory allows",
