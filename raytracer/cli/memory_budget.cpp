@@ -7,7 +7,9 @@
 #include "raytracer/image/feature_sums.hpp"
 #include "raytracer/image/partial_sum.hpp"
 #include "raytracer/input_error.hpp"
+#include "raytracer/render/film_splats.hpp"
 #include "raytracer/render/integrators/light_vertices.hpp"
+#include "raytracer/render/path_forensics.hpp"
 #include "raytracer/render/renderer.hpp"
 
 namespace sweeptrace {
@@ -43,7 +45,7 @@ constexpr std::uint64_t kAccelBytesPerVertex = 24;
 
 }  // namespace
 
-MemoryEstimate estimate_render_memory(const Scene& scene, bool adaptive) {
+MemoryEstimate estimate_render_memory(const Scene& scene, bool adaptive, bool forensics) {
     MemoryEstimate e;
     const std::uint64_t pixels = std::uint64_t(scene.film.width) * std::uint64_t(scene.film.height);
     e.film = pixels * kFilmBytesPerPixel;
@@ -51,6 +53,9 @@ MemoryEstimate estimate_render_memory(const Scene& scene, bool adaptive) {
         e.film += pixels * std::uint64_t(scene.film.max_depth) * kVcmBytesPerLightVertex;
     if (adaptive) e.film += pixels * kAdaptiveBytesPerPixel;
     if (scene.film.aovs) e.film += pixels * (kAovBytesPerPixel + (adaptive ? kAovAdaptiveBytesPerPixel : 0));
+    if (scene.film.integrator != IntegratorKind::Path)
+        e.splats = splat_buffer_bytes(scene.film.width, scene.film.height, scene.film.max_depth);
+    if (forensics) e.forensics = PathForensics::memory_bytes(scene.film.width, scene.film.height);
     std::uint64_t primitives = scene.objects.size(), vertices = 0;
     for (const Mesh& m : scene.meshes) {
         primitives += m.triangles.indices.size();
@@ -69,11 +74,14 @@ void check_memory_estimate(std::uint64_t bytes, std::optional<std::uint64_t> lim
                      (limit ? " that --max-memory allows" : " of memory available (--max-memory sets the limit)"));
 }
 
-void check_render_memory(const Scene& scene, std::optional<std::uint64_t> limit, bool adaptive) {
-    const MemoryEstimate e = estimate_render_memory(scene, adaptive);
-    check_memory_estimate(e.total(), limit, scene.source.string() + ": the render",
-                          "film " + std::to_string(scene.film.width) + "x" + std::to_string(scene.film.height) + ": " +
-                              byte_text(e.film) + ", scene: " + byte_text(e.scene));
+void check_render_memory(const Scene& scene, std::optional<std::uint64_t> limit, bool adaptive, bool forensics) {
+    const MemoryEstimate e = estimate_render_memory(scene, adaptive, forensics);
+    std::string detail = "film " + std::to_string(scene.film.width) + "x" + std::to_string(scene.film.height) + ": " +
+                         byte_text(e.film);
+    if (e.splats > 0)
+        detail += ", light splats at depth " + std::to_string(scene.film.max_depth) + ": " + byte_text(e.splats);
+    if (e.forensics > 0) detail += ", --forensics: " + byte_text(e.forensics);
+    check_memory_estimate(e.total(), limit, scene.source.string() + ": the render", detail + ", scene: " + byte_text(e.scene));
 }
 
 void check_merge_memory(int width, int height, bool adaptive, const std::string& part) {

@@ -216,7 +216,7 @@ int run_render(const RenderArgs& a) {
     std::vector<NamedFile> all_outputs = outputs;
     if (scene.film.aovs && !part) add_aov_outputs(all_outputs, out);  // a farm part keeps its feature sums in itself
     check_outputs(all_outputs, inputs);
-    check_render_memory(scene, a.limits.memory_limit(), a.adaptive != "off");
+    check_render_memory(scene, a.limits.memory_limit(), a.adaptive != "off", !a.forensics.empty());
     if (!a.denoise.empty()) check_denoise_memory("--denoise '" + a.denoise + "'", scene.film.width, scene.film.height, thread_count);
 
     // A farm part: which samples, and the render they belong to; a re-run task skips a finished one.

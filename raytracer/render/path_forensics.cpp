@@ -10,6 +10,7 @@
 
 #include "raytracer/image/srgb.hpp"
 #include "raytracer/render/lights.hpp"
+#include "raytracer/render/render_tiles.hpp"
 #include "raytracer/render/sampling.hpp"
 
 namespace sweeptrace {
@@ -46,6 +47,12 @@ std::string json_string(const std::string& s) {
         }
     }
     return out + "\"";
+}
+
+void add_to(PathMoments& t, const PathMoments& m) {
+    t.variance += m.variance;
+    t.second += m.second;
+    t.first += m.first;
 }
 
 std::string number(double v) {
@@ -93,6 +100,7 @@ void PathForensics::start(int width, int height, int tile_size, const LightSet& 
     pixel_sum_.assign(static_cast<std::size_t>(width) * height, 0.0);
     pixel_pass_.assign(pixel_sum_.size(), 0.0);
     passes_ = 0;
+    most_keys_ = 0;
     for (int y0 = 0; y0 < height; y0 += tile_size)
         for (int x0 = 0; x0 < width; x0 += tile_size) {
             Region r;
@@ -118,19 +126,67 @@ void PathForensics::finish_sample(int tile, std::size_t pixel, const PathTally& 
     const double scale = x / raw;
     for (const PathTally::Found& f : tally.found()) {
         const double c = scale * f.value;
-        r.pending.push_back({f.key, PathMoments{passes_ > 0 ? c * (x - m) : 0.0, c * x, c}});
+        auto it = r.pending.find(f.key);
+        if (it == r.pending.end())
+            it = r.pending.try_emplace(r.pending.size() < kRegionTypes ? f.key : PathKey::other()).first;
+        add_to(it->second, PathMoments{passes_ > 0 ? c * (x - m) : 0.0, c * x, c});
     }
+}
+
+// The pass's sums into the totals, within kRegionTypes keys (the header comment says how).
+void PathForensics::merge_pass(Region& r) {
+    std::vector<std::pair<PathKey, PathMoments>> fresh;  // keys the totals do not have yet
+    for (const auto& [key, m] : r.pending) {
+        const auto it = r.totals.find(key);
+        if (it != r.totals.end()) add_to(it->second, m);
+        else fresh.emplace_back(key, m);
+    }
+    // Largest second moment first (ties: the smaller key), into the room left, then each in the
+    // place of the kept key with the smallest second moment while it is larger.
+    const auto larger = [](const auto& a, const auto& b) {
+        return a.second.second != b.second.second ? a.second.second > b.second.second : a.first < b.first;
+    };
+    std::sort(fresh.begin(), fresh.end(), larger);
+    const auto kept = [&r] { return r.totals.size() - r.totals.count(PathKey::other()); };
+    std::size_t next = 0;
+    for (; next < fresh.size() && kept() < kRegionTypes; ++next) r.totals.insert(fresh[next]);
+    if (next < fresh.size()) {
+        std::vector<std::pair<PathKey, PathMoments>> smallest;
+        for (const auto& entry : r.totals)
+            if (!entry.first.is_other()) smallest.push_back(entry);
+        std::sort(smallest.begin(), smallest.end(), [&](const auto& a, const auto& b) { return larger(b, a); });
+        PathMoments& other = r.totals[PathKey::other()];
+        std::size_t k = 0;
+        for (; next < fresh.size(); ++next) {
+            if (k < smallest.size() && fresh[next].second.second > smallest[k].second.second) {
+                add_to(other, smallest[k].second);
+                r.totals.erase(smallest[k].first);
+                r.totals.insert(fresh[next]);
+                ++k;
+            } else {
+                add_to(other, fresh[next].second);
+            }
+        }
+    }
+    r.pending.clear();
+}
+
+std::size_t PathForensics::most_region_keys() const { return most_keys_; }
+
+std::uint64_t PathForensics::memory_bytes(int width, int height) {
+    // A std::map node: the key and sums, three links and the colour, the allocator's header.
+    constexpr std::uint64_t node = sizeof(std::pair<const PathKey, PathMoments>) + 4 * sizeof(void*) + 16;
+    // The report's per key: a node of the image-wide map, and a Row with its three names (a path
+    // of 30 vertices is 66 characters, past a string's inline buffer).
+    constexpr std::uint64_t report = node + sizeof(Row) + 3 * 80;
+    const std::uint64_t per_region = sizeof(Region) + (kRegionTypes + 1) * (2 * node + report);
+    return render_tile_count(width, height) * per_region + std::uint64_t(width) * std::uint64_t(height) * 2 * sizeof(double);
 }
 
 void PathForensics::end_pass() {
     for (Region& r : regions_) {
-        for (const auto& [key, m] : r.pending) {
-            PathMoments& t = r.totals[key];
-            t.variance += m.variance;
-            t.second += m.second;
-            t.first += m.first;
-        }
-        r.pending.clear();
+        merge_pass(r);
+        most_keys_ = std::max(most_keys_, r.totals.size());
         r.samples += r.pending_samples;
         if (passes_ > 0) r.variance_samples += r.pending_samples;
         r.pending_samples = 0;
@@ -147,6 +203,7 @@ void PathForensics::drop_pass() {
 }
 
 std::string PathForensics::path_text(const PathKey& k) const {
+    if (k.is_other()) return "other types";
     std::string s = "L";
     if (k.length >= PathKey::kMaxVertices) s += " ...";
     for (int i = std::min<int>(k.length, PathKey::kMaxVertices) - 1; i >= 0; --i) {
@@ -160,6 +217,7 @@ std::string PathForensics::path_text(const PathKey& k) const {
 }
 
 std::string PathForensics::light_text(std::int32_t light) const {
+    if (light == -1) return "-";  // no one light: a region's "other types" (PathKey::other)
     if (light == PathKey::kBackground) return "background";
     if (light == PathKey::kMediumEmission) return "medium emission";
     return light >= 0 && static_cast<std::size_t>(light) < light_names_.size() ? light_names_[static_cast<std::size_t>(light)] : "?";
@@ -174,12 +232,7 @@ std::string PathForensics::material_text(std::int32_t material) const {
 std::map<PathKey, PathMoments> PathForensics::image_totals(bool by_path) const {
     std::map<PathKey, PathMoments> all;
     for (const Region& r : regions_)
-        for (const auto& [key, m] : r.totals) {
-            PathMoments& t = all[by_path ? path_only(key) : key];
-            t.variance += m.variance;
-            t.second += m.second;
-            t.first += m.first;
-        }
+        for (const auto& [key, m] : r.totals) add_to(all[by_path ? path_only(key) : key], m);
     return all;
 }
 

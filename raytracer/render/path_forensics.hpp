@@ -28,7 +28,20 @@
 //
 // Regions are the renderer's 16x16 tiles: a tile is rendered by one thread per pass, so each
 // region's sums are added in one fixed order (pixel, then contribution), passes are merged only
-// when complete, and the report is the same bit for bit for any thread count. Recording reads
+// when complete, and the report is the same bit for bit for any thread count.
+//
+// Bounded: a region keeps the sums of at most kRegionTypes keys (path type, light, material); the
+// rest of its credits go to its "other types" key (PathKey::other()), reported as a row of its
+// own, so the shares still add up to the whole. Paths that mix D, G and S vertices make new keys
+// at every sample (a 16x16 region of staircase2 meets 250 in 16 spp), and with every key kept the
+// memory grew with the spp: 240 MB for a 16x16 image at 256 spp. Which keys stay: a pass's keys
+// in the order met, up to kRegionTypes (more go to "other"); when the pass joins the totals, a new
+// key takes the place of the kept key with the smallest second moment if its own in that pass is
+// larger, the replaced key's sums going to "other", else its sums go there. A key's variance
+// credits are at most its second-moment credits (both are sums of c_k times X or X - m, c_k and X
+// >= 0), so a key dropped this way carries less of the variance than the keys kept do of E[X^2].
+// The memory of forensics depends on the image's size alone (memory_bytes, charged to the
+// render's memory estimate). Recording reads
 // the path and draws no random number, so the image is the same with it on or off.
 // Off (no PathTally given to the integrator) it costs one pointer test per contribution.
 #include <cstdint>
@@ -54,6 +67,11 @@ struct PathKey {
     static constexpr int kMaxVertices = 30;
     static constexpr std::int32_t kBackground = -2;
     static constexpr std::int32_t kMediumEmission = -3;  // light a participating medium emits
+    // A region's credits beyond the keys it keeps (path_forensics.hpp): a length no path has, no
+    // one light, no material.
+    static constexpr std::uint8_t kOtherLength = 0xff;
+    static PathKey other() { return PathKey{0, kOtherLength, -1, -1}; }
+    bool is_other() const { return length == kOtherLength; }
     auto operator<=>(const PathKey&) const = default;
 };
 
@@ -119,7 +137,16 @@ inline glm::vec3 tally_found(PathTally* tally, const glm::vec3& c, std::int32_t 
 // Per-region sums over a render, and the report made from them.
 class PathForensics {
 public:
+    // Keys a region keeps sums for, besides PathKey::other() (the header comment says which).
+    static constexpr std::size_t kRegionTypes = 256;
+
     explicit PathForensics(const Scene& scene) : scene_(scene) {}
+
+    // The most forensics keeps for a width x height render: per region its kept keys' sums, the
+    // pass in flight's and the report's image-wide copy of them; per pixel two sums.
+    static std::uint64_t memory_bytes(int width, int height);
+    // The most keys a region has held (for tests of the bound).
+    std::size_t most_region_keys() const;
 
     // Called by the renderer before the first pass: its tiles are the regions, its lights' names
     // the ones reported.
@@ -160,9 +187,10 @@ private:
     struct Region {
         int x0 = 0, y0 = 0, x1 = 0, y1 = 0;
         std::uint64_t samples = 0, pending_samples = 0, variance_samples = 0;  // the last: passes 2 on
-        std::map<PathKey, PathMoments> totals;
-        std::vector<std::pair<PathKey, PathMoments>> pending;  // the pass in flight
+        std::map<PathKey, PathMoments> totals;   // at most kRegionTypes keys and other()
+        std::map<PathKey, PathMoments> pending;  // the pass in flight's, the same bound
     };
+    static void merge_pass(Region& r);
     static PathKey path_only(PathKey k) {
         k.light = -1;
         k.material = -1;
@@ -179,6 +207,7 @@ private:
     std::vector<double> pixel_sum_;   // luminance of the pixel's samples over the completed passes
     std::vector<double> pixel_pass_;  // the pass in flight's sample of each pixel
     int passes_ = 0;                  // completed
+    std::size_t most_keys_ = 0;       // the most keys a region has held
 };
 
 }  // namespace sweeptrace

@@ -26,6 +26,7 @@
 #include "collision/finite.hpp"
 #include "raytracer/render/adaptive_sampling.hpp"
 #include "raytracer/render/camera.hpp"
+#include "raytracer/render/film_splats.hpp"
 #include "raytracer/render/guiding_sd_tree.hpp"
 #include "raytracer/render/integrators/bdpt.hpp"
 #include "raytracer/render/integrators/path.hpp"
@@ -33,14 +34,13 @@
 #include "raytracer/render/lights.hpp"
 #include "raytracer/render/path_forensics.hpp"
 #include "raytracer/render/planted_defect.hpp"
+#include "raytracer/render/render_tiles.hpp"
 #include "raytracer/render/sample_features.hpp"
 #include "raytracer/render/sampler.hpp"
 
 namespace sweeptrace {
 
 namespace {
-
-constexpr int kTileSize = 16;
 
 // The render runs in passes of one sample per pixel over the whole image. A cancel request
 // abandons the pass in flight, so the returned image always holds the same number of samples in
@@ -53,17 +53,21 @@ public:
           budget_(opt.budget_clock, opt.time_budget),
           width_(scene.film.width),
           height_(scene.film.height),
-          tiles_x_((width_ + kTileSize - 1) / kTileSize),
-          tiles_y_((height_ + kTileSize - 1) / kTileSize),
+          tiles_x_((width_ + kRenderTileSize - 1) / kRenderTileSize),
+          tiles_y_((height_ + kRenderTileSize - 1) / kRenderTileSize),
           lights_(scene, defect),
           camera_(scene.camera, width_, height_, scene.film.filter),
           integrator_(scene, accel, lights_, opt.max_depth, opt.sampling, defect, opt.roulette),
           bdpt_(scene, accel, lights_, camera_, opt.max_depth, defect, opt.roulette,
                 opt.sampling == Sampling::LightTracing),
+          splat_footprint_(camera_.filter(), scene.film.filter.radius, width_, height_),
           sum_(static_cast<std::size_t>(width_) * height_),
           sum_sq_(sum_.size(), glm::dvec3(0.0)),
           pass_(sum_.size()) {
-        if (opt.integrator != IntegratorKind::Path) tile_splats_.resize(static_cast<std::size_t>(tiles_x_) * tiles_y_);
+        if (opt.integrator != IntegratorKind::Path) {
+            tile_splats_.resize(static_cast<std::size_t>(std::min(tiles_x_ * tiles_y_, kSplatWaveTiles)));
+            splat_sum_.resize(sum_.size());
+        }
         bdpt_.set_cancel(opt.cancel);  // a depth-1024 sample takes seconds: it stops inside, its pass dropped
         if (opt.integrator == IntegratorKind::Vcm) vcm_.emplace(scene, accel, camera_, bdpt_, opt.max_depth);
         if (opt.guiding) {
@@ -71,7 +75,7 @@ public:
             integrator_.set_guide(&guide_);
             guide_.set_paths_per_pass(sum_.size());
         }
-        if (opt.forensics != nullptr) opt.forensics->start(width_, height_, kTileSize, lights_);
+        if (opt.forensics != nullptr) opt.forensics->start(width_, height_, kRenderTileSize, lights_);
         if (opt.aovs) {
             feature_sums_.resize(sum_.size());
             pending_features_.resize(sum_.size() * kAovPendingPasses);
@@ -103,28 +107,23 @@ public:
         for (int s = 0; s < passes; ++s) {
             const int sample = first + s;
             if (stopped(s)) break;
+            if (splatting()) start_splat_pass();
             if (vcm_) light_pass(tiles, sample);
             // A cancel is seen per sample (render_tile, light_pass) and inside bdpt's and vcm's
             // strategy loops, so a signal is honoured within a fraction of a sample however long a
             // pass takes; the pass it cut short is dropped.
-            std::atomic<bool> abandoned{cancelled()};
-            if (!abandoned.load())
-                tbb::parallel_for(tbb::blocked_range<int>(0, tiles, 1), [&](const tbb::blocked_range<int>& r) {
-                    for (int t = r.begin(); t < r.end(); ++t) {
-                        if (stopped(s) || !render_tile(t, sample)) {
-                            abandoned.store(true, std::memory_order_relaxed);
-                            return;
-                        }
-                        tiles_done_.fetch_add(1, std::memory_order_relaxed);
-                    }
-                });
+            const bool abandoned = cancelled() || !run_tiles(tiles, [&](int t) {
+                if (stopped(s) || !render_tile(t, sample)) return false;
+                tiles_done_.fetch_add(1, std::memory_order_relaxed);
+                return true;
+            });
             // A cancel during the pass, even after its last tile started, may have cut a sample short
             // inside the integrator (bdpt's strategy loops): the pass is dropped whole.
-            if (abandoned.load() || cancelled()) {
+            if (abandoned || cancelled()) {
                 if (opt_.forensics != nullptr) opt_.forensics->drop_pass();
                 break;
             }
-            if (!tile_splats_.empty()) add_splats();
+            if (splatting()) add_splat_sums();
             if (opt_.guiding && guide_.training()) learn(s + 1);
             accumulate_pass(sample, !kept_sum_.empty() && sample >= keep_from);
             if (opt_.forensics != nullptr) opt_.forensics->end_pass();
@@ -313,24 +312,64 @@ private:
         pending_passes_.clear();
     }
 
-    // The light-tracing splats of the pass just finished, added to its pixels tile by tile in tile
-    // order and, within a tile, in the order its samples made them: the same float additions for
-    // any thread count, and a pass's values depend only on its sample index, so farm parts merge
-    // bit for bit. The pass value of a pixel is then its camera sample plus every splat of that
-    // pass, each pass an independent estimate of the pixel, so the variance of result() (the
-    // spread of those values over passes) is that of the whole estimator, splats included.
-    void add_splats() {
+    // bdpt, vcm: the pass's splats are summed per pixel apart from its camera samples, in the
+    // order run_tiles adds them, and join them once the pass is whole (add_splat_sums): the same
+    // additions whether the splats come before the camera samples (vcm's light pass) or with them
+    // (bdpt), so vcm without merging is bdpt bit for bit.
+    bool splatting() const { return !tile_splats_.empty(); }
+    void start_splat_pass() {
+        std::fill(splat_sum_.begin(), splat_sum_.end(), glm::vec3(0.0f));
+        for (std::vector<Splat>& slot : tile_splats_) slot.clear();  // a dropped pass's
+    }
+    void add_splat_sums() {
+        tbb::parallel_for(tbb::blocked_range<std::size_t>(0, pass_.size(), 4096), [&](const tbb::blocked_range<std::size_t>& r) {
+            for (std::size_t i = r.begin(); i < r.end(); ++i) pass_[i] += splat_sum_[i];
+        });
+    }
+    std::vector<Splat>& splat_slot(int tile) { return tile_splats_[static_cast<std::size_t>(tile % kSplatWaveTiles)]; }
+
+    // tile(t) for every tile, in parallel; false once a tile returns false (a cancel: the pass
+    // is dropped). Splatting, the tiles go in waves of kSplatWaveTiles, each wave's splats added
+    // to the pass before the next wave starts, so the buffers hold one wave's splats whatever
+    // the image's size (film_splats.hpp); the waves are fixed, so the additions are the same for
+    // any thread count.
+    template <class Tile>
+    bool run_tiles(int tiles, Tile&& tile) {
+        const int wave = splatting() ? kSplatWaveTiles : tiles;
+        for (int w0 = 0; w0 < tiles; w0 += wave) {
+            const int w1 = std::min(tiles, w0 + wave);
+            std::atomic<bool> abandoned{false};
+            tbb::parallel_for(tbb::blocked_range<int>(w0, w1, 1), [&](const tbb::blocked_range<int>& r) {
+                for (int t = r.begin(); t < r.end(); ++t)
+                    if (!tile(t)) {
+                        abandoned.store(true, std::memory_order_relaxed);
+                        return;
+                    }
+            });
+            if (abandoned.load()) return false;
+            if (splatting()) add_splats(w0, w1);
+        }
+        return true;
+    }
+
+    // The light-tracing splats of tiles [w0, w1), added to the pixels their filter reaches tile by
+    // tile in tile order and, within a tile, in the order its samples made them: the same float
+    // additions for any thread count, and a pass's values depend only on its sample index, so farm
+    // parts merge bit for bit. The pass value of a pixel is then its camera sample plus the sum of
+    // every splat of that pass, each pass an independent estimate of the pixel, so the variance of
+    // result() (the spread of those values over passes) is that of the whole estimator, splats
+    // included.
+    void add_splats(int w0, int w1) {
         std::uint64_t nonfinite = 0;
-        for (std::vector<Splat>& tile : tile_splats_) {
-            for (const Splat& sp : tile) {
-                const glm::vec3 v = limited(sp.value);
-                if (!collision::finite(v)) {
-                    ++nonfinite;
-                    continue;
-                }
-                pass_[sp.pixel] += v;
-            }
-            tile.clear();
+        for (int t = w0; t < w1; ++t) {
+            std::vector<Splat>& slot = splat_slot(t);
+            for (const Splat& sp : slot)
+                splat_footprint_.spread(sp, [&](std::size_t pixel, const glm::vec3& value) {
+                    const glm::vec3 v = limited(value);
+                    if (collision::finite(v)) splat_sum_[pixel] += v;
+                    else ++nonfinite;
+                });
+            slot.clear();
         }
         if (nonfinite != 0) nonfinite_.fetch_add(nonfinite, std::memory_order_relaxed);
     }
@@ -339,29 +378,32 @@ private:
     // photons into the grid, before any camera subpath of the pass.
     void light_pass(int tiles, int sample) {
         vcm_->begin_iteration(sample, tiles);
-        tbb::parallel_for(tbb::blocked_range<int>(0, tiles, 1), [&](const tbb::blocked_range<int>& r) {
-            for (int t = r.begin(); t < r.end(); ++t) {
-                const int x0 = (t % tiles_x_) * kTileSize, y0 = (t / tiles_x_) * kTileSize;
-                const int x1 = std::min(x0 + kTileSize, width_), y1 = std::min(y0 + kTileSize, height_);
-                std::uint64_t rays = 0;
-                std::vector<Splat>& splats = tile_splats_[static_cast<std::size_t>(t)];
-                for (int y = y0; y < y1; ++y)
-                    for (int x = x0; x < x1; ++x) {
-                        if (cancelled()) break;  // the pass is dropped (run_passes)
-                        const std::size_t pixel = static_cast<std::size_t>(y) * width_ + x;
-                        // The camera sample's shutter time (its subpath sees the scene then), the
-                        // light subpath's numbers from a stream of their own.
-                        PixelSampler camera(opt_.sampler, opt_.seed, pixel, static_cast<std::uint64_t>(sample));
-                        const float time = start_camera_sample(camera).time;
-                        PixelSampler light(opt_.sampler, opt_.seed, pixel, static_cast<std::uint64_t>(sample),
-                                           SamplerStream::LightSubpath);
-                        vcm_->trace_light(t, pixel, time, light, rays, splats);
+        const bool whole = run_tiles(tiles, [&](int t) {
+            const int x0 = (t % tiles_x_) * kRenderTileSize, y0 = (t / tiles_x_) * kRenderTileSize;
+            const int x1 = std::min(x0 + kRenderTileSize, width_), y1 = std::min(y0 + kRenderTileSize, height_);
+            std::uint64_t rays = 0;
+            std::vector<Splat>& splats = splat_slot(t);
+            bool done = true;
+            for (int y = y0; y < y1 && done; ++y)
+                for (int x = x0; x < x1; ++x) {
+                    if (cancelled()) {  // the pass is dropped (run_passes)
+                        done = false;
+                        break;
                     }
-                vcm_->finish_tile(t);
-                rays_.fetch_add(rays, std::memory_order_relaxed);
-            }
+                    const std::size_t pixel = static_cast<std::size_t>(y) * width_ + x;
+                    // The camera sample's shutter time (its subpath sees the scene then), the
+                    // light subpath's numbers from a stream of their own.
+                    PixelSampler camera(opt_.sampler, opt_.seed, pixel, static_cast<std::uint64_t>(sample));
+                    const float time = start_camera_sample(camera).time;
+                    PixelSampler light(opt_.sampler, opt_.seed, pixel, static_cast<std::uint64_t>(sample),
+                                       SamplerStream::LightSubpath);
+                    vcm_->trace_light(t, pixel, time, light, rays, splats);
+                }
+            vcm_->finish_tile(t);
+            rays_.fetch_add(rays, std::memory_order_relaxed);
+            return done;
         });
-        if (!cancelled()) vcm_->build_grid();
+        if (whole && !cancelled()) vcm_->build_grid();
     }
 
     // A camera sample's first numbers, in the order they are drawn: the film position's offset in
@@ -393,14 +435,14 @@ private:
 
     // False when a cancel cut the tile short (its pass is then dropped).
     bool render_tile(int tile, int sample) {
-        const int x0 = (tile % tiles_x_) * kTileSize, y0 = (tile / tiles_x_) * kTileSize;
-        const int x1 = std::min(x0 + kTileSize, width_), y1 = std::min(y0 + kTileSize, height_);
+        const int x0 = (tile % tiles_x_) * kRenderTileSize, y0 = (tile / tiles_x_) * kRenderTileSize;
+        const int x1 = std::min(x0 + kRenderTileSize, width_), y1 = std::min(y0 + kRenderTileSize, height_);
         std::uint64_t rays = 0, nonfinite = 0;
         std::vector<GuideRecord>* records =
             opt_.guiding && guide_.training() ? &tile_records_[static_cast<std::size_t>(tile)] : nullptr;
         if (records != nullptr) records->clear();
-        const bool bdpt = !tile_splats_.empty();
-        std::vector<Splat>* splats = bdpt ? &tile_splats_[static_cast<std::size_t>(tile)] : nullptr;
+        const bool bdpt = splatting();
+        std::vector<Splat>* splats = bdpt ? &splat_slot(tile) : nullptr;
         // Forensics follow the path integrator's vertices; the command line refuses them with bdpt.
         PathTally tally_storage;
         PathTally* tally = opt_.forensics != nullptr && !bdpt ? &tally_storage : nullptr;
@@ -509,7 +551,10 @@ private:
     PathIntegrator integrator_;
     BdptIntegrator bdpt_;
     std::optional<VcmIntegrator> vcm_;  // vcm only: it drives bdpt_ per iteration
-    std::vector<std::vector<Splat>> tile_splats_;  // bdpt, vcm: the pass in flight's light-tracing splats, per tile
+    SplatFootprint splat_footprint_;
+    // bdpt, vcm: the wave in flight's light-tracing splats, a slot per tile of the wave (run_tiles)
+    std::vector<std::vector<Splat>> tile_splats_;
+    std::vector<glm::vec3> splat_sum_;  // bdpt, vcm: the pass in flight's splats, per pixel
     std::vector<PixelSum> sum_;     // per-pixel exact sum over completed passes
     std::vector<glm::dvec3> sum_sq_;  // per-pixel sum of squares, for the variance
     std::vector<glm::vec3> pass_;   // the pass in flight

@@ -204,6 +204,23 @@ public:
         return 0.0;
     }
 
+    // Past `n` numbers of type `t` without reading them (binary: a jump; ASCII: the tokens), with
+    // read()'s message where the data ends first.
+    void skip(Scalar t, std::uint64_t n) {
+        if (format_ != Format::Ascii) {
+            const std::uint64_t fit = std::min<std::uint64_t>(n, remaining() / scalar_size(t));
+            pos_ += static_cast<std::size_t>(fit * scalar_size(t));
+            if (fit < n) fail("the data ends early (a record is cut short)");  // at the first number cut
+            return;
+        }
+        for (std::uint64_t i = 0; i < n; ++i) {
+            skip_space();
+            if (pos_ >= bytes_.size()) fail("the data ends early (fewer numbers than the header declares)");
+            while (pos_ < bytes_.size() && bytes_[pos_] != ' ' && bytes_[pos_] != '\t' && bytes_[pos_] != '\r' && bytes_[pos_] != '\n')
+                ++pos_;
+        }
+    }
+
 private:
     void skip_space() {
         while (pos_ < bytes_.size()) {
@@ -329,22 +346,60 @@ int face_list(const Element& e) {
     return -1;
 }
 
-void read_faces(DataReader& r, const Element& e, PlyData& d, const std::string& name, Format format) {
+// Face i's corner count `n`, read at `at`: 3 to kMaxCorners.
+void check_corners(const DataReader& r, std::uint64_t at, std::uint64_t i, double n, const std::string& name) {
+    if (n < 3 || n > kMaxCorners)
+        throw InputError(name + ": " + r.where_label(at) + ": face " + std::to_string(i) + " has " + shown(n) +
+                         " corners (a face has 3 to " + std::to_string(kMaxCorners) + ")");
+}
+
+struct FaceCounts {
+    std::uint64_t corners = 0, triangles = 0;
+};
+
+// The face element's corners and the triangles they make, counted on a copy of the reader by the
+// list lengths alone (the indices skipped), so both are charged before either is allocated and
+// before the slow pass: 2,000,000 faces of 255 corners (a 2 MB .ply.gz) read 510 M corners into
+// 2 GB for a minute before the 6 GB of triangles were refused.
+FaceCounts count_faces(DataReader r, const Element& e, int list, const std::string& name) {
+    FaceCounts c;
+    for (std::uint64_t i = 0; i < e.count; ++i)
+        for (std::size_t k = 0; k < e.properties.size(); ++k) {
+            const Property& p = e.properties[k];
+            if (!p.list) {
+                r.skip(p.type, 1);
+                continue;
+            }
+            const std::uint64_t at = r.place();
+            const double n = r.read(p.count_type);
+            if (static_cast<int>(k) == list) {
+                check_corners(r, at, i, n, name);
+                c.corners += static_cast<std::uint64_t>(n);
+                c.triangles += static_cast<std::uint64_t>(n) - 2;
+            } else if (n < 0) {
+                r.fail("a negative list length");
+            }
+            r.skip(p.type, static_cast<std::uint64_t>(n));
+        }
+    return c;
+}
+
+void read_faces(DataReader& r, const Element& e, PlyData& d, const std::string& name) {
     const int list = face_list(e);
     if (list < 0)
         throw InputError(name + ": header line " + std::to_string(e.line) +
                          ": the face element needs a list property vertex_indices (or vertex_index)");
     d.has_faces = d.has_faces || e.count > 0;
-    // The corners are reserved once for the most the data after the header can hold (4 bytes each
-    // however small the file's index type: a uchar index is 4x its data), charged first: grown by
-    // doubling, 2 GB of corners needed 3 GB while the vector moved.
-    const Property& lp = e.properties[static_cast<std::size_t>(list)];
-    const std::uint64_t index_bytes = format == Format::Ascii ? 2 : scalar_size(lp.type);
-    const std::uint64_t most = std::min<std::uint64_t>(e.count * kMaxCorners, r.remaining() / index_bytes);
-    charge_load_memory(e.count * (sizeof(std::uint8_t) + sizeof(std::uint64_t)) + most * sizeof(std::uint32_t), name,
-                       "element \"face\" (" + std::to_string(e.count) + " faces, up to " + std::to_string(most) + " corners)");
+    // The corners, their faces and the triangles they will make, charged at their exact sizes and
+    // reserved once: grown by doubling, 2 GB of corners needed 3 GB while the vector moved.
+    const FaceCounts counts = count_faces(r, e, list, name);
+    charge_load_memory(e.count * (sizeof(std::uint8_t) + sizeof(std::uint64_t)) + counts.corners * sizeof(std::uint32_t) +
+                           counts.triangles * sizeof(glm::uvec3),
+                       name, std::to_string(e.count) + " faces as " + std::to_string(counts.triangles) + " triangles (" +
+                                 std::to_string(counts.corners) + " corners)");
     d.face_corners.reserve(e.count);
-    d.corners.reserve(most);
+    d.face_place.reserve(e.count);
+    d.corners.reserve(counts.corners);
     for (std::uint64_t i = 0; i < e.count; ++i) {
         for (std::size_t k = 0; k < e.properties.size(); ++k) {
             const Property& p = e.properties[k];
@@ -359,9 +414,7 @@ void read_faces(DataReader& r, const Element& e, PlyData& d, const std::string& 
                 for (double j = 0; j < n; ++j) r.read(p.type);
                 continue;
             }
-            if (n < 3 || n > kMaxCorners)
-                throw InputError(name + ": " + r.where_label(at) + ": face " + std::to_string(i) + " has " + shown(n) +
-                                 " corners (a face has 3 to " + std::to_string(kMaxCorners) + ")");
+            check_corners(r, at, i, n, name);
             for (int j = 0; j < static_cast<int>(n); ++j) {
                 const std::uint64_t corner_at = r.place();
                 const double v = r.read(p.type);
@@ -411,7 +464,7 @@ Mesh parse_ply(std::string_view bytes, const std::string& name) {
             read_vertices(r, e, d, name);
             have_vertices = true;
         } else if (e.name == "face") {
-            read_faces(r, e, d, name, h.format);
+            read_faces(r, e, d, name);
         } else {
             skip_element(r, e);
         }
@@ -422,13 +475,13 @@ Mesh parse_ply(std::string_view bytes, const std::string& name) {
     const bool normals = !d.normals.empty() && d.normals_usable && d.normals.size() == d.positions.size();
     const bool uvs = d.uvs.size() == d.positions.size() && !d.uvs.empty();
     // A face of n corners is n - 2 triangles: a 255-corner face of uchar indices, 256 bytes of
-    // binary PLY, is 253 triangles, 3 KB. Charged before the triangles are allocated, and
-    // reserved once: growing by doubling would hold up to three times the final size.
+    // binary PLY, is 253 triangles, 3 KB. Charged with the faces (read_faces), and reserved once:
+    // growing by doubling would hold up to three times the final size. The mesh's own vertices
+    // and the remap are charged here, once the vertices are known.
     std::uint64_t triangles = 0;
     for (const std::uint8_t n : d.face_corners) triangles += n - 2u;
-    charge_load_memory(triangles * sizeof(glm::uvec3) +
-                           d.positions.size() * (sizeof(std::uint32_t) + sizeof(glm::vec3) + sizeof(glm::vec3) + sizeof(glm::vec2)),
-                       name, std::to_string(d.face_corners.size()) + " faces as " + std::to_string(triangles) + " triangles");
+    charge_load_memory(d.positions.size() * (sizeof(std::uint32_t) + sizeof(glm::vec3) + sizeof(glm::vec3) + sizeof(glm::vec2)),
+                       name, std::to_string(d.positions.size()) + " vertices of the mesh");
     Mesh mesh;
     mesh.source = name;
     mesh.triangles.indices.reserve(triangles);

@@ -2,7 +2,8 @@
 // image (block z-test) on shipped scenes, and a planted wrong MIS weight does not; light tracing
 // alone (t = 1) matches the closed form of a small Lambertian emitter over a diffuse plane; the
 // MIS weights sum to 1 over the strategies of random paths; the image is the same bit for bit on
-// 1, 2 and 3 threads and split into farm parts; the emission and camera densities are the ones
+// 1, 2 and 3 threads and split into farm parts, also when a pass's splats are added in waves
+// (bdpt and vcm); the emission and camera densities are the ones
 // sampled with.
 #include <catch2/catch.hpp>
 
@@ -154,6 +155,22 @@ TEST_CASE("bdpt: the same image bit for bit on 1, 2 and 3 threads, and split int
     // Not trivially equal: the light subpaths' splats reach the image.
     const RenderResult path = render_as(scene, *accel, IntegratorKind::Path, 3, 9, PlantedDefect::None, 1);
     CHECK_FALSE(same_bits(path.image, one.image));
+}
+
+TEST_CASE("bdpt and vcm: the same bits on 1, 2 and 3 threads and across farm parts when a pass's splats come in two waves",
+          "[bdpt][vcm][determinism]") {
+    // 65 tiles in a row (1040 x 2 pixels): the renderer adds the splats of tiles 0..63, then of
+    // tile 64 (film_splats.hpp); a Gaussian of radius 2 spreads splats across the waves' border.
+    Scene scene = every_light_scene();
+    scene.film.width = 65 * 16;
+    scene.film.height = 2;
+    scene.film.filter.type = FilterSpec::Type::Gaussian;
+    scene.film.filter.radius = 2.0f;
+    const auto accel = make_accel(AccelKind::Bvh, scene);
+    const RenderResult bdpt = check_bit_identical(scene, *accel, IntegratorKind::Bdpt);
+    check_bit_identical(scene, *accel, IntegratorKind::Vcm);
+    const RenderResult path = render_as(scene, *accel, IntegratorKind::Path, 3, 9, PlantedDefect::None, 1);
+    CHECK_FALSE(same_bits(path.image, bdpt.image));
 }
 
 // What sample_emission draws and what emission_density says of the same point and direction

@@ -1,6 +1,7 @@
 // Noise forensics (render/path_forensics.hpp): the image is the same bit for bit with it on, the
 // report is the same at 1 and 3 threads, the credits add up to the samples' second moment and
-// mean exactly as the header states, and the path types are the ones the scene can make.
+// mean exactly as the header states, the path types are the ones the scene can make, and a
+// region keeps at most kRegionTypes keys however many the paths make.
 #include <catch2/catch.hpp>
 
 #include <set>
@@ -35,11 +36,36 @@ Scene lit_room() {
     return s;
 }
 
+// A closed box of white diffuse walls, a rough and a smooth white metal ball and a small lamp,
+// seen from inside: nothing absorbs, so paths run to max_depth mixing D, G and S vertices, and
+// nearly every long path is a path type of its own.
+Scene mixed_box(int max_depth) {
+    Scene s = empty_scene(8, 8);
+    s.film.max_depth = max_depth;
+    s.camera.position = {0.0f, 0.0f, 1.5f};
+    s.camera.look_at = {0.0f, 0.0f, -1.0f};
+    add_object(s, collision::Aabb{{0.0f, 0.0f, 0.0f}, {4.0f, 4.0f, 4.0f}}, add_material(s, diffuse(1.0f)), glm::mat4(1.0f), "walls");
+    Material gloss;
+    gloss.type = Material::Type::Metal;
+    gloss.albedo = glm::vec3(1.0f);
+    gloss.roughness = 0.3f;
+    add_object(s, collision::Sphere{{1.0f, -1.0f, -1.0f}, 0.5f}, add_material(s, gloss), glm::mat4(1.0f), "gloss");
+    Material mirror = gloss;
+    mirror.roughness = 0.0f;
+    add_object(s, collision::Sphere{{-1.0f, -1.0f, -1.0f}, 0.5f}, add_material(s, mirror), glm::mat4(1.0f), "mirror");
+    Material lamp;
+    lamp.type = Material::Type::Emissive;
+    lamp.emission = glm::vec3(1.0f);
+    add_object(s, collision::Sphere{{0.0f, 1.0f, -1.0f}, 0.2f}, add_material(s, lamp), glm::mat4(1.0f), "lamp");
+    return s;
+}
+
 struct Run {
     RenderResult result;
     std::string json;
     PathForensics::Totals totals;
     std::vector<PathForensics::Row> types;
+    std::size_t most_keys = 0;
 };
 
 Run run(const Scene& scene, const Accel& accel, int threads, bool on, int max_depth = 4, int spp = 6) {
@@ -51,13 +77,28 @@ Run run(const Scene& scene, const Accel& accel, int threads, bool on, int max_de
     o.sampler = SamplerKind::Independent;  // the variance image is then the samples' own
     PathForensics f(scene);
     if (on) o.forensics = &f;
-    Run r{render(scene, accel, o), {}, {}, {}};
+    Run r{render(scene, accel, o), {}, {}, {}, 0};
     if (on) {
         r.json = f.json(o.spp);
         r.totals = f.totals();
         r.types = f.rows(true, 100);
+        r.most_keys = f.most_region_keys();
     }
     return r;
+}
+
+// The credits' sums against the result: sum of X = spp * sum of pixel means; sum of X^2 from the
+// unbiased variance of each pixel's mean, var * spp * (spp - 1) + spp * mean^2 (red channel =
+// luminance, the scenes being grey).
+void check_sums(const Run& r, int spp) {
+    double sum_x = 0.0, sum_x2 = 0.0;
+    for (std::size_t i = 0; i < r.result.image.pixels.size(); ++i) {
+        const double m = r.result.image.pixels[i].r, v = r.result.variance.pixels[i].r;
+        sum_x += spp * m;
+        sum_x2 += v * spp * (spp - 1) + spp * m * m;
+    }
+    CHECK(r.totals.first == Approx(sum_x).epsilon(1e-4));
+    CHECK(r.totals.second == Approx(sum_x2).epsilon(1e-4));
 }
 
 }  // namespace
@@ -81,17 +122,8 @@ TEST_CASE("forensics: the credits sum to the samples' second moment and mean, an
     const auto accel = make_accel(AccelKind::Bvh, scene);
     const int spp = 32;
     const Run r = run(scene, *accel, 2, true, 4, spp);
-    // From the result: sum of X = spp * sum of pixel means; sum of X^2 from the unbiased variance
-    // of each pixel's mean, var * spp * (spp - 1) + spp * mean^2 (red channel = luminance).
-    double sum_x = 0.0, sum_x2 = 0.0;
-    for (std::size_t i = 0; i < r.result.image.pixels.size(); ++i) {
-        const double m = r.result.image.pixels[i].r, v = r.result.variance.pixels[i].r;
-        sum_x += spp * m;
-        sum_x2 += v * spp * (spp - 1) + spp * m * m;
-    }
     CHECK(r.totals.samples == r.result.image.pixels.size() * spp);
-    CHECK(r.totals.first == Approx(sum_x).epsilon(1e-4));
-    CHECK(r.totals.second == Approx(sum_x2).epsilon(1e-4));
+    check_sums(r, spp);
     // The variance credits, sum over passes 2..n of X (X - m), have the mean (n - 1) Var X per
     // pixel; the unbiased sample variance s^2 = var * spp estimates Var X from the same samples.
     double expected_variance = 0.0;
@@ -115,4 +147,21 @@ TEST_CASE("forensics: the credits sum to the samples' second moment and mean, an
     REQUIRE(direct.types.size() == 1);
     CHECK(direct.types[0].path == "L E");
     CHECK(direct.types[0].second == Approx(1.0));
+}
+
+TEST_CASE("forensics: a region keeps at most kRegionTypes keys, the rest as \"other types\", and the sums still add up",
+          "[render][forensics]") {
+    const Scene scene = mixed_box(40);
+    const auto accel = make_accel(AccelKind::Bvh, scene);
+    const int spp = 8;
+    const Run r = run(scene, *accel, 2, true, 40, spp);
+    // 64 samples a pass, each with up to 30 new keys: far more than a region keeps.
+    CHECK(r.most_keys <= PathForensics::kRegionTypes + 1);
+    CHECK(r.most_keys > PathForensics::kRegionTypes / 2);
+    bool other = false;
+    for (const PathForensics::Row& row : r.types) other = other || row.path == "other types";
+    CHECK(other);
+    check_sums(r, spp);
+    // The choice of keys is made in one order: the same report at any thread count.
+    CHECK(run(scene, *accel, 1, true, 40, spp).json == r.json);
 }

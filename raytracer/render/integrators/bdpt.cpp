@@ -61,10 +61,7 @@ BdptIntegrator::BdptIntegrator(const Scene& scene, const Accel& accel, const Lig
       defect_(defect),
       roulette_(roulette),
       light_tracing_only_(light_tracing_only),
-      width_(scene.film.width),
-      height_(scene.film.height),
-      filter_radius_(scene.film.filter.radius),
-      filter_integral_(camera.filter().integral()) {
+      filter_radius_(scene.film.filter.radius) {
     for (const Object& o : scene.objects) moving_ = moving_ || (scene.camera.shutter && o.motion.moving());
     for (std::uint32_t l = 0; l < static_cast<std::uint32_t>(lights.light_count()); ++l)
         if (lights.light_is_found_at_infinity(l)) infinite_lights_.push_back(l);
@@ -421,7 +418,7 @@ glm::vec3 BdptIntegrator::connect(Subpaths& sp, const LightVertices& light, std:
     return c * weight(m, s, sp.merge_eta);
 }
 
-// t = 1: light[s-1] joined to a point on the lens, splatted to the pixels it lands on.
+// t = 1: light[s-1] joined to a point on the lens, splatted where it lands on the film.
 void BdptIntegrator::light_to_camera(Subpaths& sp, int s, float time, PixelSampler& sampler, std::uint64_t& rays,
                                      std::vector<Splat>& splats) const {
     const PathVertex& y = sp.light[static_cast<std::size_t>(s - 1)];
@@ -472,24 +469,9 @@ void BdptIntegrator::light_to_camera(Subpaths& sp, int s, float time, PixelSampl
     m.fc(b) = area_density(camera_.direction_pdf(cos_theta), lens, y);
     m.light_to_camera = !sp.light.front().at_infinity;
     const glm::vec3 value = c * weight(m, s, sp.merge_eta);
-    // The pixels whose filter reaches the film point, each by its normalised filter weight.
-    const PixelFilter& filter = camera_.filter();
-    const int x0 = std::max(0, static_cast<int>(std::ceil(fx - filter_radius_ - 0.5f)));
-    const int x1 = std::min(width_ - 1, static_cast<int>(std::floor(fx + filter_radius_ - 0.5f)));
-    const int y0 = std::max(0, static_cast<int>(std::ceil(fy - filter_radius_ - 0.5f)));
-    const int y1 = std::min(height_ - 1, static_cast<int>(std::floor(fy + filter_radius_ - 0.5f)));
-    const double norm = 1.0 / (filter_integral_ * filter_integral_);
-    for (int py = y0; py <= y1; ++py) {
-        const double dy = double(fy) - (py + 0.5);
-        const double wy = std::abs(dy) < filter_radius_ ? filter.eval(dy) : 0.0;  // the support, half-open
-        if (wy == 0.0) continue;
-        for (int px = x0; px <= x1; ++px) {
-            const double dx = double(fx) - (px + 0.5);
-            const double wx = std::abs(dx) < filter_radius_ ? filter.eval(dx) : 0.0;
-            if (wx == 0.0) continue;
-            splats.push_back({static_cast<std::uint32_t>(py * width_ + px), value * static_cast<float>(wx * wy * norm)});
-        }
-    }
+    // One splat at the film point: the renderer spreads it over the pixels its filter reaches
+    // (film_splats.hpp), so a wide filter costs no more memory than a narrow one.
+    splats.push_back({glm::vec2(fx, fy), value});
 }
 
 }  // namespace sweeptrace

@@ -15,7 +15,7 @@
 // and shading normals get pbrt's adjoint correction |wo.ns||wi.ng| / (|wo.ng||wi.ns|).
 // The surface emitters' and camera's densities are render/light_emission.cpp's and
 // CameraModel::direction_pdf; the pixel filter's weights for splats are f(dx) f(dy) / (int f)^2,
-// what a camera sample of that pixel estimates.
+// what a camera sample of that pixel estimates (film_splats.hpp, where the renderer spreads them).
 // Not done here: path guiding, film.clamp_indirect (the path tracer's firefly guard).
 #include <atomic>
 #include <cstdint>
@@ -26,6 +26,7 @@
 
 #include "raytracer/accel/accel.hpp"
 #include "raytracer/render/camera.hpp"
+#include "raytracer/render/film_splats.hpp"
 #include "raytracer/render/integrators/bidir_mis.hpp"
 #include "raytracer/render/integrators/light_vertices.hpp"
 #include "raytracer/render/integrators/path_vertex.hpp"
@@ -37,12 +38,6 @@
 #include "raytracer/scene/scene.hpp"
 
 namespace sweeptrace {
-
-// A light-tracing contribution to a pixel, filter weight included.
-struct Splat {
-    std::uint32_t pixel = 0;
-    glm::vec3 value{0.0f};
-};
 
 class BdptIntegrator {
 public:
@@ -105,9 +100,7 @@ private:
     bool light_tracing_only_;  // Sampling::LightTracing: t = 1 alone, at full weight
     const std::atomic<bool>* cancel_ = nullptr;
     bool moving_ = false;
-    int width_, height_;
     float filter_radius_;
-    double filter_integral_;
     std::vector<std::uint32_t> infinite_lights_;  // found by escaping rays (suns, the environment)
 };
 
