@@ -90,10 +90,13 @@ std::uint64_t nfor_memory_bytes(int width, int height, int feature_channels, int
     // so 4 + 10). The second pass holds at most 4m + 12. 4m + 40 bounds both.
     const std::uint64_t pixels = std::uint64_t(width) * std::uint64_t(height);
     const std::uint64_t channels = 4 * std::uint64_t(feature_channels) + 40;
-    // Per thread: a regression tile's weights (19^2 offsets x 32^2 centres) and an NL-means
-    // tile's double sums (2 x channels x 32^2), with the patch scratch (below 64 KiB).
-    const std::uint64_t tile = std::uint64_t(kTileSize) * kTileSize;
-    const std::uint64_t per_thread = 19 * 19 * tile * sizeof(float) + 2 * std::uint64_t(std::max(feature_channels, 3)) * tile * sizeof(double) + (64u << 10);
+    // Per thread: a regression tile's weights (19^2 offsets x 32^2 centres) and its copy of the
+    // features and colour over the tile grown by 9 ((m + 3) x 50^2), or an NL-means tile's sums
+    // (2 x channels x 32^2), with the patch scratch and a row's normal equations (below 128 KiB).
+    const std::uint64_t tile = std::uint64_t(kTileSize) * kTileSize, grown = std::uint64_t(kTileSize + 18) * (kTileSize + 18);
+    const std::uint64_t channels_max = std::uint64_t(std::max(feature_channels, 3));
+    const std::uint64_t per_thread =
+        (19 * 19 * tile + (channels_max + 3) * grown + 2 * channels_max * tile) * sizeof(float) + (128u << 10);
     return pixels * channels * sizeof(float) + std::uint64_t(std::max(threads, 1)) * per_thread;
 }
 

@@ -24,8 +24,7 @@ struct NlMeansParams {
 
 // Working buffers of patch_distances, reused across offsets by one task.
 struct PatchScratch {
-    std::vector<float> pixel, row;
-    std::vector<double> column, patch_columns;
+    std::vector<float> pixel, row, column, count;
 };
 
 // The patch distance d of every pixel p of `tile` whose neighbour p + (dx, dy) is inside the

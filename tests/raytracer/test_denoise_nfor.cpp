@@ -4,6 +4,7 @@
 // regression's solve survives the singular windows every flat wall gives it.
 #include <catch2/catch.hpp>
 
+#include <cfloat>
 #include <cmath>
 #include <cstring>
 #include <random>
@@ -11,6 +12,7 @@
 #include <tbb/task_arena.h>
 
 #include "denoise_test_images.hpp"
+#include "raytracer/denoise/exp_weight.hpp"
 #include "raytracer/denoise/least_squares.hpp"
 #include "raytracer/denoise/nfor.hpp"
 #include "raytracer/input_error.hpp"
@@ -109,7 +111,7 @@ TEST_CASE("nfor: the window solve gives a constant feature coefficient 0 and sti
             for (int c = 0; c < 3; ++c) b[i * 3 + c] += x[i] * y * (c + 1);
         }
     }
-    denoise::solve_normal_equations(a, b, n, beta);
+    denoise::solve_normal_equations(a, b, n, beta, DBL_EPSILON);
     for (int c = 0; c < 3; ++c) {
         CHECK(beta[0 * 3 + c] == Approx(2.0 * (c + 1)));
         CHECK(beta[2 * 3 + c] == 0.0);
@@ -131,4 +133,19 @@ TEST_CASE("nfor input: a missing channel and a NaN feature are named", "[denoise
     ExrChannels negative = channels;
     negative.channels["AlbedoVariance.G"][0] = -1.0f;
     CHECK_THROWS_WITH(denoise::nfor_input(negative, "in.exr"), Catch::Contains("channel 'AlbedoVariance.G' is negative at pixel (0, 0)"));
+}
+
+TEST_CASE("nfor: the vectorizable exp of the NL-means weights is the library's to a few float ulps", "[denoise]") {
+    double worst = 0.0;
+    for (int i = 0; i < 870000; ++i) {
+        const float d = float(i) * 1e-4f;  // 0 to 87: every reduction interval, 2^0 down to 2^-125
+        const double exact = std::exp(-double(d));
+        worst = std::max(worst, std::abs(double(denoise::exp_weight(d)) / exact - 1.0));
+    }
+    INFO("largest relative error " << worst);
+    CHECK(worst < 5e-7);
+    CHECK(denoise::exp_weight(0.0f) == 1.0f);
+    CHECK(denoise::exp_weight(-3.0f) == 1.0f);  // a distance below 0 is a pixel as alike as itself
+    CHECK(denoise::exp_weight(87.5f) == 0.0f);  // past float's normal range
+    CHECK(denoise::exp_weight(1e4f) == 0.0f);   // the capped distance
 }
