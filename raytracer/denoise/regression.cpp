@@ -1,6 +1,6 @@
-// Collaborative regression (regression.hpp), tile by tile. The NL-means weights of every centre
-// of the tile against each of its window's offsets are computed offset by offset (as nl_means
-// does). Then, one row of centres at a time, the normal equations of all the row's windows are
+// Collaborative regression (regression.hpp), tile by tile. The NL-means distances of every
+// centre of the tile to each of its window's offsets are computed offset by offset (as nl_means
+// does), once for all bandwidths. Then, per bandwidth, one row of centres at a time, the normal equations of all the row's windows are
 // summed together, offset by offset, each sum a float lane per centre: the loops run along the row
 // and vectorize, and every lane does the same operations in the same order whatever the vector
 // width. A window row's 2R + 1 products are summed in float and the rows' sums in double, so an
@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <array>
 #include <cfloat>
+#include <limits>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -147,38 +148,39 @@ constexpr auto kFits = fit_table(std::make_integer_sequence<int, kMaxRegressionT
 
 }  // namespace
 
-Planes collaborative_regression(const Planes& image, const Planes& guide, const Planes& guide_variance, const Planes& features,
-                                const RegressionParams& params) {
+std::vector<Planes> collaborative_regression(const Planes& image, const Planes& guide, const Planes& guide_variance, const Planes& features,
+                                             const RegressionParams& params, const std::vector<float>& bandwidths) {
     const int w = image.width, h = image.height, r = params.search_radius, side = 2 * r + 1;
     const int terms = 3 + features.channels;  // 1, dx, dy, the features
     if (terms > kMaxRegressionTerms)
         throw std::logic_error("collaborative_regression: " + std::to_string(features.channels) + " features, at most " +
                                std::to_string(kMaxRegressionTerms - 3));
-    const NlMeansParams weight_params{params.patch_radius, r, params.k, params.variance_scale};
+    // The distances at k = 1; at bandwidth k they are these over k^2 (nl_means.hpp).
+    const NlMeansParams distance_params{params.patch_radius, r, 1.0f, params.variance_scale};
     const std::vector<Rect> tiles = image_tiles(w, h);
-    std::vector<TileResult> results(tiles.size());
+    std::vector<std::vector<TileResult>> results(bandwidths.size(), std::vector<TileResult>(tiles.size()));
     for_each_tile(tiles, [&](std::size_t index, const Rect& tile) {
         const std::size_t n = std::size_t(tile.width()) * std::size_t(tile.height());
         TileWork work;
         work.tile = tile;
         work.r = r;
         work.stride = kLanes + 2 * r;
-        // weight[offset][row][lane]: the largest channel distance decides (a window pixel must
-        // resemble the centre in every channel); 0 where the window pixel is outside the image.
-        const std::size_t offset_stride = std::size_t(kTileSize) * kLanes;
-        work.weight.assign(std::size_t(side) * std::size_t(side) * offset_stride, 0.0f);
-        std::vector<float> dist;
+        // distance[offset][row][lane]: the largest channel distance decides (a window pixel must
+        // resemble the centre in every channel); infinite where the window pixel is outside the
+        // image (weight 0).
+        const std::size_t offset_stride = std::size_t(kTileSize) * kLanes, weights_size = std::size_t(side) * std::size_t(side) * offset_stride;
+        std::vector<float> distance(weights_size, std::numeric_limits<float>::infinity()), dist;
         PatchScratch scratch;
         for (int dy = -r, o = 0; dy <= r; ++dy)
             for (int dx = -r; dx <= r; ++dx, ++o) {
-                const Rect out = patch_distances(guide, guide_variance, weight_params, tile, dx, dy, scratch, dist);
+                const Rect out = patch_distances(guide, guide_variance, distance_params, tile, dx, dy, scratch, dist);
                 for (int y = out.y0; y < out.y1; ++y) {
                     const std::size_t from = std::size_t(y - tile.y0) * std::size_t(tile.width()) + std::size_t(out.x0 - tile.x0);
-                    float* to = work.weight.data() + std::size_t(o) * offset_stride + std::size_t(y - tile.y0) * kLanes + std::size_t(out.x0 - tile.x0);
+                    float* to = distance.data() + std::size_t(o) * offset_stride + std::size_t(y - tile.y0) * kLanes + std::size_t(out.x0 - tile.x0);
                     for (int i = 0; i < out.width(); ++i) {
                         float d = dist[from + std::size_t(i)];
                         for (int c = 1; c < guide.channels; ++c) d = std::max(d, dist[std::size_t(c) * n + from + std::size_t(i)]);
-                        to[i] = exp_weight(d);
+                        to[i] = d;
                     }
                 }
             }
@@ -192,31 +194,40 @@ Planes collaborative_regression(const Planes& image, const Planes& guide, const 
                 for (int x = std::max(tile.x0 - r, 0); x < std::min(tile.x0 + kLanes + r, w); ++x) dst[x - tile.x0 + r] = src[std::size_t(y) * std::size_t(w) + std::size_t(x)];
             }
         }
-        work.beta.assign(std::size_t(3 * terms) * kLanes, 0.0f);
-        TileResult& res = results[index];
-        res.area = {std::max(tile.x0 - r, 0), std::max(tile.y0 - r, 0), std::min(tile.x1 + r, w), std::min(tile.y1 + r, h)};
-        const std::size_t area_w = std::size_t(res.area.width());
-        res.sum.assign(3 * area_w * std::size_t(res.area.height()), 0.0f);
-        res.weights.assign(area_w * std::size_t(res.area.height()), 0.0f);
-        const FitRowFn fit = kFits[std::size_t(terms - 3)];
-        for (int cy = tile.y0; cy < tile.y1; ++cy) fit(work, cy, res);
+        work.weight.resize(weights_size);
+        for (std::size_t b = 0; b < bandwidths.size(); ++b) {
+            const float scale = 1.0f / (bandwidths[b] * bandwidths[b]);
+            for (std::size_t i = 0; i < weights_size; ++i) work.weight[i] = exp_weight(distance[i] * scale);
+            work.beta.assign(std::size_t(3 * terms) * kLanes, 0.0f);
+            TileResult& res = results[b][index];
+            res.area = {std::max(tile.x0 - r, 0), std::max(tile.y0 - r, 0), std::min(tile.x1 + r, w), std::min(tile.y1 + r, h)};
+            const std::size_t area_w = std::size_t(res.area.width());
+            res.sum.assign(3 * area_w * std::size_t(res.area.height()), 0.0f);
+            res.weights.assign(area_w * std::size_t(res.area.height()), 0.0f);
+            const FitRowFn fit = kFits[std::size_t(terms - 3)];
+            for (int cy = tile.y0; cy < tile.y1; ++cy) fit(work, cy, res);
+        }
     });
-    Planes sum(w, h, 3);
-    std::vector<float> weights(std::size_t(w) * std::size_t(h), 0.0f);
-    for (const TileResult& res : results) {
-        const std::size_t area_w = std::size_t(res.area.width()), area_n = res.weights.size();
-        for (int y = res.area.y0; y < res.area.y1; ++y)
-            for (int x = res.area.x0; x < res.area.x1; ++x) {
-                const std::size_t q = std::size_t(y - res.area.y0) * area_w + std::size_t(x - res.area.x0);
-                const std::size_t p = std::size_t(y) * std::size_t(w) + std::size_t(x);
-                for (int c = 0; c < 3; ++c) sum.channel(c)[p] += res.sum[std::size_t(c) * area_n + q];
-                weights[p] += res.weights[q];
-            }
+    std::vector<Planes> out;
+    for (const std::vector<TileResult>& tile_results : results) {
+        Planes sum(w, h, 3);
+        std::vector<float> weights(std::size_t(w) * std::size_t(h), 0.0f);
+        for (const TileResult& res : tile_results) {
+            const std::size_t area_w = std::size_t(res.area.width()), area_n = res.weights.size();
+            for (int y = res.area.y0; y < res.area.y1; ++y)
+                for (int x = res.area.x0; x < res.area.x1; ++x) {
+                    const std::size_t q = std::size_t(y - res.area.y0) * area_w + std::size_t(x - res.area.x0);
+                    const std::size_t p = std::size_t(y) * std::size_t(w) + std::size_t(x);
+                    for (int c = 0; c < 3; ++c) sum.channel(c)[p] += res.sum[std::size_t(c) * area_n + q];
+                    weights[p] += res.weights[q];
+                }
+        }
+        // Every pixel is its own window's centre with weight 1 (distance <= 0 to itself).
+        for (int c = 0; c < 3; ++c)
+            for (std::size_t p = 0; p < weights.size(); ++p) sum.channel(c)[p] /= weights[p];
+        out.push_back(std::move(sum));
     }
-    // Every pixel is its own window's centre with weight 1 (distance <= 0 to itself).
-    for (int c = 0; c < 3; ++c)
-        for (std::size_t p = 0; p < weights.size(); ++p) sum.channel(c)[p] /= weights[p];
-    return sum;
+    return out;
 }
 
 }  // namespace sweeptrace::denoise
