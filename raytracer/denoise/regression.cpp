@@ -177,11 +177,9 @@ std::vector<Planes> collaborative_regression(const Planes& image, const Planes& 
                 for (int y = out.y0; y < out.y1; ++y) {
                     const std::size_t from = std::size_t(y - tile.y0) * std::size_t(tile.width()) + std::size_t(out.x0 - tile.x0);
                     float* to = distance.data() + std::size_t(o) * offset_stride + std::size_t(y - tile.y0) * kLanes + std::size_t(out.x0 - tile.x0);
-                    for (int i = 0; i < out.width(); ++i) {
-                        float d = dist[from + std::size_t(i)];
-                        for (int c = 1; c < guide.channels; ++c) d = std::max(d, dist[std::size_t(c) * n + from + std::size_t(i)]);
-                        to[i] = d;
-                    }
+                    for (int i = 0; i < out.width(); ++i) to[i] = dist[from + std::size_t(i)];
+                    for (int c = 1; c < guide.channels; ++c)
+                        for (int i = 0; i < out.width(); ++i) to[i] = std::max(to[i], dist[std::size_t(c) * n + from + std::size_t(i)]);
                 }
             }
         // The features, then the colour, over the tile grown by R (zero outside the image).
