@@ -16,11 +16,14 @@ namespace sweeptrace::denoise {
 // library's expf gives (to within its subnormal range, where no weight matters).
 inline constexpr float kExpWeightUnderflow = -87.0f;
 
-inline float exp_weight(float distance) {
+[[gnu::always_inline]] inline float exp_weight(float distance) {
     const float x = std::max(-std::max(distance, 0.0f), kExpWeightUnderflow);
-    // n = round(x / ln 2), by truncation of x / ln 2 - 1/2 (x <= 0, so truncation is ceiling)
-    const int n = int(x * 1.44269504f - 0.5f);
-    const float nf = float(n);
+    // n = round(x / ln 2): adding 1.5 x 2^23 (the floats there are 1 apart) rounds to an integer,
+    // subtracting it again is exact. (Rounding by int(), or float(int), left GCC a branch that
+    // kept the AVX2 loops scalar.)
+    constexpr float kRound = 12582912.0f;  // 1.5 x 2^23
+    const float nf = (x * 1.44269504f + kRound) - kRound;
+    const int n = int(nf);
     // r = x - n ln 2 with ln 2 split in a part exact in float times n and the rest
     const float r = (x - nf * 0.693145752f) - nf * 1.42860677e-6f;
     float p = 1.0f / 720.0f;

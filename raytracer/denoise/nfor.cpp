@@ -32,20 +32,20 @@ std::pair<Planes, Planes> mean_and_variance(const Planes& a, const Planes& b) {
 
 }  // namespace
 
-Planes nfor(const NforInput& in) {
+Planes nfor(const NforInput& in, FilterIsa isa) {
     const Buffers& color = in.color;
     const Buffers& features = in.features;
 
     // 1. Feature prefiltering: each half guided by the other.
     const NlMeansParams prefilter{3, 5, 0.5f, 2.0f};
-    Planes features_even = nl_means(features.even, features.odd, features.variance, prefilter);
-    Planes features_odd = nl_means(features.odd, features.even, features.variance, prefilter);
+    Planes features_even = nl_means(features.even, features.odd, features.variance, prefilter, isa);
+    Planes features_odd = nl_means(features.odd, features.even, features.variance, prefilter, isa);
 
     // 2. Each half's colour regressed on the other half's features, weighted on the other half's
     // colour, per candidate bandwidth; 3. its error estimated from the halves.
     const RegressionParams regression{3, 9, 2.0f};
-    std::vector<Planes> candidate_even = collaborative_regression(color.even, color.odd, color.variance, features_odd, regression, kCandidateK);
-    std::vector<Planes> candidate_odd = collaborative_regression(color.odd, color.even, color.variance, features_even, regression, kCandidateK);
+    std::vector<Planes> candidate_even = collaborative_regression(color.even, color.odd, color.variance, features_odd, regression, kCandidateK, isa);
+    std::vector<Planes> candidate_odd = collaborative_regression(color.odd, color.even, color.variance, features_even, regression, kCandidateK, isa);
     Planes error[2];
     for (int k = 0; k < 2; ++k) {
         // The even half's filtered value against the odd half's noisy one: the squared difference
@@ -58,12 +58,12 @@ Planes nfor(const NforInput& in) {
             const float spread = candidate_odd[k].data[i] - candidate_even[k].data[i];
             noisy_error.data[i] = 0.5f * ((de * de - v2) + (dodd * dodd - v2)) - 0.25f * spread * spread;
         }
-        error[k] = nl_means(noisy_error, color.mean, color.variance, {1, 9, 1.0f, 1.0f});
+        error[k] = nl_means(noisy_error, color.mean, color.variance, {1, 9, 1.0f, 1.0f}, isa);
     }
     // Selection: 1 where the wider candidate's error is smaller, smoothed like the error maps.
     Planes select(color.mean.width, color.mean.height, 3);
     for (std::size_t i = 0; i < select.data.size(); ++i) select.data[i] = error[0].data[i] < error[1].data[i] ? 0.0f : 1.0f;
-    select = nl_means(select, color.mean, color.variance, {1, 9, 1.0f, 1.0f});
+    select = nl_means(select, color.mean, color.variance, {1, 9, 1.0f, 1.0f}, isa);
     Planes result_even(color.mean.width, color.mean.height, 3), result_odd = result_even;
     for (std::size_t i = 0; i < select.data.size(); ++i) {
         const float s = select.data[i];
@@ -78,10 +78,10 @@ Planes nfor(const NforInput& in) {
     // filtered), with the halves' spread as the variance of both.
     auto [feature_mean, feature_variance] = mean_and_variance(features_even, features_odd);
     features_even = features_odd = Planes();
-    const Planes final_features = nl_means(feature_mean, feature_mean, feature_variance, {3, 2, 0.5f, 1.0f});
+    const Planes final_features = nl_means(feature_mean, feature_mean, feature_variance, {3, 2, 0.5f, 1.0f}, isa);
     feature_mean = feature_variance = Planes();
     const auto [color_mean, color_variance] = mean_and_variance(result_even, result_odd);
-    return std::move(collaborative_regression(color_mean, color_mean, color_variance, final_features, {3, 9, 2.0f}, {1.0f})[0]);
+    return std::move(collaborative_regression(color_mean, color_mean, color_variance, final_features, {3, 9, 2.0f}, {1.0f}, isa)[0]);
 }
 
 std::uint64_t nfor_memory_bytes(int width, int height, int feature_channels, int threads) {

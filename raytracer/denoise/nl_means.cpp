@@ -20,7 +20,7 @@ namespace {
 // 204), and is far below float overflow when 49 capped pixels are summed.
 constexpr float kDistanceCap = 1e4f;
 
-float pixel_distance(float up, float uq, float vp, float vq, float k2) {
+[[gnu::always_inline]] inline float pixel_distance(float up, float uq, float vp, float vq, float k2) {
     const float diff = up - uq;
     const float num = diff * diff - (vp + std::min(vp, vq));
     const float den = k2 * (vp + vq);
@@ -30,14 +30,14 @@ float pixel_distance(float up, float uq, float vp, float vq, float k2) {
     return den > 0.0f ? std::min(q, kDistanceCap) : num > 0.0f ? kDistanceCap : 0.0f;
 }
 
-Rect intersect(const Rect& a, const Rect& b) {
+[[gnu::always_inline]] inline Rect intersect(const Rect& a, const Rect& b) {
     return {std::max(a.x0, b.x0), std::max(a.y0, b.y0), std::min(a.x1, b.x1), std::min(a.y1, b.y1)};
 }
 
-}  // namespace
-
-Rect patch_distances(const Planes& guide, const Planes& variance, const NlMeansParams& params, const Rect& tile, int dx, int dy,
-                     PatchScratch& scratch, std::vector<float>& dist) {
+// The loops, inlined into one function per instruction set (filter_isa.hpp) at the end of this
+// namespace.
+[[gnu::always_inline]] inline Rect distances(const Planes& guide, const Planes& variance, const NlMeansParams& params, const Rect& tile,
+                                             int dx, int dy, PatchScratch& scratch, std::vector<float>& dist) {
     const int w = guide.width, h = guide.height, f = params.patch_radius;
     const std::size_t tile_pixels = std::size_t(tile.width()) * std::size_t(tile.height());
     dist.resize(std::size_t(guide.channels) * tile_pixels);
@@ -89,41 +89,73 @@ Rect patch_distances(const Planes& guide, const Planes& variance, const NlMeansP
     return out;
 }
 
-Planes nl_means(const Planes& image, const Planes& guide, const Planes& variance, const NlMeansParams& params) {
-    const int w = image.width, h = image.height, channels = image.channels, r = params.search_radius;
-    Planes result(w, h, channels);
-    const std::vector<Rect> tiles = image_tiles(w, h);
-    for_each_tile(tiles, [&](std::size_t, const Rect& tile) {
-        const std::size_t n = std::size_t(tile.width()) * std::size_t(tile.height()), tw = std::size_t(tile.width());
-        std::vector<float> sum(std::size_t(channels) * n, 0.0f), weight_sum(std::size_t(channels) * n, 0.0f);
-        std::vector<float> dist;
-        PatchScratch scratch;
-        for (int dy = -r; dy <= r; ++dy)
-            for (int dx = -r; dx <= r; ++dx) {
-                const Rect out = patch_distances(guide, variance, params, tile, dx, dy, scratch, dist);
-                for (int c = 0; c < channels; ++c) {
-                    const float* src = image.channel(c);
-                    for (int y = out.y0; y < out.y1; ++y) {
-                        const std::size_t row = std::size_t(c) * n + std::size_t(y - tile.y0) * tw + std::size_t(out.x0 - tile.x0);
-                        const float* q = src + std::size_t(y + dy) * std::size_t(w) + std::size_t(out.x0 + dx);
-                        float *s = sum.data() + row, *ws = weight_sum.data() + row;
-                        const float* d = dist.data() + row;
-                        for (int i = 0; i < out.width(); ++i) {
-                            const float weight = exp_weight(d[i]);
-                            s[i] += weight * q[i];
-                            ws[i] += weight;
-                        }
+// One tile of nl_means: `result`'s pixels of `tile`.
+[[gnu::always_inline]] inline void filter_tile(const Planes& image, const Planes& guide, const Planes& variance, const NlMeansParams& params,
+                                               const Rect& tile, Planes& result) {
+    const int w = image.width, channels = image.channels, r = params.search_radius;
+    const std::size_t n = std::size_t(tile.width()) * std::size_t(tile.height()), tw = std::size_t(tile.width());
+    std::vector<float> sum(std::size_t(channels) * n, 0.0f), weight_sum(std::size_t(channels) * n, 0.0f);
+    std::vector<float> dist;
+    PatchScratch scratch;
+    for (int dy = -r; dy <= r; ++dy)
+        for (int dx = -r; dx <= r; ++dx) {
+            const Rect out = distances(guide, variance, params, tile, dx, dy, scratch, dist);
+            for (int c = 0; c < channels; ++c) {
+                const float* src = image.channel(c);
+                for (int y = out.y0; y < out.y1; ++y) {
+                    const std::size_t row = std::size_t(c) * n + std::size_t(y - tile.y0) * tw + std::size_t(out.x0 - tile.x0);
+                    const float* q = src + std::size_t(y + dy) * std::size_t(w) + std::size_t(out.x0 + dx);
+                    float *s = sum.data() + row, *ws = weight_sum.data() + row;
+                    const float* d = dist.data() + row;
+                    for (int i = 0; i < out.width(); ++i) {
+                        const float weight = exp_weight(d[i]);
+                        s[i] += weight * q[i];
+                        ws[i] += weight;
                     }
                 }
             }
-        // The pixel itself has distance <= 0 (weight 1), so every sum of weights is at least 1.
-        for (int c = 0; c < channels; ++c)
-            for (int y = tile.y0; y < tile.y1; ++y)
-                for (int x = tile.x0; x < tile.x1; ++x) {
-                    const std::size_t i = std::size_t(c) * n + std::size_t(y - tile.y0) * tw + std::size_t(x - tile.x0);
-                    result.at(c, x, y) = sum[i] / weight_sum[i];
-                }
-    });
+        }
+    // The pixel itself has distance <= 0 (weight 1), so every sum of weights is at least 1.
+    for (int c = 0; c < channels; ++c)
+        for (int y = tile.y0; y < tile.y1; ++y)
+            for (int x = tile.x0; x < tile.x1; ++x) {
+                const std::size_t i = std::size_t(c) * n + std::size_t(y - tile.y0) * tw + std::size_t(x - tile.x0);
+                result.at(c, x, y) = sum[i] / weight_sum[i];
+            }
+}
+
+Rect distances_baseline(const Planes& guide, const Planes& variance, const NlMeansParams& params, const Rect& tile, int dx, int dy,
+                        PatchScratch& scratch, std::vector<float>& dist) {
+    return distances(guide, variance, params, tile, dx, dy, scratch, dist);
+}
+
+[[gnu::target("avx2")]] Rect distances_avx2(const Planes& guide, const Planes& variance, const NlMeansParams& params, const Rect& tile,
+                                            int dx, int dy, PatchScratch& scratch, std::vector<float>& dist) {
+    return distances(guide, variance, params, tile, dx, dy, scratch, dist);
+}
+
+void filter_tile_baseline(const Planes& image, const Planes& guide, const Planes& variance, const NlMeansParams& params, const Rect& tile,
+                          Planes& result) {
+    filter_tile(image, guide, variance, params, tile, result);
+}
+
+[[gnu::target("avx2")]] void filter_tile_avx2(const Planes& image, const Planes& guide, const Planes& variance, const NlMeansParams& params,
+                                              const Rect& tile, Planes& result) {
+    filter_tile(image, guide, variance, params, tile, result);
+}
+
+}  // namespace
+
+Rect patch_distances(const Planes& guide, const Planes& variance, const NlMeansParams& params, const Rect& tile, int dx, int dy,
+                     PatchScratch& scratch, std::vector<float>& dist, FilterIsa isa) {
+    return (isa == FilterIsa::Avx2 ? distances_avx2 : distances_baseline)(guide, variance, params, tile, dx, dy, scratch, dist);
+}
+
+Planes nl_means(const Planes& image, const Planes& guide, const Planes& variance, const NlMeansParams& params, FilterIsa isa) {
+    Planes result(image.width, image.height, image.channels);
+    const auto filter = isa == FilterIsa::Avx2 ? filter_tile_avx2 : filter_tile_baseline;
+    for_each_tile(image_tiles(image.width, image.height),
+                  [&](std::size_t, const Rect& tile) { filter(image, guide, variance, params, tile, result); });
     return result;
 }
 

@@ -9,6 +9,7 @@
 // weighted by its own distance (nl_means), or all by the largest (regression.hpp).
 #include <vector>
 
+#include "raytracer/denoise/filter_isa.hpp"
 #include "raytracer/denoise/planes.hpp"
 
 namespace sweeptrace::denoise {
@@ -32,11 +33,11 @@ struct PatchScratch {
 // + (x - tile.x0)] (dist is resized to channels * tile pixels). Returns the part of `tile` that
 // was written (pixels whose neighbour is outside are left as they were).
 Rect patch_distances(const Planes& guide, const Planes& variance, const NlMeansParams& params, const Rect& tile, int dx, int dy,
-                     PatchScratch& scratch, std::vector<float>& dist);
+                     PatchScratch& scratch, std::vector<float>& dist, FilterIsa isa);
 
 // `image` filtered by NL-means weights computed on `guide` (same size and channels; `variance`
 // is the guide's variance of the mean): each channel averaged with its own weights. Parallel
 // over tiles, each pixel's sum taken in one fixed order: bit-identical at any thread count.
-Planes nl_means(const Planes& image, const Planes& guide, const Planes& variance, const NlMeansParams& params);
+Planes nl_means(const Planes& image, const Planes& guide, const Planes& variance, const NlMeansParams& params, FilterIsa isa);
 
 }  // namespace sweeptrace::denoise

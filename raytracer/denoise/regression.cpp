@@ -53,7 +53,7 @@ struct TileWork {
 // The terms of one window pixel for every centre of a row: x[t][lane], t = 1, dx, dy, then the
 // features relative to the centre's.
 template <int Terms>
-void fill_terms(const TileWork& work, int cy, int dx, int dy, float (&x)[Terms][kLanes]) {
+[[gnu::always_inline]] inline void fill_terms(const TileWork& work, int cy, int dx, int dy, float (&x)[Terms][kLanes]) {
     const int r = work.r;
     for (int i = 0; i < kLanes; ++i) {
         x[0][i] = 1.0f;
@@ -69,7 +69,7 @@ void fill_terms(const TileWork& work, int cy, int dx, int dy, float (&x)[Terms][
 
 // Fits the windows of the tile's row of centres cy and adds their predictions to `res`.
 template <int Terms>
-void fit_row(TileWork& work, int cy, TileResult& res) {
+[[gnu::always_inline]] inline void fit_row(TileWork& work, int cy, TileResult& res) {
     constexpr int kPairs = Terms * (Terms + 1) / 2, kEntries = kPairs + 3 * Terms;
     const int r = work.r, side = 2 * r + 1, width = work.tile.width();
     const int features = Terms - 3;
@@ -136,20 +136,44 @@ void fit_row(TileWork& work, int cy, TileResult& res) {
     }
 }
 
+// The loops, inlined into one function per instruction set (filter_isa.hpp).
+template <int Terms>
+void fit_row_baseline(TileWork& work, int cy, TileResult& res) {
+    fit_row<Terms>(work, cy, res);
+}
+
+template <int Terms>
+[[gnu::target("avx2")]] void fit_row_avx2(TileWork& work, int cy, TileResult& res) {
+    fit_row<Terms>(work, cy, res);
+}
+
 using FitRowFn = void (*)(TileWork&, int, TileResult&);
 
 template <int... T>
-constexpr std::array<FitRowFn, sizeof...(T)> fit_table(std::integer_sequence<int, T...>) {
-    return {&fit_row<T + 3>...};
+constexpr std::array<FitRowFn, sizeof...(T)> fit_table(std::integer_sequence<int, T...>, FilterIsa isa) {
+    if (isa == FilterIsa::Avx2) return {&fit_row_avx2<T + 3>...};
+    return {&fit_row_baseline<T + 3>...};
 }
 
 // fit_row for every number of terms from 3 (the offset terms alone) up, at index terms - 3.
-constexpr auto kFits = fit_table(std::make_integer_sequence<int, kMaxRegressionTerms - 2>());
+constexpr auto kFitsBaseline = fit_table(std::make_integer_sequence<int, kMaxRegressionTerms - 2>(), FilterIsa::Baseline);
+constexpr auto kFitsAvx2 = fit_table(std::make_integer_sequence<int, kMaxRegressionTerms - 2>(), FilterIsa::Avx2);
+
+// The weights exp(-d / k^2) of a tile's distances.
+[[gnu::always_inline]] inline void weights_of(const std::vector<float>& distance, float scale, std::vector<float>& weight) {
+    for (std::size_t i = 0; i < weight.size(); ++i) weight[i] = exp_weight(distance[i] * scale);
+}
+
+void weights_baseline(const std::vector<float>& distance, float scale, std::vector<float>& weight) { weights_of(distance, scale, weight); }
+
+[[gnu::target("avx2")]] void weights_avx2(const std::vector<float>& distance, float scale, std::vector<float>& weight) {
+    weights_of(distance, scale, weight);
+}
 
 }  // namespace
 
 std::vector<Planes> collaborative_regression(const Planes& image, const Planes& guide, const Planes& guide_variance, const Planes& features,
-                                             const RegressionParams& params, const std::vector<float>& bandwidths) {
+                                             const RegressionParams& params, const std::vector<float>& bandwidths, FilterIsa isa) {
     const int w = image.width, h = image.height, r = params.search_radius, side = 2 * r + 1;
     const int terms = 3 + features.channels;  // 1, dx, dy, the features
     if (terms > kMaxRegressionTerms)
@@ -173,7 +197,7 @@ std::vector<Planes> collaborative_regression(const Planes& image, const Planes& 
         PatchScratch scratch;
         for (int dy = -r, o = 0; dy <= r; ++dy)
             for (int dx = -r; dx <= r; ++dx, ++o) {
-                const Rect out = patch_distances(guide, guide_variance, distance_params, tile, dx, dy, scratch, dist);
+                const Rect out = patch_distances(guide, guide_variance, distance_params, tile, dx, dy, scratch, dist, isa);
                 for (int y = out.y0; y < out.y1; ++y) {
                     const std::size_t from = std::size_t(y - tile.y0) * std::size_t(tile.width()) + std::size_t(out.x0 - tile.x0);
                     float* to = distance.data() + std::size_t(o) * offset_stride + std::size_t(y - tile.y0) * kLanes + std::size_t(out.x0 - tile.x0);
@@ -195,14 +219,14 @@ std::vector<Planes> collaborative_regression(const Planes& image, const Planes& 
         work.weight.resize(weights_size);
         for (std::size_t b = 0; b < bandwidths.size(); ++b) {
             const float scale = 1.0f / (bandwidths[b] * bandwidths[b]);
-            for (std::size_t i = 0; i < weights_size; ++i) work.weight[i] = exp_weight(distance[i] * scale);
+            (isa == FilterIsa::Avx2 ? weights_avx2 : weights_baseline)(distance, scale, work.weight);
             work.beta.assign(std::size_t(3 * terms) * kLanes, 0.0f);
             TileResult& res = results[b][index];
             res.area = {std::max(tile.x0 - r, 0), std::max(tile.y0 - r, 0), std::min(tile.x1 + r, w), std::min(tile.y1 + r, h)};
             const std::size_t area_w = std::size_t(res.area.width());
             res.sum.assign(3 * area_w * std::size_t(res.area.height()), 0.0f);
             res.weights.assign(area_w * std::size_t(res.area.height()), 0.0f);
-            const FitRowFn fit = kFits[std::size_t(terms - 3)];
+            const FitRowFn fit = (isa == FilterIsa::Avx2 ? kFitsAvx2 : kFitsBaseline)[std::size_t(terms - 3)];
             for (int cy = tile.y0; cy < tile.y1; ++cy) fit(work, cy, res);
         }
     });

@@ -27,6 +27,6 @@ struct RegressionParams {
 // are computed once for all. Parallel over tiles of window centres; each tile's predictions are
 // summed into the result in tile order: bit-identical at any thread count.
 std::vector<Planes> collaborative_regression(const Planes& image, const Planes& guide, const Planes& guide_variance, const Planes& features,
-                                             const RegressionParams& params, const std::vector<float>& bandwidths);
+                                             const RegressionParams& params, const std::vector<float>& bandwidths, FilterIsa isa);
 
 }  // namespace sweeptrace::denoise

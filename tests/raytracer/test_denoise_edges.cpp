@@ -118,7 +118,7 @@ TEST_CASE("nfor keeps a texture edge, a thin bright line and a mirror reflection
     const ExrChannels channels = read_exr_channels(dir / "raw.exr");
     const denoise::NforInput input = denoise::nfor_input(channels, "raw.exr");
     const Image raw = colour_of(input.color.mean), ref = read_image(dir / "ref.exr");
-    const Image nfor = colour_of(denoise::nfor(input));
+    const Image nfor = colour_of(denoise::nfor(input, denoise::FilterIsa::Baseline));
 
     // The edges: pixels where the reference changes by more than a quarter of its brightest value
     // to a neighbour (checker edges, the line, the sphere's outline and the checker in it),

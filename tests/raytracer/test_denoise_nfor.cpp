@@ -12,6 +12,7 @@
 #include <tbb/task_arena.h>
 
 #include "denoise_test_images.hpp"
+#include "raytracer/accel/simd_path.hpp"
 #include "raytracer/denoise/exp_weight.hpp"
 #include "raytracer/denoise/least_squares.hpp"
 #include "raytracer/denoise/nfor.hpp"
@@ -28,10 +29,10 @@ double rmse(const denoise::Planes& a, const denoise::Planes& b) {
     return std::sqrt(s / double(a.data.size()));
 }
 
-denoise::Planes run_nfor(const denoise::NforInput& in, int threads) {
+denoise::Planes run_nfor(const denoise::NforInput& in, int threads, denoise::FilterIsa isa = denoise::FilterIsa::Baseline) {
     tbb::task_arena arena(threads);
     denoise::Planes out;
-    arena.execute([&] { out = denoise::nfor(in); });
+    arena.execute([&] { out = denoise::nfor(in, isa); });
     return out;
 }
 
@@ -96,6 +97,18 @@ TEST_CASE("nfor: 1 and 2 threads give the same bits", "[denoise]") {
     const denoise::Planes one = run_nfor(s.input, 1), two = run_nfor(s.input, 2);
     REQUIRE(one.data.size() == two.data.size());
     CHECK(std::memcmp(one.data.data(), two.data.data(), one.data.size() * sizeof(float)) == 0);
+}
+
+TEST_CASE("nfor: the AVX2 loops give the baseline's bits", "[denoise]") {
+    if (!cpu_has_avx2()) {
+        WARN("this CPU has no AVX2: only the baseline loops run here");
+        return;
+    }
+    const SyntheticImage s = textured_image(70, 40, 5, 0.2f);  // 3x2 tiles, one partial
+    const denoise::Planes baseline = run_nfor(s.input, 2, denoise::FilterIsa::Baseline);
+    const denoise::Planes avx2 = run_nfor(s.input, 2, denoise::FilterIsa::Avx2);
+    REQUIRE(baseline.data.size() == avx2.data.size());
+    CHECK(std::memcmp(baseline.data.data(), avx2.data.data(), baseline.data.size() * sizeof(float)) == 0);
 }
 
 TEST_CASE("nfor: the window solve gives a constant feature coefficient 0 and still fits the rest", "[denoise]") {
