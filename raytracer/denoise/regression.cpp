@@ -79,6 +79,9 @@ template <int Terms>
     alignas(32) float window_row[kEntries][kLanes];
     alignas(32) double total[kEntries][kLanes] = {};
     alignas(32) float x[Terms][kLanes], wx[Terms][kLanes];
+    // Term 2 (dy) is constant along a window row, so its entries are taken from the row's sums of
+    // term 0 (1) once per row: sum w x_j dy = dy sum w x_j. Products with term 0 are additions.
+    auto pair = [](int j, int k) { return j * (j + 1) / 2 + k; };  // j >= k
     for (int dy = -r; dy <= r; ++dy) {
         for (auto& e : window_row) std::fill(e, e + kLanes, 0.0f);
         for (int dx = -r; dx <= r; ++dx) {
@@ -86,24 +89,36 @@ template <int Terms>
             fill_terms<Terms>(work, cy, dx, dy, x);
             for (int t = 0; t < Terms; ++t)
                 for (int i = 0; i < kLanes; ++i) wx[t][i] = w[i] * x[t][i];
-            for (int j = 0, p = 0; j < Terms; ++j)
-                for (int k = 0; k <= j; ++k, ++p)
-                    for (int i = 0; i < kLanes; ++i) window_row[p][i] += wx[j][i] * x[k][i];
+            for (int j = 0; j < Terms; ++j) {
+                if (j == 2) continue;
+                for (int i = 0; i < kLanes; ++i) window_row[pair(j, 0)][i] += wx[j][i];
+                for (int k = 1; k <= j; ++k)
+                    if (k != 2)
+                        for (int i = 0; i < kLanes; ++i) window_row[pair(j, k)][i] += wx[j][i] * x[k][i];
+            }
             for (int c = 0; c < 3; ++c) {
                 const float* colour = work.local_row(features + c, cy + dy) + r + dx;
                 for (int j = 0; j < Terms; ++j)
-                    for (int i = 0; i < kLanes; ++i) window_row[kPairs + 3 * j + c][i] += wx[j][i] * colour[i];
+                    if (j != 2)
+                        for (int i = 0; i < kLanes; ++i) window_row[kPairs + 3 * j + c][i] += wx[j][i] * colour[i];
             }
         }
+        const double ddy = dy;
         for (int e = 0; e < kEntries; ++e)
             for (int i = 0; i < kLanes; ++i) total[e][i] += double(window_row[e][i]);
+        for (int j = 0; j < Terms; ++j)
+            if (j != 2)
+                for (int i = 0; i < kLanes; ++i) total[j > 2 ? pair(j, 2) : pair(2, j)][i] += ddy * double(window_row[pair(j, 0)][i]);
+        for (int i = 0; i < kLanes; ++i) total[pair(2, 2)][i] += ddy * ddy * double(window_row[pair(0, 0)][i]);
+        for (int c = 0; c < 3; ++c)
+            for (int i = 0; i < kLanes; ++i) total[kPairs + 3 * 2 + c][i] += ddy * double(window_row[kPairs + c][i]);
     }
     // Each centre's solve.
     const double precision = (2 * r + 3) * double(FLT_EPSILON);
     for (int i = 0; i < width; ++i) {
         double a[Terms * Terms], b[Terms * 3], beta[Terms * 3];
         for (int j = 0; j < Terms; ++j)
-            for (int k = 0; k <= j; ++k) a[j * Terms + k] = a[k * Terms + j] = total[j * (j + 1) / 2 + k][i];
+            for (int k = 0; k <= j; ++k) a[j * Terms + k] = a[k * Terms + j] = total[pair(j, k)][i];
         for (int e = 0; e < 3 * Terms; ++e) b[e] = total[kPairs + e][i];
         solve_normal_equations(a, b, Terms, beta, precision);
         for (int e = 0; e < 3 * Terms; ++e) work.beta[std::size_t(e) * kLanes + std::size_t(i)] = float(beta[e]);
