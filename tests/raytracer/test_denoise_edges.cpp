@@ -12,9 +12,9 @@
 // leaves 0.55 of the raw flat error; k = 1 blurs the emitter line's ends (0.255), and the
 // selection takes k = 1 there (0.90 to 0.99): its error estimate, the filtered half against the
 // other half, is biased low for k = 1 (half the true MSE, green, over the image) and high for
-// k = 0.5 (5.8 times). Likely why: the filtered half is fitted on the other half's features,
-// which carry the same coverage noise as the other half's colour, so it is not independent of
-// the half it is judged against. docs/denoising.md has the figures and what was tried.
+// k = 0.5 (5.8 times): the estimate takes the even and odd halves as independent, and under the
+// Sobol sampler they are stratified against each other (with --sampler independent the ordering
+// of the two estimates comes right). docs/denoising.md has the figures and what was tried.
 #include <catch2/catch.hpp>
 
 #include <algorithm>
