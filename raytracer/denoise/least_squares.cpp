@@ -1,13 +1,12 @@
 // Pivoted Cholesky on the scaled normal equations (least_squares.hpp).
 #include "raytracer/denoise/least_squares.hpp"
 
-#include <cfloat>
 #include <cmath>
 #include <utility>
 
 namespace sweeptrace::denoise {
 
-void solve_normal_equations(double* a, double* b, int n, double* beta) {
+void solve_normal_equations(double* a, double* b, int n, double* beta, double precision) {
     double scale[kMaxRegressionTerms];
     int perm[kMaxRegressionTerms];
     for (int i = 0; i < n; ++i) {
@@ -18,7 +17,7 @@ void solve_normal_equations(double* a, double* b, int n, double* beta) {
         for (int j = 0; j < n; ++j) a[i * n + j] *= scale[i] * scale[j];
         for (int c = 0; c < 3; ++c) b[i * 3 + c] *= scale[i];
     }
-    const double tolerance = n * DBL_EPSILON;  // relative to the unit diagonal
+    const double tolerance = n * precision;  // relative to the unit diagonal
     int rank = 0;
     for (int k = 0; k < n; ++k) {
         int best = k;

@@ -16,7 +16,7 @@
 namespace sweeptrace::denoise {
 namespace {
 
-constexpr float kCandidateK[2] = {0.5f, 1.0f};
+const std::vector<float> kCandidateK{0.5f, 1.0f};
 
 // The mean of two buffers and, as its variance of the mean, a quarter of their squared
 // difference: the two-sample estimate for two independent estimates of the same value.
@@ -32,22 +32,22 @@ std::pair<Planes, Planes> mean_and_variance(const Planes& a, const Planes& b) {
 
 }  // namespace
 
-Planes nfor(const NforInput& in) {
+Planes nfor(const NforInput& in, FilterIsa isa) {
     const Buffers& color = in.color;
     const Buffers& features = in.features;
 
     // 1. Feature prefiltering: each half guided by the other.
     const NlMeansParams prefilter{3, 5, 0.5f, 2.0f};
-    Planes features_even = nl_means(features.even, features.odd, features.variance, prefilter);
-    Planes features_odd = nl_means(features.odd, features.even, features.variance, prefilter);
+    Planes features_even = nl_means(features.even, features.odd, features.variance, prefilter, isa);
+    Planes features_odd = nl_means(features.odd, features.even, features.variance, prefilter, isa);
 
     // 2. Each half's colour regressed on the other half's features, weighted on the other half's
     // colour, per candidate bandwidth; 3. its error estimated from the halves.
-    Planes candidate_even[2], candidate_odd[2], error[2];
+    const RegressionParams regression{3, 9, 2.0f};
+    std::vector<Planes> candidate_even = collaborative_regression(color.even, color.odd, color.variance, features_odd, regression, kCandidateK, isa);
+    std::vector<Planes> candidate_odd = collaborative_regression(color.odd, color.even, color.variance, features_even, regression, kCandidateK, isa);
+    Planes error[2];
     for (int k = 0; k < 2; ++k) {
-        const RegressionParams regression{3, 9, kCandidateK[k], 2.0f};
-        candidate_even[k] = collaborative_regression(color.even, color.odd, color.variance, features_odd, regression);
-        candidate_odd[k] = collaborative_regression(color.odd, color.even, color.variance, features_even, regression);
         // The even half's filtered value against the odd half's noisy one: the squared difference
         // overestimates the error by the odd half's variance (twice the full mean's), and the
         // same the other way; the two filtered halves' own spread is taken out too.
@@ -58,42 +58,48 @@ Planes nfor(const NforInput& in) {
             const float spread = candidate_odd[k].data[i] - candidate_even[k].data[i];
             noisy_error.data[i] = 0.5f * ((de * de - v2) + (dodd * dodd - v2)) - 0.25f * spread * spread;
         }
-        error[k] = nl_means(noisy_error, color.mean, color.variance, {1, 9, 1.0f, 1.0f});
+        error[k] = nl_means(noisy_error, color.mean, color.variance, {1, 9, 1.0f, 1.0f}, isa);
     }
     // Selection: 1 where the wider candidate's error is smaller, smoothed like the error maps.
     Planes select(color.mean.width, color.mean.height, 3);
     for (std::size_t i = 0; i < select.data.size(); ++i) select.data[i] = error[0].data[i] < error[1].data[i] ? 0.0f : 1.0f;
-    select = nl_means(select, color.mean, color.variance, {1, 9, 1.0f, 1.0f});
+    select = nl_means(select, color.mean, color.variance, {1, 9, 1.0f, 1.0f}, isa);
     Planes result_even(color.mean.width, color.mean.height, 3), result_odd = result_even;
     for (std::size_t i = 0; i < select.data.size(); ++i) {
         const float s = select.data[i];
         result_even.data[i] = candidate_even[0].data[i] + s * (candidate_even[1].data[i] - candidate_even[0].data[i]);
         result_odd.data[i] = candidate_odd[0].data[i] + s * (candidate_odd[1].data[i] - candidate_odd[0].data[i]);
     }
-    for (int k = 0; k < 2; ++k) candidate_even[k] = candidate_odd[k] = error[k] = Planes();
+    candidate_even.clear();
+    candidate_odd.clear();
+    error[0] = error[1] = Planes();
 
     // 4. Second pass: the halves' mean, regressed on the halves' mean features (lightly
     // filtered), with the halves' spread as the variance of both.
     auto [feature_mean, feature_variance] = mean_and_variance(features_even, features_odd);
     features_even = features_odd = Planes();
-    const Planes final_features = nl_means(feature_mean, feature_mean, feature_variance, {3, 2, 0.5f, 1.0f});
+    const Planes final_features = nl_means(feature_mean, feature_mean, feature_variance, {3, 2, 0.5f, 1.0f}, isa);
     feature_mean = feature_variance = Planes();
     const auto [color_mean, color_variance] = mean_and_variance(result_even, result_odd);
-    return collaborative_regression(color_mean, color_mean, color_variance, final_features, {3, 9, 1.0f, 2.0f});
+    return std::move(collaborative_regression(color_mean, color_mean, color_variance, final_features, {3, 9, 2.0f}, {1.0f}, isa)[0]);
 }
 
 std::uint64_t nfor_memory_bytes(int width, int height, int feature_channels, int threads) {
-    // Whole-image float channels alive at once, at the heaviest step (the second candidate's
-    // regression): the prefiltered features of both halves (2m), four candidates (12), two error
-    // maps and one being made (9), and the regression's own result, weights and its tiles'
-    // accumulation buffers (4 channels over tiles grown by R = 9 on each side: (50/32)^2 < 2.5,
-    // so 4 + 10). The second pass holds at most 4m + 12. 4m + 40 bounds both.
+    // Whole-image float channels alive at once, at the heaviest step (the odd half's candidate
+    // regressions): the prefiltered features of both halves (2m), the even half's two candidates
+    // (6), and the regression's two results and its tiles' accumulation buffers (per bandwidth
+    // 4 channels over tiles grown by R = 9 on each side: (50/32)^2 < 2.5, so 2 x (3 + 10)); the
+    // error maps then hold 12 + 6 + 6, the second pass at most 4m + 12. 4m + 40 bounds them all.
     const std::uint64_t pixels = std::uint64_t(width) * std::uint64_t(height);
     const std::uint64_t channels = 4 * std::uint64_t(feature_channels) + 40;
-    // Per thread: a regression tile's weights (19^2 offsets x 32^2 centres) and an NL-means
-    // tile's double sums (2 x channels x 32^2), with the patch scratch (below 64 KiB).
-    const std::uint64_t tile = std::uint64_t(kTileSize) * kTileSize;
-    const std::uint64_t per_thread = 19 * 19 * tile * sizeof(float) + 2 * std::uint64_t(std::max(feature_channels, 3)) * tile * sizeof(double) + (64u << 10);
+    // Per thread: a regression tile's distances and weights (2 x 19^2 offsets x 32^2 centres) and
+    // its copy of the features and colour over the tile grown by 9 ((m + 3) x 50^2), or an
+    // NL-means tile's sums (2 x channels x 32^2), with the patch scratch and a row's normal
+    // equations (below 128 KiB).
+    const std::uint64_t tile = std::uint64_t(kTileSize) * kTileSize, grown = std::uint64_t(kTileSize + 18) * (kTileSize + 18);
+    const std::uint64_t channels_max = std::uint64_t(std::max(feature_channels, 3));
+    const std::uint64_t per_thread =
+        (2 * 19 * 19 * tile + (channels_max + 3) * grown + 2 * channels_max * tile) * sizeof(float) + (128u << 10);
     return pixels * channels * sizeof(float) + std::uint64_t(std::max(threads, 1)) * per_thread;
 }
 

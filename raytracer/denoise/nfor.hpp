@@ -14,6 +14,7 @@
 //      features, with the halves' difference as its variance.
 #include <cstdint>
 
+#include "raytracer/denoise/filter_isa.hpp"
 #include "raytracer/denoise/planes.hpp"
 
 namespace sweeptrace::denoise {
@@ -29,9 +30,9 @@ struct NforInput {
     Buffers features;
 };
 
-// The denoised colour (3 channels, the input's size). Parallel over tiles in the caller's
-// tbb::task_arena; bit-identical at any thread count.
-Planes nfor(const NforInput& input);
+// The denoised colour (3 channels, the input's size), its loops run with `isa`. Parallel over
+// tiles in the caller's tbb::task_arena; bit-identical at any thread count and either ISA.
+Planes nfor(const NforInput& input, FilterIsa isa);
 
 // An upper bound of what nfor allocates beyond its input for a width x height image with
 // `feature_channels` features and `threads` worker threads, in bytes: for refusing an image

@@ -9,6 +9,7 @@
 // weighted by its own distance (nl_means), or all by the largest (regression.hpp).
 #include <vector>
 
+#include "raytracer/denoise/filter_isa.hpp"
 #include "raytracer/denoise/planes.hpp"
 
 namespace sweeptrace::denoise {
@@ -24,8 +25,7 @@ struct NlMeansParams {
 
 // Working buffers of patch_distances, reused across offsets by one task.
 struct PatchScratch {
-    std::vector<float> pixel, row;
-    std::vector<double> column, patch_columns;
+    std::vector<float> pixel, row, column, count;
 };
 
 // The patch distance d of every pixel p of `tile` whose neighbour p + (dx, dy) is inside the
@@ -33,11 +33,11 @@ struct PatchScratch {
 // + (x - tile.x0)] (dist is resized to channels * tile pixels). Returns the part of `tile` that
 // was written (pixels whose neighbour is outside are left as they were).
 Rect patch_distances(const Planes& guide, const Planes& variance, const NlMeansParams& params, const Rect& tile, int dx, int dy,
-                     PatchScratch& scratch, std::vector<float>& dist);
+                     PatchScratch& scratch, std::vector<float>& dist, FilterIsa isa);
 
 // `image` filtered by NL-means weights computed on `guide` (same size and channels; `variance`
 // is the guide's variance of the mean): each channel averaged with its own weights. Parallel
 // over tiles, each pixel's sum taken in one fixed order: bit-identical at any thread count.
-Planes nl_means(const Planes& image, const Planes& guide, const Planes& variance, const NlMeansParams& params);
+Planes nl_means(const Planes& image, const Planes& guide, const Planes& variance, const NlMeansParams& params, FilterIsa isa);
 
 }  // namespace sweeptrace::denoise

@@ -4,6 +4,7 @@
 // regression's solve survives the singular windows every flat wall gives it.
 #include <catch2/catch.hpp>
 
+#include <cfloat>
 #include <cmath>
 #include <cstring>
 #include <random>
@@ -11,6 +12,8 @@
 #include <tbb/task_arena.h>
 
 #include "denoise_test_images.hpp"
+#include "raytracer/accel/simd_path.hpp"
+#include "raytracer/denoise/exp_weight.hpp"
 #include "raytracer/denoise/least_squares.hpp"
 #include "raytracer/denoise/nfor.hpp"
 #include "raytracer/input_error.hpp"
@@ -26,10 +29,10 @@ double rmse(const denoise::Planes& a, const denoise::Planes& b) {
     return std::sqrt(s / double(a.data.size()));
 }
 
-denoise::Planes run_nfor(const denoise::NforInput& in, int threads) {
+denoise::Planes run_nfor(const denoise::NforInput& in, int threads, denoise::FilterIsa isa = denoise::FilterIsa::Baseline) {
     tbb::task_arena arena(threads);
     denoise::Planes out;
-    arena.execute([&] { out = denoise::nfor(in); });
+    arena.execute([&] { out = denoise::nfor(in, isa); });
     return out;
 }
 
@@ -96,6 +99,18 @@ TEST_CASE("nfor: 1 and 2 threads give the same bits", "[denoise]") {
     CHECK(std::memcmp(one.data.data(), two.data.data(), one.data.size() * sizeof(float)) == 0);
 }
 
+TEST_CASE("nfor: the AVX2 loops give the baseline's bits", "[denoise]") {
+    if (!cpu_has_avx2()) {
+        WARN("this CPU has no AVX2: only the baseline loops run here");
+        return;
+    }
+    const SyntheticImage s = textured_image(70, 40, 5, 0.2f);  // 3x2 tiles, one partial
+    const denoise::Planes baseline = run_nfor(s.input, 2, denoise::FilterIsa::Baseline);
+    const denoise::Planes avx2 = run_nfor(s.input, 2, denoise::FilterIsa::Avx2);
+    REQUIRE(baseline.data.size() == avx2.data.size());
+    CHECK(std::memcmp(baseline.data.data(), avx2.data.data(), baseline.data.size() * sizeof(float)) == 0);
+}
+
 TEST_CASE("nfor: the window solve gives a constant feature coefficient 0 and still fits the rest", "[denoise]") {
     // colour = 2 + 3 t over t = 0..4, with a second column constant 0 (a flat wall's normal,
     // relative to the centre) and a third equal to the first (two features that say the same).
@@ -109,7 +124,7 @@ TEST_CASE("nfor: the window solve gives a constant feature coefficient 0 and sti
             for (int c = 0; c < 3; ++c) b[i * 3 + c] += x[i] * y * (c + 1);
         }
     }
-    denoise::solve_normal_equations(a, b, n, beta);
+    denoise::solve_normal_equations(a, b, n, beta, DBL_EPSILON);
     for (int c = 0; c < 3; ++c) {
         CHECK(beta[0 * 3 + c] == Approx(2.0 * (c + 1)));
         CHECK(beta[2 * 3 + c] == 0.0);
@@ -131,4 +146,19 @@ TEST_CASE("nfor input: a missing channel and a NaN feature are named", "[denoise
     ExrChannels negative = channels;
     negative.channels["AlbedoVariance.G"][0] = -1.0f;
     CHECK_THROWS_WITH(denoise::nfor_input(negative, "in.exr"), Catch::Contains("channel 'AlbedoVariance.G' is negative at pixel (0, 0)"));
+}
+
+TEST_CASE("nfor: the vectorizable exp of the NL-means weights is the library's to a few float ulps", "[denoise]") {
+    double worst = 0.0;
+    for (int i = 0; i < 870000; ++i) {
+        const float d = float(i) * 1e-4f;  // 0 to 87: every reduction interval, 2^0 down to 2^-125
+        const double exact = std::exp(-double(d));
+        worst = std::max(worst, std::abs(double(denoise::exp_weight(d)) / exact - 1.0));
+    }
+    INFO("largest relative error " << worst);
+    CHECK(worst < 5e-7);
+    CHECK(denoise::exp_weight(0.0f) == 1.0f);
+    CHECK(denoise::exp_weight(-3.0f) == 1.0f);  // a distance below 0 is a pixel as alike as itself
+    CHECK(denoise::exp_weight(87.5f) == 0.0f);  // past float's normal range
+    CHECK(denoise::exp_weight(1e4f) == 0.0f);   // the capped distance
 }
