@@ -15,9 +15,14 @@ import sys
 import tempfile
 
 
-def cpu_seconds(cmd):
+def cpu_seconds(cmd, check=True):
+    """CPU seconds of the child; None when check is False and it refused its input (exit 2)."""
     before = resource.getrusage(resource.RUSAGE_CHILDREN)
-    subprocess.run(cmd, check=True, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    r = subprocess.run(cmd, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    if r.returncode == 2 and not check:
+        return None
+    if r.returncode != 0:
+        raise subprocess.CalledProcessError(r.returncode, cmd)
     after = resource.getrusage(resource.RUSAGE_CHILDREN)
     return (after.ru_utime - before.ru_utime) + (after.ru_stime - before.ru_stime)
 
@@ -40,8 +45,16 @@ def main():
             for name, exe in (("before", a.before), ("after", a.after)):
                 cmd = [exe, "render", scene, "--integrator", "path", "--threads", "1", "--spp", str(a.spp),
                        "--width", w, "--height", h, "--quiet", "-o", out]
-                t = cpu_seconds(cmd)
+                # A scene newer than the before build (a feature it lacks) is refused by it: said so.
+                t = cpu_seconds(cmd, check=name == "after")
+                if t is None:
+                    break
                 best[name] = min(best.get(name, t), t)
+            if "before" not in best:
+                break
+        if "before" not in best:
+            print("| %s | refused (exit 2) | | |" % os.path.basename(scene))
+            continue
         print("| %s | %.3f | %.3f | %.3f |" % (os.path.basename(scene), best["before"], best["after"],
                                                 best["after"] / best["before"]))
         sys.stdout.flush()
