@@ -7,7 +7,7 @@
 // Every large allocation of a load (mesh vertices and triangles, image pixels, environment map
 // tables, the pbrt importer's parsed parameters) is charged here first, with the file and what it
 // reads; the charge that would pass the limit throws InputError naming them, before allocating.
-// The limit is --max-memory when given, else the memory available (load_budget.cpp says how
+// The limit is --max-memory when given, else the memory available (available_memory() below says how
 // that is found). A leaf: the image readers (image/) and the scene loaders (scene/) both charge it.
 //
 // The budget lives while a LoadBudgetScope does (the outermost one of a load, the others join
