@@ -608,12 +608,20 @@ RenderResult render_with_planted_defect(const Scene& scene, const Accel& accel, 
     if (options.guiding && options.integrator != IntegratorKind::Path)
         throw std::invalid_argument("render: path guiding is the path integrator's");
     if (!(options.time_budget >= 0.0)) throw std::invalid_argument("render: time_budget must be >= 0 seconds");
-    // bdpt and vcm do not yet carry media on their subpaths: refused here, for every caller (the
-    // render command, bench, reference-check), rather than rendered silently wrong.
-    if (options.integrator != IntegratorKind::Path && uses_media(scene))
-        throw InputError(scene.source.filename().string() + ": " + integrator_name(options.integrator) +
-                         " does not render participating media yet (the scene has a medium or an interface surface); "
-                         "render it with --integrator path");
+    // bdpt and vcm carry media on their subpaths, but not a medium's own emission (no light
+    // subpath starts in it) and at most 2^15 media (light_vertices.hpp): refused here, for every
+    // caller (the render command, bench, reference-check), rather than rendered silently wrong.
+    if (options.integrator != IntegratorKind::Path) {
+        for (std::size_t i = 0; i < scene.media.size(); ++i)
+            if (scene.media[i].emission != glm::vec3(0.0f) && scene.media[i].sigma_a != glm::vec3(0.0f))
+                throw InputError(scene.source.filename().string() + ": " + integrator_name(options.integrator) +
+                                 " does not render a medium's emission (medium '" + scene.media[i].name +
+                                 "' emits); render it with --integrator path");
+        if (scene.media.size() > 32767)
+            throw InputError(scene.source.filename().string() + ": " + integrator_name(options.integrator) +
+                             " renders at most 32767 media (the scene has " + std::to_string(scene.media.size()) +
+                             "); render it with --integrator path");
+    }
     if (options.adaptive && (options.integrator != IntegratorKind::Path || options.guiding || options.forensics != nullptr))
         throw std::invalid_argument("render: adaptive sampling is the path integrator's, without guiding or forensics");
 

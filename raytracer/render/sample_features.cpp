@@ -47,7 +47,9 @@ SampleFeatures features_at(const MaterialParameters& m, const SurfaceHit& hit, c
 
 SampleFeatures features_of_subpath(const Scene& scene, const std::vector<PathVertex>& cam, const CameraModel& camera) {
     FeatureRecord record(camera);
-    for (std::size_t j = 1; j < cam.size(); ++j) record.at_vertex(cam[j].mat(scene), cam[j].hit, cam[j].wo);
+    // Surfaces only, as the path tracer records them: a medium vertex has no material.
+    for (std::size_t j = 1; j < cam.size(); ++j)
+        if (!cam[j].in_medium()) record.at_vertex(cam[j].mat(scene), cam[j].hit, cam[j].wo);
     return record.features();
 }
 

@@ -8,7 +8,8 @@
 //   - single scattering of a point light in a homogeneous medium at a pixel agrees with a
 //     numerical quadrature of the same integral;
 //   - a grid of constant density renders the same as the homogeneous medium (z-test).
-// Besides: bit-identical at 1 and 3 threads, the BVH and Embree agree, bdpt and vcm refuse.
+// Besides: bit-identical at 1 and 3 threads, the BVH and Embree agree (bdpt and vcm with media:
+// test_render_media_bidir.cpp).
 #include <catch2/catch.hpp>
 
 #include <cmath>
@@ -19,24 +20,20 @@
 
 #include "bsdf_chi_square.hpp"
 #include "convergence_harness.hpp"
-#include "raytracer/input_error.hpp"
 #include "raytracer/render/media/henyey_greenstein.hpp"
 #include "raytracer/render/media/tracking.hpp"
+#include "media_test_scenes.hpp"
 #include "render_test_stats.hpp"
 
 using namespace sweeptrace;
 using sweeptrace::test::Estimate;
 using sweeptrace::test::z_bound;
+using sweeptrace::testing::blocks_apart;
+using sweeptrace::testing::constant_grid;
+using sweeptrace::testing::homogeneous_medium;
+using sweeptrace::testing::medium_ball_scene;
 
 namespace {
-
-Medium homogeneous_medium(const glm::vec3& sigma_a, const glm::vec3& sigma_s, float g = 0.0f) {
-    Medium m;
-    m.sigma_a = sigma_a;
-    m.sigma_s = sigma_s;
-    m.g = g;
-    return m;
-}
 
 // The z of an estimate against the truth, per channel.
 void check_channels(const Estimate (&e)[3], const glm::dvec3& truth, int tests) {
@@ -298,69 +295,6 @@ TEST_CASE("media: single scattering of a point light agrees with a numerical qua
     }
 }
 
-namespace {
-
-// A sphere of radius 1 bounding `m` (an interface surface: no scattering there), a diffuse floor
-// and a quad light above, seen from outside in vacuum.
-Scene medium_ball_scene(const Medium& m) {
-    Scene scene = empty_scene(24, 24);
-    scene.camera.position = glm::vec3(0.0f, 0.5f, 4.0f);
-    scene.camera.look_at = glm::vec3(0.0f, 0.0f, 0.0f);
-    scene.camera.vfov_degrees = 45.0f;
-    scene.media.push_back(m);
-    Material boundary;
-    boundary.type = Material::Type::Interface;
-    add_object(scene, collision::Sphere{glm::vec3(0.0f), 1.0f}, sweeptrace::test::add_material(scene, boundary),
-               glm::mat4(1.0f), "ball");
-    scene.objects.back().media.inside = 0;
-    Material floor = sweeptrace::testing::diffuse(0.6f);
-    add_object(scene, collision::Quad{glm::vec3(-4.0f, -1.0f, 4.0f), glm::vec3(8.0f, 0.0f, 0.0f), glm::vec3(0.0f, 0.0f, -8.0f)},
-               sweeptrace::test::add_material(scene, floor), glm::mat4(1.0f), "floor");
-    Material lamp;
-    lamp.type = Material::Type::Emissive;
-    lamp.albedo = glm::vec3(0.0f);
-    lamp.emission = glm::vec3(6.0f, 5.0f, 4.0f);
-    add_object(scene, collision::Quad{glm::vec3(-0.5f, 2.5f, -0.5f), glm::vec3(1.0f, 0.0f, 0.0f), glm::vec3(0.0f, 0.0f, 1.0f)},
-               sweeptrace::test::add_material(scene, lamp), glm::mat4(1.0f), "lamp");
-    return scene;
-}
-
-// Blocks of 4 x 4 pixels of two independent renders: how many differ beyond their joint noise.
-int blocks_apart(const RenderResult& a, const RenderResult& b) {
-    const int blocks = (a.image.width / 4) * (a.image.height / 4) * 3;
-    int apart = 0;
-    for (int by = 0; by + 4 <= a.image.height; by += 4)
-        for (int bx = 0; bx + 4 <= a.image.width; bx += 4)
-            for (int c = 0; c < 3; ++c) {
-                double ma = 0.0, mb = 0.0, va = 0.0, vb = 0.0;
-                for (int y = by; y < by + 4; ++y)
-                    for (int x = bx; x < bx + 4; ++x) {
-                        ma += a.image.at(x, y)[c] / 16.0;
-                        mb += b.image.at(x, y)[c] / 16.0;
-                        va += a.variance.at(x, y)[c] / 256.0;
-                        vb += b.variance.at(x, y)[c] / 256.0;
-                    }
-                apart += std::abs(ma - mb) > z_bound(blocks) * std::sqrt(va + vb) + 1e-5 * (ma + mb);
-            }
-    return apart;
-}
-
-Medium constant_grid(const Medium& h, float density) {
-    Medium m = h;
-    m.kind = Medium::Kind::Grid;
-    m.nx = m.ny = m.nz = 4;
-    m.density.assign(64, density);
-    // The box reaches half a voxel (0.5) past the ball, so the density is constant in it
-    // (it fades to 0 only in the outer half voxel of the grid, as pbrt-v4's lookup does).
-    m.p0 = glm::vec3(-2.0f);
-    m.p1 = glm::vec3(2.0f);
-    m.sigma_a = h.sigma_a / density;
-    m.sigma_s = h.sigma_s / density;
-    return m;
-}
-
-}  // namespace
-
 TEST_CASE("media: a grid of constant density renders as the homogeneous medium", "[media]") {
     const Medium h = homogeneous_medium({0.1f, 0.2f, 0.4f}, {1.2f, 0.9f, 0.6f}, 0.3f);
     const RenderResult a = sweeptrace::testing::render_with(medium_ball_scene(h), AccelKind::Bvh, 96, 8, 3);
@@ -381,18 +315,4 @@ TEST_CASE("media: the BVH and Embree agree on a medium scene, and any thread cou
     const auto accel = make_accel(AccelKind::Bvh, scene);
     const auto runs = sweeptrace::testing::render_on_1_and_3_threads(scene, *accel);
     CHECK(sweeptrace::testing::same_bits(runs.one.image, runs.three.image));
-}
-
-TEST_CASE("media: bdpt and vcm refuse a scene with media instead of rendering it wrong", "[media]") {
-    const Scene scene = medium_ball_scene(homogeneous_medium(glm::vec3(0.1f), glm::vec3(1.0f)));
-    const auto accel = make_accel(AccelKind::Bvh, scene);
-    for (const IntegratorKind k : {IntegratorKind::Bdpt, IntegratorKind::Vcm}) {
-        RenderOptions o;
-        o.spp = 1;
-        o.integrator = k;
-        CHECK_THROWS_WITH(render(scene, *accel, o), Catch::Contains("does not render participating media yet"));
-    }
-    RenderOptions o;
-    o.spp = 1;
-    CHECK_NOTHROW(render(scene, *accel, o));
 }

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include <glm/geometric.hpp>
 
@@ -9,6 +10,7 @@
 #include "raytracer/render/integrators/bidir_mis.hpp"
 #include "raytracer/render/integrators/mis_window.hpp"
 #include "raytracer/render/integrators/path.hpp"
+#include "raytracer/render/media/henyey_greenstein.hpp"
 #include "raytracer/render/sampling.hpp"
 #include "raytracer/render/texture.hpp"
 
@@ -24,6 +26,28 @@ namespace {
 int camera_slot(int j, int slot) { return sample_dim::bounce(2 * j - 1, slot); }
 int light_slot(int b, int slot) { return sample_dim::bounce(2 * b, slot); }
 constexpr int kLensSlot = 9;  // 2D, past the path tracer's guiding slot (8)
+// The subpaths' own random streams for free flights and transmittance (PixelSampler::stream;
+// the path tracer's is 1), apart from each other so neither replays the other's distances.
+constexpr std::uint64_t kCameraMediumStream = 2, kLightMediumStream = 3;
+
+// A vertex as one end of a ray: a medium point has no surface to step off (its error is 0), so
+// its stand-in normal is the direction to the other end, which keeps spawn_ray_to's margins
+// those of a head-on target.
+SurfaceHit ray_end(const SurfaceHit& hit, bool in_medium, const glm::vec3& toward) {
+    if (!in_medium) return hit;
+    SurfaceHit p;
+    p.point = hit.point;
+    p.normal = p.shading_normal = toward;
+    p.object = LightSet::kNoObject;
+    return p;
+}
+
+// The phase function as a medium vertex's "BSDF": no cosine, and symmetric, so its density of
+// the reverse direction is the same value.
+BsdfEvalBoth eval_phase(float g, const glm::vec3& wo, const glm::vec3& wi) {
+    const float p = hg_phase(glm::dot(-wo, wi), g);
+    return {glm::vec3(p), p, p};
+}
 
 // pbrt's adjoint correction for shading normals, on a light subpath: light arrives along wo and
 // leaves along wi, the BSDF's f |wi.ns| then times |wo.ns| |wi.ng| / (|wo.ng| |wi.ns|).
@@ -45,6 +69,7 @@ void set_material(const Scene& scene, PathVertex& v) {
 
 struct BdptIntegrator::Subpaths {
     std::vector<PathVertex> cam, light;
+    Rng cam_rng, light_rng;  // with media: each subpath's stream for flights and its connections' transmittance
     LightVertices stored;  // bdpt's own sample: the light subpath's vertices that connect
     MisPath mis;
     float merge_eta = 0.0f;  // the merging density the weights count (vcm's, per iteration), 0 for bdpt
@@ -61,7 +86,8 @@ BdptIntegrator::BdptIntegrator(const Scene& scene, const Accel& accel, const Lig
       defect_(defect),
       roulette_(roulette),
       light_tracing_only_(light_tracing_only),
-      filter_radius_(scene.film.filter.radius) {
+      filter_radius_(scene.film.filter.radius),
+      media_(scene) {
     for (const Object& o : scene.objects) moving_ = moving_ || (scene.camera.shutter && o.motion.moving());
     for (std::uint32_t l = 0; l < static_cast<std::uint32_t>(lights.light_count()); ++l)
         if (lights.light_is_found_at_infinity(l)) infinite_lights_.push_back(l);
@@ -69,6 +95,24 @@ BdptIntegrator::BdptIntegrator(const Scene& scene, const Accel& accel, const Lig
 
 bool BdptIntegrator::blocked(const collision::Ray& ray, float time) const {
     return moving_ ? accel_.occluded(ray, time) : accel_.occluded(ray);
+}
+
+BsdfEvalBoth BdptIntegrator::eval_at(const PathVertex& v, const glm::vec3& wi) const {
+    if (v.in_medium()) return eval_phase(media_.model(v.medium).g(), v.wo, wi);
+    return eval_bsdf_both(v.mat(scene_), v.hit, v.wo, wi);
+}
+
+std::int32_t BdptIntegrator::medium_leaving(const PathVertex& v, const glm::vec3& dir) const {
+    if (v.on_surface() && v.hit.object < scene_.objects.size())
+        return media_.after_crossing(v.hit.object, v.hit.normal, dir, v.medium);
+    return v.medium;
+}
+
+template <class Next>
+SegmentTransmittance BdptIntegrator::joined(const collision::Ray& ray, std::int32_t medium, float time, Rng& rng,
+                                            std::uint64_t& rays, Next&& next) const {
+    if (!media_.active()) return {blocked(ray, time) ? glm::vec3(0.0f) : glm::vec3(1.0f), glm::vec3(1.0f)};
+    return segment_transmittance(media_, accel_, ray, medium, moving_, time, rng, rays, next);
 }
 
 MisDefect BdptIntegrator::mis_defect() const {
@@ -113,8 +157,10 @@ glm::vec3 BdptIntegrator::connections(Subpaths& sp, const LightVertices& light, 
     const int nc = static_cast<int>(sp.cam.size());
     for (int t = 2; t <= nc && !cancelled(); ++t) {
         const int j = t - 1;
-        l += emitter_hit(sp, j);
-        if (!scatters(sp.cam[j].mat(scene_)) || is_delta(sp.cam[j].mat(scene_))) continue;
+        if (!sp.cam[j].in_medium()) {
+            l += emitter_hit(sp, j);
+            if (!scatters(sp.cam[j].mat(scene_)) || is_delta(sp.cam[j].mat(scene_))) continue;
+        }
         if (j + 1 <= max_depth_) l += next_event(sp, j, time, sampler, rays);
         for (std::size_t i = first; i < first + count; ++i) {
             if (light.photon(i).mis.depth + t > max_depth_) break;  // s + t - 1 vertices after the light
@@ -127,7 +173,7 @@ glm::vec3 BdptIntegrator::connections(Subpaths& sp, const LightVertices& light, 
 // The walk's vertices that a later technique can end at (light_vertices.hpp).
 void BdptIntegrator::store_light_vertices(const Subpaths& sp, LightVertices& out) const {
     for (std::size_t b = 1; b < sp.light.size(); ++b)
-        if (!is_delta(sp.light[b].mat(scene_))) out.push(sp.light[b]);
+        if (sp.light[b].in_medium() || !is_delta(sp.light[b].mat(scene_))) out.push(sp.light[b], scene_);
 }
 
 void BdptIntegrator::light_subpath(float time, PixelSampler& sampler, std::uint64_t& rays, float merge_eta,
@@ -160,37 +206,49 @@ void BdptIntegrator::camera_walk(float x, float y, const glm::vec2& lens, float 
     PathVertex c;
     c.kind = PathVertex::Kind::Camera;
     c.hit.point = camera_.lens_point(lens.x, lens.y);
+    c.medium = scene_.camera.medium;
     sp.cam.push_back(c);
     collision::Ray ray = camera_.generate(x, y, lens.x, lens.y);
     float pdf = camera_.direction_pdf(glm::dot(ray.dir, camera_.forward()));
     glm::vec3 beta(1.0f);
     float eta_scale = 1.0f;
+    std::int32_t medium = scene_.camera.medium;
+    if (media_.active()) sp.cam_rng = sampler.stream(kCameraMediumStream);
     for (int depth = 1;; ++depth) {
-        SurfaceHit hit;
+        PathVertex v;
         ++rays;
-        if (!(moving_ ? accel_.intersect(ray, time, hit) : accel_.intersect(ray, hit))) {
-            escaped += escaped_radiance(sp, ray.dir, beta, pdf);
+        if (!next_vertex(ray, medium, time, sp.cam_rng, rays, beta, v)) {
+            escaped += escaped_radiance(sp, ray.dir, beta, pdf, v.mis_tr);
             return;
         }
-        PathVertex v;
-        v.hit = hit;
-        v.wo = -ray.dir;
         v.beta = beta;
-        set_material(scene_, v);
-        v.pdf_own = area_density(pdf, sp.cam.back().point(), v);
+        medium = v.medium;  // where the flight ended (it may have crossed interfaces)
+        v.pdf_own = area_density(pdf, sp.cam.back().point(), v) * flight_density(v.mis_tr, v);
         sp.cam.push_back(std::move(v));
         sp.cam.back().above = camera_vertex_above(sp.cam, depth, sp.merge_eta, mis_defect());
         const PathVertex& at = sp.cam.back();
+        if (depth >= max_depth_) return;
+        PathVertex& prev = sp.cam[static_cast<std::size_t>(depth - 1)];
+        if (at.in_medium()) {
+            // The phase function's sample: its weight p / pdf is 1, its reverse density the same p.
+            const glm::vec2 b = sampler.get2d(camera_slot(depth, sample_dim::kBsdfDirection));
+            const glm::vec3 wi = hg_sample(-at.wo, media_.model(at.medium).g(), b.x, b.y, pdf);
+            if (depth >= 2) prev.pdf_other = area_density(pdf, at.point(), prev) * flight_density(at.mis_tr, prev);
+            if (depth >= roulette_.start_depth &&
+                !survives_roulette(roulette_, depth, sampler.get1d(camera_slot(depth, sample_dim::kRoulette)), eta_scale, beta))
+                return;
+            ray = collision::Ray{at.point(), wi, 0.0f, std::numeric_limits<float>::infinity()};
+            continue;
+        }
         const MaterialParameters& mat = at.mat(scene_);
-        if (depth >= max_depth_ || !scatters(mat)) return;
+        if (!scatters(mat)) return;
         const ShadingContext ctx = make_shading_context(at.hit, at.wo);
         const float b0 = sampler.get1d(camera_slot(depth, sample_dim::kBsdfLobe));
         const glm::vec2 b = sampler.get2d(camera_slot(depth, sample_dim::kBsdfDirection));
         BsdfSample bs;
         if (!sample_bsdf(mat, ctx, b0, b.x, b.y, bs)) return;
         const float rev = bs.delta ? 0.0f : eval_bsdf(mat, make_shading_context(at.hit, bs.wi), at.wo).pdf;
-        PathVertex& prev = sp.cam[static_cast<std::size_t>(depth - 1)];
-        if (depth >= 2) prev.pdf_other = area_density(rev, at.point(), prev);
+        if (depth >= 2) prev.pdf_other = area_density(rev, at.point(), prev) * flight_density(at.mis_tr, prev);
         sp.cam.back().delta = bs.delta;
         pdf = bs.delta ? 0.0f : bs.pdf;
         beta *= bs.weight;
@@ -202,8 +260,31 @@ void BdptIntegrator::camera_walk(float x, float y, const glm::vec2& lens, float 
         if (depth >= roulette_.start_depth &&
             !survives_roulette(roulette_, depth, sampler.get1d(camera_slot(depth, sample_dim::kRoulette)), eta_scale, beta))
             return;
-        ray = spawn_ray(sp.cam.back().hit, bs.wi);
+        if (media_.active()) medium = media_.after_crossing(at.hit.object, at.hit.normal, bs.wi, medium);
+        ray = spawn_ray(at.hit, bs.wi);
     }
+}
+
+// The subpath's next vertex along `ray` (traced in `medium`): a surface, or with media a medium
+// vertex where the free flight scattered (the flight's weight taken into `beta`). False when
+// the ray escapes (v.mis_tr then holds the flight's MIS transmittance).
+bool BdptIntegrator::next_vertex(const collision::Ray& ray, std::int32_t medium, float time, Rng& rng,
+                                 std::uint64_t& rays, glm::vec3& beta, PathVertex& v) const {
+    if (media_.active()) {
+        const FlightEnd fe = fly(media_, accel_, ray, medium, moving_, time, rng, rays);
+        beta *= fe.weight;
+        v.mis_tr = fe.mis_tr;
+        if (fe.kind == FlightEnd::Kind::Escaped) return false;
+        v.hit = fe.hit;
+        v.medium = fe.medium;
+        v.sigma_t = fe.sigma_t;
+        v.kind = fe.kind == FlightEnd::Kind::Medium ? PathVertex::Kind::Medium : PathVertex::Kind::Surface;
+    } else if (!(moving_ ? accel_.intersect(ray, time, v.hit) : accel_.intersect(ray, v.hit))) {
+        return false;
+    }
+    v.wo = -ray.dir;
+    if (!v.in_medium()) set_material(scene_, v);
+    return true;
 }
 
 void BdptIntegrator::light_walk(float time, PixelSampler& sampler, std::uint64_t& rays, Subpaths& sp) const {
@@ -242,18 +323,25 @@ void BdptIntegrator::light_walk(float time, PixelSampler& sampler, std::uint64_t
         ray.dir = em.dir;
         ray.tmin = 0.0f;
     }
+    std::int32_t medium = -1;
+    if (media_.active()) {
+        // The medium the light emits into: its boundary's side, else found from around it.
+        sp.light_rng = sampler.stream(kLightMediumStream);
+        const bool boundary = em.object < scene_.objects.size() && scene_.objects[em.object].media.transition();
+        medium = boundary ? media_.after_crossing(em.object, em.normal, em.dir, -1)
+                          : medium_at(accel_, scene_, ray, moving_, time, rays);
+        sp.light.back().medium = medium;
+    }
     float pdf = em.pdf_dir;
     for (int b = 1; b < max_depth_; ++b) {
-        SurfaceHit hit;
-        ++rays;
-        if (!(moving_ ? accel_.intersect(ray, time, hit) : accel_.intersect(ray, hit))) return;
         PathVertex v;
-        v.hit = hit;
-        v.wo = -ray.dir;
+        ++rays;
+        if (!next_vertex(ray, medium, time, sp.light_rng, rays, beta, v)) return;
         v.beta = beta;
-        set_material(scene_, v);
+        medium = v.medium;  // where the flight ended (it may have crossed interfaces)
         PathVertex& prev = sp.light.back();
-        v.pdf_own = prev.at_infinity ? em.pdf_pos * std::abs(glm::dot(v.hit.normal, ray.dir)) : area_density(pdf, prev.point(), v);
+        const float cos_v = v.in_medium() ? 1.0f : std::abs(glm::dot(v.hit.normal, ray.dir));
+        v.pdf_own = (prev.at_infinity ? em.pdf_pos * cos_v : area_density(pdf, prev.point(), v)) * flight_density(v.mis_tr, v);
         if (b == 1) {
             // Next event estimation's density of the light point from here, for strategy s = 1.
             PathVertex& l0 = sp.light.front();
@@ -265,12 +353,20 @@ void BdptIntegrator::light_walk(float time, PixelSampler& sampler, std::uint64_t
             }
             l0.light_mis.nee0 = l0.pdf_nee;
         }
-        const MaterialParameters& mat = v.mat(scene_);
-        if (!scatters(mat)) return;  // an absorber: every connection through it is zero
+        if (!v.in_medium() && !scatters(v.mat(scene_))) return;  // an absorber: every connection through it is zero
         sp.light.push_back(std::move(v));
         sp.light.back().light_mis = light_vertex_mis(sp.light, b, light_hittable, sp.merge_eta, mis_defect());
         PathVertex& at = sp.light.back();
         if (b + 1 >= max_depth_) return;
+        PathVertex& before = sp.light[static_cast<std::size_t>(b - 1)];
+        if (at.in_medium()) {
+            const glm::vec2 bd = sampler.get2d(light_slot(b, sample_dim::kBsdfDirection));
+            const glm::vec3 wi = hg_sample(-at.wo, media_.model(at.medium).g(), bd.x, bd.y, pdf);
+            before.pdf_other = area_density(pdf, at.point(), before) * flight_density(at.mis_tr, before);
+            if (!light_roulette(sampler, b, beta, beta_start)) return;
+            ray = collision::Ray{at.point(), wi, 0.0f, std::numeric_limits<float>::infinity()};
+            continue;
+        }
         const ShadingContext ctx = make_shading_context(at.hit, at.wo);
         const float b0 = sampler.get1d(light_slot(b, sample_dim::kBsdfLobe));
         const glm::vec2 bd = sampler.get2d(light_slot(b, sample_dim::kBsdfDirection));
@@ -278,24 +374,29 @@ void BdptIntegrator::light_walk(float time, PixelSampler& sampler, std::uint64_t
         if (!sample_bsdf(at.mat(scene_), ctx, b0, bd.x, bd.y, bs)) return;
         beta *= bs.weight * (importance_refraction_scale(at.mat(scene_), ctx, bs.wi) * shading_correction(at.hit, at.wo, bs.wi));
         const float rev = bs.delta ? 0.0f : eval_bsdf(at.mat(scene_), make_shading_context(at.hit, bs.wi), at.wo).pdf;
-        PathVertex& before = sp.light[static_cast<std::size_t>(b - 1)];
-        before.pdf_other = area_density(rev, at.point(), before);
+        before.pdf_other = area_density(rev, at.point(), before) * flight_density(at.mis_tr, before);
         at.delta = bs.delta;
         pdf = bs.delta ? 0.0f : bs.pdf;
-        // Roulette on the throughput relative to the first segment's (light subpaths carry power).
-        if (b >= roulette_.start_depth) {
-            const float q = std::min(1.0f, max_component(beta) / beta_start);
-            if (!(sampler.get1d(light_slot(b, sample_dim::kRoulette)) < q)) return;
-            beta /= q;
-        }
+        if (!light_roulette(sampler, b, beta, beta_start)) return;
+        if (media_.active()) medium = media_.after_crossing(at.hit.object, at.hit.normal, bs.wi, medium);
         ray = spawn_ray(at.hit, bs.wi);
     }
 }
 
+// Roulette on a light subpath's throughput relative to its first segment's (it carries power).
+bool BdptIntegrator::light_roulette(PixelSampler& sampler, int b, glm::vec3& beta, float beta_start) const {
+    if (b < roulette_.start_depth) return true;
+    const float q = std::min(1.0f, max_component(beta) / beta_start);
+    if (!(sampler.get1d(light_slot(b, sample_dim::kRoulette)) < q)) return false;
+    beta /= q;
+    return true;
+}
+
 // s = 0 at infinity: the camera subpath escaped along `dir` from its last vertex, sampled with
-// solid-angle density `pdf` there. A background that is no light has no other strategy.
-glm::vec3 BdptIntegrator::escaped_radiance(const Subpaths& sp, const glm::vec3& dir, const glm::vec3& beta,
-                                           float pdf) const {
+// solid-angle density `pdf` there, its flight's MIS transmittance `mis_tr` (1 in vacuum). A
+// background that is no light has no other strategy.
+glm::vec3 BdptIntegrator::escaped_radiance(const Subpaths& sp, const glm::vec3& dir, const glm::vec3& beta, float pdf,
+                                           const glm::vec3& mis_tr) const {
     glm::vec3 sum(0.0f);
     if (!lights_.background_is_light()) sum += beta * background_radiance(scene_.background, dir);
     if (infinite_lights_.empty()) return sum;
@@ -303,7 +404,7 @@ glm::vec3 BdptIntegrator::escaped_radiance(const Subpaths& sp, const glm::vec3& 
     const int j = k - 1;
     MisPath m;
     m.reset(k, 0, std::min(k, 3));
-    m.fc(0) = pdf;
+    m.fc(0) = pdf * flight_density(mis_tr, glm::vec3(0.0f), false);
     m.light_to_camera = false;
     const PathVertex& x1 = sp.cam.back();
     // x_2's density from x_1 is the walk's: x_1 sampled the escaping direction.
@@ -314,7 +415,8 @@ glm::vec3 BdptIntegrator::escaped_radiance(const Subpaths& sp, const glm::vec3& 
         const LightSet::EmissionDensity d = lights_.emission_density(light, -dir, -dir);
         m.emit0 = d.pos;
         m.nee0 = lights_.nee_density_of_light(light, x1.point(), dir);  // emission's and NEE's differ under a portal
-        const float fl1 = k >= 2 ? d.dir * std::abs(glm::dot(x1.hit.normal, dir)) : 0.0f;
+        const float cos1 = x1.in_medium() ? 1.0f : std::abs(glm::dot(x1.hit.normal, dir));
+        const float fl1 = k >= 2 ? d.dir * cos1 * flight_density(mis_tr, x1) : 0.0f;
         put_camera_end(m, sp.cam, j, 1, fl1, fl2, true);
         sum += beta * le * weight(m, 0, sp.merge_eta);
     }
@@ -336,7 +438,7 @@ glm::vec3 BdptIntegrator::emitter_hit(Subpaths& sp, int j) const {
     float fl1 = 0.0f;
     if (j >= 2) {
         const PathVertex& x1 = sp.cam[static_cast<std::size_t>(j - 1)];
-        fl1 = area_density(d.dir, z.point(), x1);
+        fl1 = area_density(d.dir, z.point(), x1) * flight_density(z.mis_tr, x1);
         m.nee0 = area_density(lights_.pdf(x1.point(), x1.hit.object, z.hit), x1.point(), z.point(), z.hit.normal);
     }
     m.light_hittable = true;
@@ -353,13 +455,18 @@ glm::vec3 BdptIntegrator::next_event(Subpaths& sp, int j, float time, PixelSampl
     const glm::vec2 u = sampler.get2d(camera_slot(j, sample_dim::kLightPoint));
     LightSample ls;
     if (!lights_.sample(z.point(), z.hit.object, uc.x, uc.y, u.x, u.y, ls)) return glm::vec3(0.0f);
-    const BsdfEvalBoth e = eval_bsdf_both(z.mat(scene_), z.hit, z.wo, ls.wi);
+    const BsdfEvalBoth e = eval_at(z, ls.wi);
     if (!(e.pdf_wi > 0.0f)) return glm::vec3(0.0f);
-    const glm::vec3 c = z.beta * e.f_cos * ls.radiance / ls.pdf;
+    glm::vec3 c = z.beta * e.f_cos * ls.radiance / ls.pdf;
     if (!(max_component(c) > 0.0f)) return glm::vec3(0.0f);
     ++rays;
-    const collision::Ray shadow = ls.at_infinity ? spawn_ray(z.hit, ls.wi) : spawn_ray_to(z.hit, ls.point, ls.point_error, ls.normal);
-    if (blocked(shadow, time)) return glm::vec3(0.0f);
+    const SurfaceHit from = ray_end(z.hit, z.in_medium(), ls.wi);
+    const auto toward_light = [&](const SurfaceHit& h) {
+        return ls.at_infinity ? spawn_ray(h, ls.wi) : spawn_ray_to(h, ls.point, ls.point_error, ls.normal);
+    };
+    const SegmentTransmittance tr = joined(toward_light(from), medium_leaving(z, ls.wi), time, sp.cam_rng, rays, toward_light);
+    if (tr.tr == glm::vec3(0.0f)) return glm::vec3(0.0f);
+    c *= tr.tr;
     // The light point as a path vertex x_0, and the path's densities.
     const std::uint32_t light = lights_.light_of_sample(uc.x);
     PathVertex x0;
@@ -379,9 +486,11 @@ glm::vec3 BdptIntegrator::next_event(Subpaths& sp, int j, float time, PixelSampl
     m.light_hittable = !x0.delta_position && !x0.delta_direction &&
                        (!x0.at_infinity || lights_.light_is_found_at_infinity(light));
     m.light_to_camera = !x0.at_infinity;
-    m.fc(0) = area_density(e.pdf_wi, z.point(), x0);
-    const float fl1 = ls.at_infinity ? d.dir * std::abs(glm::dot(z.hit.normal, ls.wi)) : area_density(d.dir, ls.point, z);
-    const float fl2 = j >= 2 ? area_density(e.pdf_wo, z.point(), sp.cam[static_cast<std::size_t>(j - 1)]) : 0.0f;
+    m.fc(0) = area_density(e.pdf_wi, z.point(), x0) * flight_density(tr.mis_tr, x0);
+    const float cos_z = z.in_medium() ? 1.0f : std::abs(glm::dot(z.hit.normal, ls.wi));
+    const float fl1 = (ls.at_infinity ? d.dir * cos_z : area_density(d.dir, ls.point, z)) * flight_density(tr.mis_tr, z);
+    const PathVertex& z_next = sp.cam[static_cast<std::size_t>(j - 1)];
+    const float fl2 = j >= 2 ? area_density(e.pdf_wo, z.point(), z_next) * flight_density(z.mis_tr, z_next) : 0.0f;
     put_camera_end(m, sp.cam, j, 1, fl1, fl2);
     return c * weight(m, 1, sp.merge_eta);
 }
@@ -391,30 +500,45 @@ glm::vec3 BdptIntegrator::connect(Subpaths& sp, const LightVertices& light, std:
                                   std::uint64_t& rays) const {
     const Photon& yp = light.photon(i);
     const SurfaceHit yhit = light.hit(i);
+    const bool y_medium = light.in_medium(i);
     const int j = t - 1, b = yp.mis.depth, s = b + 1;
     const PathVertex& z = sp.cam[static_cast<std::size_t>(j)];
-    const MaterialParameters& my = light.material(i, scene_);
     glm::vec3 w = z.point() - yp.point;
     const float d2 = glm::dot(w, w);
     if (!(d2 > 0.0f)) return glm::vec3(0.0f);
     w /= std::sqrt(d2);
-    const BsdfEvalBoth ey = eval_bsdf_both(my, yhit, yp.wo, w);
+    const std::int32_t y_side = y_medium || media_.active() ? light.medium_toward(i, w) : -1;
+    BsdfEvalBoth ey;
+    float fy_scale = 1.0f;
+    if (y_medium) {
+        ey = eval_phase(media_.model(y_side).g(), yp.wo, w);
+    } else {
+        const MaterialParameters& my = light.material(i, scene_);
+        ey = eval_bsdf_both(my, yhit, yp.wo, w);
+        fy_scale = importance_refraction_scale(my, make_shading_context(yhit, yp.wo), w) * shading_correction(yhit, yp.wo, w);
+    }
     if (!(ey.pdf_wi > 0.0f)) return glm::vec3(0.0f);
-    const BsdfEvalBoth ez = eval_bsdf_both(z.mat(scene_), z.hit, z.wo, -w);
+    const BsdfEvalBoth ez = eval_at(z, -w);
     if (!(ez.pdf_wi > 0.0f)) return glm::vec3(0.0f);
-    const float fy_scale =
-        importance_refraction_scale(my, make_shading_context(yhit, yp.wo), w) * shading_correction(yhit, yp.wo, w);
-    const glm::vec3 c = yp.beta * ey.f_cos * fy_scale * ez.f_cos * z.beta / d2;
+    glm::vec3 c = yp.beta * ey.f_cos * fy_scale * ez.f_cos * z.beta / d2;
     if (!(max_component(c) > 0.0f)) return glm::vec3(0.0f);
     ++rays;
-    if (blocked(spawn_ray_to(yhit, z.point(), z.hit.point_error, z.hit.normal), time)) return glm::vec3(0.0f);
+    const SurfaceHit to = ray_end(z.hit, z.in_medium(), -w);
+    const auto toward_z = [&](const SurfaceHit& h) { return spawn_ray_to(h, to.point, to.point_error, to.normal); };
+    const SegmentTransmittance tr = joined(toward_z(ray_end(yhit, y_medium, w)), y_side, time, sp.cam_rng, rays, toward_z);
+    if (tr.tr == glm::vec3(0.0f)) return glm::vec3(0.0f);
+    c *= tr.tr;
     MisPath& m = sp.mis;
     const int k = s + j;
     m.reset(k, b - 1, std::min(k, s + 2));
     put_light_end(m, yp.mis, ey.pdf_wo);
-    m.fc(b) = area_density(ez.pdf_wi, z.point(), yp.point, yp.normal);
-    const float fl_next = j >= 2 ? area_density(ez.pdf_wo, z.point(), sp.cam[static_cast<std::size_t>(j - 1)]) : 0.0f;
-    put_camera_end(m, sp.cam, j, s, area_density(ey.pdf_wi, yp.point, z), fl_next);
+    // y as the camera's direction reaches it (no cosine at a medium vertex), over the joining segment.
+    const glm::vec3 y_sigma_t = y_medium ? extinction(y_side, yp.point) : glm::vec3(0.0f);
+    m.fc(b) = (y_medium ? ez.pdf_wi / d2 : area_density(ez.pdf_wi, z.point(), yp.point, yp.normal)) *
+              flight_density(tr.mis_tr, y_sigma_t, y_medium);
+    const PathVertex& z_next = sp.cam[static_cast<std::size_t>(j - 1)];
+    const float fl_next = j >= 2 ? area_density(ez.pdf_wo, z.point(), z_next) * flight_density(z.mis_tr, z_next) : 0.0f;
+    put_camera_end(m, sp.cam, j, s, area_density(ey.pdf_wi, yp.point, z) * flight_density(tr.mis_tr, z), fl_next);
     return c * weight(m, s, sp.merge_eta);
 }
 
@@ -423,7 +547,7 @@ void BdptIntegrator::light_to_camera(Subpaths& sp, int s, float time, PixelSampl
                                      std::vector<Splat>& splats) const {
     const PathVertex& y = sp.light[static_cast<std::size_t>(s - 1)];
     if (y.kind == PathVertex::Kind::Light && (y.at_infinity || y.delta_direction)) return;
-    if (y.kind == PathVertex::Kind::Surface && is_delta(y.mat(scene_))) return;
+    if (y.kind == PathVertex::Kind::Surface && is_delta(y.mat(scene_))) return;  // a medium vertex never is
     const glm::vec2 ul = sampler.get2d(light_slot(s - 1, kLensSlot));
     const glm::vec3 lens = camera_.lens_point(ul.x, ul.y);
     float fx = 0.0f, fy = 0.0f;
@@ -439,12 +563,15 @@ void BdptIntegrator::light_to_camera(Subpaths& sp, int s, float time, PixelSampl
     if (y.kind == PathVertex::Kind::Light) {
         f = lights_.emission_toward(y.light, y.point(), y.hit.normal, y.hit.primitive, w);
         if (y.on_surface()) f *= std::abs(glm::dot(y.hit.normal, w));
+    } else if (y.in_medium()) {
+        ey = eval_at(y, w);
+        f = ey.f_cos;
     } else {
         ey = eval_bsdf_both(y.mat(scene_), y.hit, y.wo, w);
         f = ey.f_cos * (importance_refraction_scale(y.mat(scene_), make_shading_context(y.hit, y.wo), w) *
                         shading_correction(y.hit, y.wo, w));
     }
-    const glm::vec3 c = y.beta * f * importance;
+    glm::vec3 c = y.beta * f * importance;
     if (!(max_component(c) > 0.0f)) return;
     // The shadow ray stops at the near clip plane: nothing between it and the lens is seen.
     const float to_clip = camera_.near_clip() / cos_theta;
@@ -459,14 +586,18 @@ void BdptIntegrator::light_to_camera(Subpaths& sp, int s, float time, PixelSampl
         shadow.tmin = 0.0f;
         shadow.tmax = 1.0f;  // the far end is the lens or the clip plane: no surface to stop short of
     }
-    if (blocked(shadow, time)) return;
+    const SegmentTransmittance tr = joined(shadow, medium_leaving(y, w), time, sp.light_rng, rays, [&](const SurfaceHit& h) {
+        return spawn_ray_to(h, target, glm::vec3(0.0f), w);
+    });
+    if (tr.tr == glm::vec3(0.0f)) return;
+    c *= tr.tr;
     // The path light[0..s) + the lens point x_k, k = s (whose densities count nowhere: t = 0 is
     // impossible).
     MisPath& m = sp.mis;
     const int b = s - 1;
     m.reset(s, std::max(0, b - 1), s);
     put_light_end(m, y.light_mis, ey.pdf_wo);
-    m.fc(b) = area_density(camera_.direction_pdf(cos_theta), lens, y);
+    m.fc(b) = area_density(camera_.direction_pdf(cos_theta), lens, y) * flight_density(tr.mis_tr, y);
     m.light_to_camera = !sp.light.front().at_infinity;
     const glm::vec3 value = c * weight(m, s, sp.merge_eta);
     // One splat at the film point: the renderer spreads it over the pixels its filter reaches

@@ -25,12 +25,15 @@
 #include <glm/vec3.hpp>
 
 #include "raytracer/accel/accel.hpp"
+#include "raytracer/render/bsdf.hpp"
 #include "raytracer/render/camera.hpp"
 #include "raytracer/render/film_splats.hpp"
 #include "raytracer/render/integrators/bidir_mis.hpp"
 #include "raytracer/render/integrators/light_vertices.hpp"
 #include "raytracer/render/integrators/path_vertex.hpp"
 #include "raytracer/render/lights.hpp"
+#include "raytracer/render/media/scene_media.hpp"
+#include "raytracer/render/media/subpath_flight.hpp"
 #include "raytracer/render/planted_defect.hpp"
 #include "raytracer/render/roulette.hpp"
 #include "raytracer/render/sample_features.hpp"
@@ -80,7 +83,11 @@ private:
     glm::vec3 connections(Subpaths& sp, const LightVertices& light, std::size_t first, std::size_t count, float time,
                           PixelSampler& sampler, std::uint64_t& rays) const;
     void store_light_vertices(const Subpaths& sp, LightVertices& out) const;
-    glm::vec3 escaped_radiance(const Subpaths& sp, const glm::vec3& dir, const glm::vec3& beta, float pdf) const;
+    bool next_vertex(const collision::Ray& ray, std::int32_t medium, float time, Rng& rng, std::uint64_t& rays,
+                     glm::vec3& beta, PathVertex& v) const;
+    bool light_roulette(PixelSampler& sampler, int b, glm::vec3& beta, float beta_start) const;
+    glm::vec3 escaped_radiance(const Subpaths& sp, const glm::vec3& dir, const glm::vec3& beta, float pdf,
+                               const glm::vec3& mis_tr) const;
     glm::vec3 emitter_hit(Subpaths& sp, int j) const;
     glm::vec3 next_event(Subpaths& sp, int j, float time, PixelSampler& sampler, std::uint64_t& rays) const;
     glm::vec3 connect(Subpaths& sp, const LightVertices& light, std::size_t i, int t, float time,
@@ -88,6 +95,19 @@ private:
     void light_to_camera(Subpaths& sp, int s, float time, PixelSampler& sampler, std::uint64_t& rays,
                          std::vector<Splat>& splats) const;
     bool blocked(const collision::Ray& ray, float time) const;
+    // With media: the transmittance of a joining ray from a vertex (segment_transmittance, starting in
+    // `medium`); in vacuum the visibility test.
+    template <class Next>
+    SegmentTransmittance joined(const collision::Ray& ray, std::int32_t medium, float time, Rng& rng,
+                                std::uint64_t& rays, Next&& next) const;
+    // A vertex's scattering toward wi: its BSDF, or at a medium vertex its phase function.
+    BsdfEvalBoth eval_at(const PathVertex& v, const glm::vec3& wi) const;
+    // The medium a ray from v along dir starts in.
+    std::int32_t medium_leaving(const PathVertex& v, const glm::vec3& dir) const;
+    glm::vec3 extinction(std::int32_t medium, const glm::vec3& p) const {
+        const MediumPoint mp = media_.model(medium).at(p);
+        return mp.sigma_a + mp.sigma_s;
+    }
     float weight(const MisPath& path, int s, float merge_eta) const;
 
     const Scene& scene_;
@@ -102,6 +122,7 @@ private:
     bool moving_ = false;
     float filter_radius_;
     std::vector<std::uint32_t> infinite_lights_;  // found by escaping rays (suns, the environment)
+    SceneMedia media_;                            // inactive in vacuum: the walks trace surfaces alone
 };
 
 }  // namespace sweeptrace

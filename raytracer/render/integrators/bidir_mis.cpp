@@ -13,6 +13,7 @@ void MisPath::reset(int path_k, int first, int last) {
     from_light.fill(0.0f);
     from_camera.fill(0.0f);
     delta_flags.fill(0);
+    medium_flags.fill(0);
     below = above = MisTail{};
 }
 
@@ -28,7 +29,9 @@ bool connection_possible(const MisPath& p, int i) {
     return i == p.k || !p.delta(i);
 }
 
-bool merge_possible(const MisPath& p, int i, float eta) { return eta > 0.0f && i >= 1 && i <= p.k - 1 && !p.delta(i); }
+bool merge_possible(const MisPath& p, int i, float eta) {
+    return eta > 0.0f && i >= 1 && i <= p.k - 1 && !p.delta(i) && !p.medium(i);
+}
 
 // p_{i+1} / p_i of the connection strategies.
 double density_ratio(const MisPath& p, int i) {

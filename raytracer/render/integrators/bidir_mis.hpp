@@ -27,8 +27,10 @@
 // x_s and the chance of landing within r: p_VM(s) = p_VC(s) * from_light[s] * eta, eta = pi r^2 N,
 // N the light subpaths each camera subpath merges with. For s = 1 the light point x_0 is emission
 // sampling's (emit0), not next event estimation's (nee0), so the connection density's nee0 is
-// traded for emit0. A merge needs a non-delta x_s only: it is how light reaches a diffuse surface
-// through a specular one (x_{s-1} delta), which no connection can.
+// traded for emit0. A merge needs a non-delta x_s on a surface only: it is how light reaches a
+// diffuse surface through a specular one (x_{s-1} delta), which no connection can. A medium
+// vertex (participating media) has no merge: vcm merges photons on surfaces, so at a medium
+// vertex the connections are the only techniques and the merge's term is absent from every sum.
 //
 // The weight is p^2 / sum over the possible techniques of p_i^2. Russian roulette is left out of
 // the densities (as pbrt-v3): any weights that sum to 1 over the techniques of each path keep the
@@ -58,6 +60,7 @@ struct MisPath {
     int lo = 0, hi = 0;                   // the window's first and last vertex
     std::array<float, kCapacity> from_light{}, from_camera{};  // x_lo..x_hi (from_light[0] unused: emit0)
     std::array<char, kCapacity + 1> delta_flags{};  // x_{lo-1}..x_hi scattered by a delta lobe
+    std::array<char, kCapacity> medium_flags{};     // x_lo..x_hi is a medium vertex (no merge there)
     float emit0 = 0.0f;           // emission sampling's density of x_0
     float nee0 = 0.0f;            // next event estimation's density of x_0 from x_1 (used when k >= 2)
     bool light_hittable = true;   // strategy s = 0 exists
@@ -69,9 +72,11 @@ struct MisPath {
     float& fl(int i) { return from_light[static_cast<std::size_t>(i - lo)]; }
     float& fc(int i) { return from_camera[static_cast<std::size_t>(i - lo)]; }
     char& delta(int i) { return delta_flags[static_cast<std::size_t>(i - lo + 1)]; }  // lo - 1 <= i <= hi
+    char& medium(int i) { return medium_flags[static_cast<std::size_t>(i - lo)]; }
     float fl(int i) const { return from_light[static_cast<std::size_t>(i - lo)]; }
     float fc(int i) const { return from_camera[static_cast<std::size_t>(i - lo)]; }
     char delta(int i) const { return delta_flags[static_cast<std::size_t>(i - lo + 1)]; }
+    char medium(int i) const { return medium_flags[static_cast<std::size_t>(i - lo)]; }
 };
 
 // Defects planted for the mutation tests (render/planted_defect.hpp): next event estimation (s = 1)

@@ -1,5 +1,7 @@
 #include "raytracer/render/integrators/light_vertices.hpp"
 
+#include <glm/geometric.hpp>
+
 namespace sweeptrace {
 
 void LightVertices::clear() {
@@ -8,14 +10,28 @@ void LightVertices::clear() {
     textured_.clear();
 }
 
-void LightVertices::push(const PathVertex& v) {
+void LightVertices::push(const PathVertex& v, const Scene& scene) {
     photons_.push_back({v.hit.point, v.wo, v.beta, v.hit.normal, v.light_mis});
+    const auto side = [](std::int32_t m) { return static_cast<std::int16_t>(m); };  // media are < 2^15 (scene/medium.hpp)
+    if (v.in_medium()) {
+        surfaces_.push_back({glm::vec3(0.0f), glm::vec3(0.0f), static_cast<std::uint32_t>(v.medium), side(v.medium), side(v.medium)});
+        return;
+    }
     std::uint32_t material = v.material;
     if (v.has_textured) {
         material = kTextured | static_cast<std::uint32_t>(textured_.size());
         textured_.push_back(v.textured);
     }
-    surfaces_.push_back({v.hit.shading_normal, v.hit.point_error, material});
+    // A boundary's two media; any other surface has the medium its subpath arrived in on both.
+    const MediumInterface& mi = scene.objects[v.hit.object].media;
+    const bool boundary = mi.transition();
+    surfaces_.push_back({v.hit.shading_normal, v.hit.point_error, material, side(boundary ? mi.outside : v.medium),
+                         side(boundary ? mi.inside : v.medium)});
+}
+
+std::int32_t LightVertices::medium_toward(std::size_t i, const glm::vec3& dir) const {
+    const Surface& s = surfaces_[i];
+    return glm::dot(dir, photons_[i].normal) > 0.0f ? s.front : s.back;
 }
 
 void LightVertices::append(const LightVertices& other) {

@@ -5,9 +5,10 @@
 // its own). Stored as two flat arrays: the photon, 80 bytes, all a merge reads (the camera
 // vertex's BSDF is the only one a merge evaluates, so the photon needs no material), and what a
 // connection reads besides (the shading normal and point error of the hit, the material: an index
-// into the scene's, or into the textured ones kept here when the material reads a texture). A
-// medium vertex, when bdpt and vcm carry media, would keep its phase function's parameters in
-// the place of the material; the photon and its MIS quantities stay as they are.
+// into the scene's, or into the textured ones kept here when the material reads a texture, and
+// the media on its two sides). A medium vertex (its photon's mis.flags has kMedium, its normal is
+// 0) keeps its medium's index in the place of the material: connections evaluate its phase
+// function; merges skip it (vcm merges on surfaces only, bidir_mis.hpp).
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -36,8 +37,9 @@ public:
     static constexpr std::size_t kBytesPerVertex = sizeof(Photon) + 32 + sizeof(void*) + 2 * sizeof(std::uint32_t);
 
     void clear();
-    // light[b] (b >= 1, a surface vertex whose material is not a delta one), its MIS quantities set.
-    void push(const PathVertex& v);
+    // light[b] (b >= 1, a medium vertex or a surface vertex whose material is not a delta one),
+    // its MIS quantities set.
+    void push(const PathVertex& v, const Scene& scene);
     // Appends another store's vertices (same scene).
     void append(const LightVertices& other);
     std::size_t size() const { return photons_.size(); }
@@ -45,13 +47,17 @@ public:
     const Photon& photon(std::size_t i) const { return photons_[i]; }
     // Vertex i's hit (point, error, normals; no uv, object or primitive: no texture is read again).
     SurfaceHit hit(std::size_t i) const;
-    const MaterialParameters& material(std::size_t i, const Scene& scene) const;
-
+    const MaterialParameters& material(std::size_t i, const Scene& scene) const;  // a surface vertex's
+    bool in_medium(std::size_t i) const { return (photons_[i].mis.flags & LightVertexMis::kMedium) != 0; }
+    // The medium a ray from vertex i along `dir` starts in (-1 vacuum): a medium vertex's own, a
+    // surface's on the side `dir` leaves to.
+    std::int32_t medium_toward(std::size_t i, const glm::vec3& dir) const;
 private:
     struct Surface {
         glm::vec3 shading_normal;
         glm::vec3 point_error;
-        std::uint32_t material;  // into Scene::materials, or into textured_ with kTextured set
+        std::uint32_t material;  // into Scene::materials, or into textured_ with kTextured set; a medium vertex's medium
+        std::int16_t front, back;  // the media on the normal's side and the other (-1 vacuum)
     };
     static_assert(sizeof(Surface) <= 32);
     static constexpr std::uint32_t kTextured = 0x80000000u;

@@ -23,9 +23,12 @@ LightVertexMis light_vertex_mis(std::span<const PathVertex> light, int b, bool l
     LightVertexMis mis = light_origin_mis(light[0], light_hittable);
     mis.pdf_own = v.pdf_own;
     mis.prev_pdf_own = prev.pdf_own;
-    mis.prev_area = area_density(1.0f, v.point(), prev);
+    // x_{b-1} as the camera's direction reaches it from x_b: over the same segment, the same flight.
+    mis.prev_area = area_density(1.0f, v.point(), prev) * flight_density(v.mis_tr, prev);
     mis.depth = static_cast<std::uint16_t>(b);
     if (prev.delta) mis.flags |= LightVertexMis::kDeltaPrev;
+    if (v.in_medium()) mis.flags |= LightVertexMis::kMedium;
+    if (prev.in_medium()) mis.flags |= LightVertexMis::kMediumPrev;
     if (b >= 2 && light[at(b - 2)].delta) mis.flags |= LightVertexMis::kDeltaPrevPrev;
     if (b >= 2) {
         // The tail before x_{b-1}: light[b-1]'s (before x_{b-2}) and x_{b-2}'s own techniques, its
@@ -39,6 +42,7 @@ LightVertexMis light_vertex_mis(std::span<const PathVertex> light, int b, bool l
         m.fl(b - 2) = pp.pdf_own;
         m.fc(b - 2) = pp.pdf_other;
         m.delta(b - 2) = pp.delta;
+        m.medium(b - 2) = pp.in_medium();
         if (b >= 3) m.delta(b - 3) = light[at(b - 3)].delta;
         mis.below = mis_tail_below(m, b - 2, prev.light_mis.below, eta, defect);
     }
@@ -56,6 +60,7 @@ MisTail camera_vertex_above(std::span<const PathVertex> cam, int j, float eta, M
         m.fl(i) = v.pdf_other;
         m.fc(i) = v.pdf_own;
         m.delta(i) = v.delta;
+        m.medium(i) = v.in_medium();
     }
     return mis_tail_above(m, 5, cam[at(j - 1)].above, eta, defect);
 }
@@ -66,10 +71,12 @@ void put_light_end(MisPath& m, const LightVertexMis& y, float pdf_to_prev) {
     m.nee0 = y.nee0;
     m.light_hittable = (y.flags & LightVertexMis::kLightHittable) != 0;
     m.fl(b) = y.pdf_own;
+    m.medium(b) = (y.flags & LightVertexMis::kMedium) != 0;
     if (b == 0) return;
     m.fl(b - 1) = y.prev_pdf_own;
     m.fc(b - 1) = pdf_to_prev * y.prev_area;
     m.delta(b - 1) = (y.flags & LightVertexMis::kDeltaPrev) != 0;
+    m.medium(b - 1) = (y.flags & LightVertexMis::kMediumPrev) != 0;
     if (b >= 2) m.delta(b - 2) = (y.flags & LightVertexMis::kDeltaPrevPrev) != 0;
     m.below = y.below;
 }
@@ -80,17 +87,20 @@ void put_camera_end(MisPath& m, std::span<const PathVertex> cam, int j, int s, f
     m.fl(s) = fl_s;
     m.fc(s) = z.pdf_own;
     m.delta(s) = keep_delta && z.delta;
+    m.medium(s) = z.in_medium();
     if (j >= 1) {
         const PathVertex& next = cam[at(j - 1)];
         m.fl(s + 1) = j >= 2 ? fl_next : next.pdf_other;
         m.fc(s + 1) = next.pdf_own;
         m.delta(s + 1) = next.delta;
+        m.medium(s + 1) = next.in_medium();
     }
     if (j >= 2) {
         const PathVertex& after = cam[at(j - 2)];
         m.fl(s + 2) = after.pdf_other;
         m.fc(s + 2) = after.pdf_own;
         m.delta(s + 2) = after.delta;
+        m.medium(s + 2) = after.in_medium();
         m.above = z.above;
     }
 }

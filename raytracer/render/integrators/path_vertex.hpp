@@ -6,8 +6,10 @@
 // would have sampled it from its successor. Which of them is light-to-camera depends on the
 // subpath: mis_window.hpp alone turns them into the path's order. Both are per unit area at the
 // vertex (per unit solid angle for a light at infinity, whose "position" is its direction), and 0
-// where a delta lobe decided. A medium vertex would be a fourth kind, its phase function in the
-// place of the BSDF; the MIS quantities do not care which.
+// where a delta lobe decided. A medium vertex (participating media) is a fourth kind, its
+// Henyey-Greenstein phase function in the place of the BSDF and no normal, so no cosine converts
+// a density to it; a vertex reached by a free flight through a medium also has the flight's
+// density in both of its own (render/media/subpath_flight.hpp: sigma_t T, or T at a surface).
 #include <cmath>
 #include <cstdint>
 
@@ -16,6 +18,7 @@
 
 #include "raytracer/geometry/surface_hit.hpp"
 #include "raytracer/render/integrators/bidir_mis.hpp"
+#include "raytracer/render/media/subpath_flight.hpp"
 #include "raytracer/scene/scene.hpp"
 
 namespace sweeptrace {
@@ -31,18 +34,25 @@ struct LightVertexMis {
     MisTail below;              // the strategies before x_{b-1}, relative to strategy b - 1
     float emit0 = 0.0f, nee0 = 0.0f;  // x_0's densities (bidir_mis.hpp)
     std::uint16_t depth = 0;    // b
-    std::uint8_t flags = 0;     // kDeltaPrev | kDeltaPrevPrev | kLightHittable
-    static constexpr std::uint8_t kDeltaPrev = 1, kDeltaPrevPrev = 2, kLightHittable = 4;
+    std::uint8_t flags = 0;     // kDeltaPrev | kDeltaPrevPrev | kLightHittable | kMedium | kMediumPrev
+    // kMedium: x_b is a medium vertex; kMediumPrev: x_{b-1} is.
+    static constexpr std::uint8_t kDeltaPrev = 1, kDeltaPrevPrev = 2, kLightHittable = 4, kMedium = 8, kMediumPrev = 16;
 };
 
 struct PathVertex {
-    enum class Kind : std::uint8_t { Camera, Light, Surface };
+    enum class Kind : std::uint8_t { Camera, Light, Surface, Medium };
     Kind kind = Kind::Surface;
     // Surface: the hit (its shading normal after any normal map). Light: point, error, outward
     // normal (the direction of travel at infinity), object and primitive of a surface light.
-    // Camera: the lens point.
+    // Camera: the lens point. Medium: the point (error and normals 0, object LightSet::kNoObject).
     SurfaceHit hit;
-    glm::vec3 wo{0.0f};    // Surface: unit, toward the previous vertex of its own subpath
+    glm::vec3 wo{0.0f};    // Surface, Medium: unit, toward the previous vertex of its own subpath
+    // Media: the medium the vertex sits in (Surface: the side its subpath arrived from; Light:
+    // the side it emits into; -1 vacuum), the MIS transmittance of the segment from its
+    // predecessor in its own subpath, and a medium vertex's extinction (subpath_flight.hpp).
+    std::int32_t medium = -1;
+    glm::vec3 mis_tr{1.0f};
+    glm::vec3 sigma_t{0.0f};
     glm::vec3 beta{1.0f};  // the subpath's throughput up to and including this vertex's arrival
     float pdf_own = 0.0f, pdf_other = 0.0f;
     // Light subpath, b >= 1: its MIS quantities. Camera subpath, cam[j]: the tail after x_{s+2}
@@ -65,7 +75,14 @@ struct PathVertex {
     // A point with a surface around it (its area density converts by a cosine).
     bool on_surface() const { return kind == Kind::Surface || (kind == Kind::Light && !delta_position && !at_infinity); }
     const glm::vec3& point() const { return hit.point; }
+    bool in_medium() const { return kind == Kind::Medium; }
 };
+
+// The flight's density factor of `at` reached over a segment with MIS transmittance `mis_tr`
+// (subpath_flight.hpp): 1 in vacuum.
+inline float flight_density(const glm::vec3& mis_tr, const PathVertex& at) {
+    return flight_density(mis_tr, at.sigma_t, at.in_medium());
+}
 
 // A solid-angle density at `from` turned into the density per unit area at a surface point `to`
 // with unit normal `normal` (pbrt-v4's ConvertDensity): times |cos| at `to` / distance^2.

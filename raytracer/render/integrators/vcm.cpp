@@ -139,6 +139,7 @@ glm::vec3 VcmIntegrator::sample(std::size_t pixel, float x, float y, const glm::
                                        cam, features);
     if (!(eta_ > 0.0f)) return l;
     for (int j = 1; j < static_cast<int>(cam.size()) && j < max_depth_ && !bdpt_.cancelled(); ++j) {  // cut: pass dropped
+        if (cam[static_cast<std::size_t>(j)].in_medium()) continue;  // merges on surfaces only (bidir_mis.hpp)
         const MaterialParameters& mat = cam[static_cast<std::size_t>(j)].mat(scene_);
         if (scatters(mat) && !is_delta(mat)) l += merge(cam, j);
     }
@@ -161,7 +162,8 @@ glm::vec3 VcmIntegrator::merge(const std::vector<PathVertex>& cam, int j) const 
         const int s = y.mis.depth, k = s + j;
         if (k > max_depth_) return;
         // Only a photon on a surface facing this one's way: light arriving at a wall is
-        // no sample of what arrives at the floor beside it (a leak around the corner).
+        // no sample of what arrives at the floor beside it (a leak around the corner). A photon
+        // in a medium (normal 0) is no merge's either: it only connects.
         if (!(glm::dot(y.normal, z.hit.normal) > 0.0f)) return;
         const BsdfEvalBoth e = eval_bsdf_both(mat, z.hit, z.wo, y.wo);
         // The photon's power is per unit of its own surface's area: its own geometric
