@@ -2,7 +2,8 @@
 // A random path's densities for the MIS tests (test_render_bdpt.cpp, test_render_vcm.cpp): 1 to 8
 // vertices after the light, densities log-uniform over four decades, delta vertices where a
 // subpath would put them (a quarter of the inner vertices, with the densities next to them 0, as
-// the walks store them), the light hittable or not, joinable to the camera or not.
+// the walks store them), medium vertices (a fifth of the other inner vertices: no merge there,
+// bidir_mis.hpp), the light hittable or not, joinable to the camera or not.
 #include <cmath>
 #include <random>
 
@@ -27,6 +28,8 @@ inline MisPath random_mis_path(std::mt19937& rng) {
             p.fl(i + 1) = 0.0f;
             p.fc(i - 1) = 0.0f;
         }
+    for (int i = 1; i < k; ++i)
+        if (!p.delta(i) && unit(rng) < 0.2f) p.medium(i) = 1;
     p.nee0 = std::pow(10.0f, decade(rng));
     p.light_hittable = unit(rng) < 0.7f;
     p.light_to_camera = unit(rng) < 0.7f;

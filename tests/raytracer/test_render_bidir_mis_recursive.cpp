@@ -4,7 +4,9 @@
 // own functions, and every connection, merge, light-tracing splat (t = 1), emitter hit (s = 0) and
 // next event estimation (s = 1) weighted from its window alone; the weight must be the one of the
 // whole path's explicit sum (a window over the whole path with empty tails), for each planted
-// defect too. A wrong step of a tail (a ratio the wrong way round) is caught.
+// defect too. Medium vertices among them (no cosine, a flight density in their densities, no
+// merge): a walk that loses either is caught. A wrong step of a tail (a ratio the wrong way
+// round) is caught.
 #include <catch2/catch.hpp>
 
 #include <algorithm>
@@ -33,7 +35,11 @@ glm::vec3 random_point(std::mt19937& rng) {
 }
 
 // Walks of random densities, the MIS quantities set as bdpt.cpp's walks set them.
-Subpaths random_subpaths(std::mt19937& rng, float eta, MisDefect defect) {
+// The walks' MIS quantities as a planted slip would leave them: a medium vertex's flight
+// density dropped from its predecessor's density (prev_area), or its no-merge mark lost.
+enum class WalkSlip { None, NoFlightDensity, MergeAtMedium };
+
+Subpaths random_subpaths(std::mt19937& rng, float eta, MisDefect defect, WalkSlip slip = WalkSlip::None) {
     std::uniform_real_distribution<float> unit(0.0f, 1.0f);
     Subpaths sp;
     const int nl = 1 + static_cast<int>(unit(rng) * 6.0f), nc = 1 + static_cast<int>(unit(rng) * 6.0f);
@@ -50,6 +56,14 @@ Subpaths random_subpaths(std::mt19937& rng, float eta, MisDefect defect) {
             v.pdf_other = random_density(rng);
             // A delta lobe at an inner vertex: the densities it decided are 0.
             if (i > 0 && i + 1 < path->size() && unit(rng) < 0.25f) v.delta = true;
+            // Participating media: the segment from its predecessor crossed a medium (its MIS
+            // transmittance), and an inner vertex may be a medium vertex (no normal, no merge).
+            if (i > 0 && unit(rng) < 0.4f) v.mis_tr = glm::vec3(unit(rng), unit(rng), unit(rng)) + glm::vec3(1e-3f);
+            if (i > 0 && !v.delta && unit(rng) < 0.25f) {
+                v.kind = PathVertex::Kind::Medium;
+                v.hit.normal = glm::vec3(0.0f);
+                v.sigma_t = glm::vec3(random_density(rng), random_density(rng), random_density(rng));
+            }
         }
     for (auto* path : {&sp.light, &sp.cam})
         for (std::size_t i = 1; i + 1 < path->size(); ++i)
@@ -57,8 +71,13 @@ Subpaths random_subpaths(std::mt19937& rng, float eta, MisDefect defect) {
     sp.cam[0].pdf_other = 0.0f;  // the lens is never hit
     sp.light[0].pdf_nee = random_density(rng);
     sp.light[0].light_mis = light_origin_mis(sp.light[0], sp.light_hittable);
-    for (int b = 1; b < nl; ++b)
-        sp.light[static_cast<std::size_t>(b)].light_mis = light_vertex_mis(sp.light, b, sp.light_hittable, eta, defect);
+    for (int b = 1; b < nl; ++b) {
+        LightVertexMis& mis = sp.light[static_cast<std::size_t>(b)].light_mis;
+        mis = light_vertex_mis(sp.light, b, sp.light_hittable, eta, defect);
+        const PathVertex& v = sp.light[static_cast<std::size_t>(b)];
+        if (slip == WalkSlip::NoFlightDensity) mis.prev_area /= flight_density(v.mis_tr, sp.light[static_cast<std::size_t>(b - 1)]);
+        if (slip == WalkSlip::MergeAtMedium) mis.flags &= static_cast<std::uint8_t>(~LightVertexMis::kMediumPrev);
+    }
     for (int j = 1; j < nc; ++j) sp.cam[static_cast<std::size_t>(j)].above = camera_vertex_above(sp.cam, j, eta, defect);
     return sp;
 }
@@ -74,18 +93,28 @@ MisPath whole_path(const Subpaths& sp, int s, int j, bool light_to_camera) {
         m.fl(i) = v.pdf_own;
         m.fc(i) = v.pdf_other;
         m.delta(i) = v.delta;
+        m.medium(i) = v.in_medium();
     }
     for (int c = 0; c <= j; ++c) {
         const PathVertex& v = sp.cam[static_cast<std::size_t>(c)];
         m.fl(k - c) = v.pdf_other;
         m.fc(k - c) = v.pdf_own;
         m.delta(k - c) = v.delta;
+        m.medium(k - c) = v.in_medium();
     }
     m.emit0 = sp.light[0].pdf_own;
     m.nee0 = sp.light[0].pdf_nee;
     m.light_hittable = sp.light_hittable;
     m.light_to_camera = light_to_camera;
     return m;
+}
+
+// light[b - 1]'s density from light[b] by a direction density `pdf` there: per unit area (no
+// cosine at a medium vertex), over the segment's flight (subpath_flight.hpp).
+float toward_prev(float pdf, const Subpaths& sp, int b) {
+    const PathVertex& y = sp.light[static_cast<std::size_t>(b)];
+    const PathVertex& prev = sp.light[static_cast<std::size_t>(b - 1)];
+    return area_density(pdf, y.point(), prev) * flight_density(y.mis_tr, prev);
 }
 
 struct Checked {
@@ -101,8 +130,8 @@ void compare(const MisPath& whole, const MisPath& window, int s, bool merge, flo
     c.nonzero += w > 1e-3f ? 1 : 0;
 }
 
-void check_all(std::mt19937& rng, float eta, MisDefect defect, Checked& c) {
-    const Subpaths sp = random_subpaths(rng, eta, defect);
+void check_all(std::mt19937& rng, float eta, MisDefect defect, Checked& c, WalkSlip slip = WalkSlip::None) {
+    const Subpaths sp = random_subpaths(rng, eta, defect, slip);
     const int nl = static_cast<int>(sp.light.size()), nc = static_cast<int>(sp.cam.size());
     const float x1 = random_density(rng), x2 = random_density(rng), x3 = random_density(rng), x4 = random_density(rng);
     const bool to_camera = std::uniform_real_distribution<float>(0.0f, 1.0f)(rng) < 0.7f;
@@ -117,7 +146,7 @@ void check_all(std::mt19937& rng, float eta, MisDefect defect, Checked& c) {
             MisPath whole = whole_path(sp, s, j, to_camera);
             whole.delta(s - 1) = whole.delta(s) = 0;
             whole.fc(s - 1) = x1;
-            whole.fc(s - 2) = area_density(pdf_wo, y.point(), sp.light[static_cast<std::size_t>(b - 1)]);
+            whole.fc(s - 2) = toward_prev(pdf_wo, sp, b);
             whole.fl(s) = x3;
             if (j >= 2) whole.fl(s + 1) = x4;
             MisPath win;
@@ -138,7 +167,7 @@ void check_all(std::mt19937& rng, float eta, MisDefect defect, Checked& c) {
             MisPath whole = whole_path(sp, s, j, to_camera);
             whole.fl(s) = y.pdf_own;
             whole.delta(s) = 0;
-            whole.fc(s - 1) = area_density(pdf_wi, y.point(), sp.light[static_cast<std::size_t>(s - 1)]);
+            whole.fc(s - 1) = toward_prev(pdf_wi, sp, s);
             if (j >= 2) whole.fl(s + 1) = x4;
             MisPath win;
             win.reset(k, s - 1, std::min(k, s + 2));
@@ -155,7 +184,7 @@ void check_all(std::mt19937& rng, float eta, MisDefect defect, Checked& c) {
         MisPath whole = whole_path(sp, s, 0, to_camera);
         whole.delta(s - 1) = 0;
         whole.fc(s - 1) = x1;
-        if (s >= 2) whole.fc(s - 2) = area_density(x2, y.point(), sp.light[static_cast<std::size_t>(b - 1)]);
+        if (s >= 2) whole.fc(s - 2) = toward_prev(x2, sp, b);
         MisPath win;
         win.reset(s, std::max(0, b - 1), s);
         win.light_to_camera = to_camera;
@@ -243,4 +272,15 @@ TEST_CASE("bidir MIS: a tail grown the wrong way is caught", "[bdpt][vcm][mis]")
         differ += std::abs(x - w) > 1e-3f * std::max(w, 1e-3f) ? 1 : 0;
     }
     CHECK(differ > tested / 2);
+}
+
+// The walks' slips with media (WalkSlip): the windows' weights leave the explicit sums'.
+TEST_CASE("bidir MIS: a medium vertex's flight density or no-merge mark lost by the walk is caught", "[bdpt][vcm][mis]") {
+    for (const WalkSlip slip : {WalkSlip::NoFlightDensity, WalkSlip::MergeAtMedium}) {
+        std::mt19937 rng(99);
+        Checked c;
+        for (int n = 0; n < 1500; ++n) check_all(rng, n % 3 == 0 ? 0.0f : random_density(rng), MisDefect::None, c, slip);
+        INFO("slip " << static_cast<int>(slip) << ": techniques " << c.techniques << ", worst relative error " << c.worst);
+        CHECK(c.worst > 1e-2);
+    }
 }

@@ -44,12 +44,13 @@ TEST_CASE("vcm: converges to the path tracer's image on cornell-box and default"
 // Random paths as bdpt's MIS test draws them (random_mis_path.hpp), with a merging density eta
 // over four decades: over the connection strategies and the merges, the weights sum to 1; leaving
 // the merges out of the connections' sums (the planted defect) makes them sum to more wherever a
-// merge counted.
+// merge counted. At a medium vertex there is no merge (weight 0, absent from the sums): a merge
+// there weighted as if it were a technique would make the sums exceed 1.
 TEST_CASE("vcm: MIS weights sum to 1 over connections and merges of random paths, and a planted wrong weight does not",
           "[vcm][mis]") {
     std::mt19937 rng(4242);
     std::uniform_real_distribution<float> decade(-2.0f, 2.0f);
-    int planted_over = 0, tested = 0, merged = 0;
+    int planted_over = 0, tested = 0, merged = 0, medium_over = 0;
     for (int n = 0; n < 2000; ++n) {
         const MisPath p = random_mis_path(rng);
         const float eta = std::pow(10.0f, decade(rng));
@@ -73,10 +74,19 @@ TEST_CASE("vcm: MIS weights sum to 1 over connections and merges of random paths
         CHECK(sum == Approx(1.0).epsilon(1e-5));
         merged += merges > 1e-3 ? 1 : 0;
         if (merges > 1e-3 && merges < 1.0 - 1e-3) planted_over += planted > 1.0 + 1e-4 ? 1 : 0;
+        for (int i = 1; i < p.k; ++i) {
+            if (!p.medium(i)) continue;
+            CHECK(mis_weight(p, i, true, eta) == 0.0f);
+            MisPath as_surface = p;  // the merge's own weight as if it were one of the techniques
+            as_surface.medium(i) = 0;
+            const float extra = mis_weight(as_surface, i, true, eta);
+            if (extra > 1e-3f) medium_over += sum + extra > 1.0 + 1e-4 ? 1 : 0;
+        }
     }
     CHECK(tested > 1000);
     CHECK(merged > 300);
     CHECK(planted_over > 200);
+    CHECK(medium_over > 100);
 }
 
 TEST_CASE("vcm: the radius follows r_i = r_1 i^((alpha - 1) / 2), r_1 half a pixel's footprint or film.vcm_radius",
