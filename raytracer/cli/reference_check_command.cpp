@@ -60,6 +60,7 @@ struct ReferenceCheckArgs {
     int batches = 0;
     int mask_spp = 16;
     std::vector<std::string> max_depths;  // "N" for every scene or "NAME=N" for one; default the scene's
+    std::vector<std::string> integrators;  // "KIND" for every scene or "NAME=KIND" for one; default the scene's
     int threads = 0;
     std::uint64_t seed = 1;
     std::string filter = "box";
@@ -74,6 +75,7 @@ struct SceneInput {
     fs::path scene, reference;
     int factor = 1;
     int max_depth = 0;  // 0: the scene's
+    std::optional<IntegratorKind> integrator;  // none: the scene's
     std::vector<NamedFile> reads;  // every file its check reads: the scene and its inputs, the reference
 };
 
@@ -119,6 +121,24 @@ int depth_for(const std::vector<std::string>& settings, const std::string& scene
         else if (d.substr(0, eq) == scene) mine = int(v);
     }
     return mine > 0 ? mine : all;
+}
+
+// The --integrator settings for `scene`: NAME=KIND for it, else KIND for every scene, else none
+// (the scene file's own).
+std::optional<IntegratorKind> integrator_for(const std::vector<std::string>& settings, const std::string& scene) {
+    std::optional<IntegratorKind> all, mine;
+    for (const std::string& d : settings) {
+        const std::size_t eq = d.find('=');
+        const std::string kind = eq == std::string::npos ? d : d.substr(eq + 1);
+        const std::optional<IntegratorKind> k = kind == "path"   ? std::optional(IntegratorKind::Path)
+                                                : kind == "bdpt" ? std::optional(IntegratorKind::Bdpt)
+                                                : kind == "vcm"  ? std::optional(IntegratorKind::Vcm)
+                                                                 : std::nullopt;
+        if (!k) throw InputError("reference-check: --integrator '" + d + "': give KIND or NAME=KIND with KIND path, bdpt or vcm");
+        if (eq == std::string::npos) all = k;
+        else if (d.substr(0, eq) == scene) mine = k;
+    }
+    return mine ? mine : all;
 }
 
 // --stand-in files, relative to the folder unless absolute.
@@ -171,6 +191,7 @@ void check_refcheck_memory(const SceneInput& s, Scene scene, int ref_w, int ref_
     scene.film.width = ref_w / s.factor;
     scene.film.height = ref_h / s.factor;
     if (s.max_depth > 0) scene.film.max_depth = s.max_depth;
+    if (s.integrator) scene.film.integrator = *s.integrator;
     const MemoryEstimate e = estimate_render_memory(scene);
     const std::uint64_t px = std::uint64_t(scene.film.width) * std::uint64_t(scene.film.height);
     const std::uint64_t per_px = std::uint64_t(a.batches) * 12 + 2 * 24 + 2 * 12 + 2 * 12 + 1 + 3 * (12 + 3);
@@ -202,6 +223,10 @@ std::vector<SceneInput> refcheck_inputs(const ReferenceCheckArgs& a) {
         if (const std::size_t eq = d.find('='); eq != std::string::npos &&
                                                 std::find(names.begin(), names.end(), d.substr(0, eq)) == names.end())
             throw InputError("reference-check: --max-depth '" + d + "': no scene '" + d.substr(0, eq) + "' is checked");
+    for (const std::string& d : a.integrators)
+        if (const std::size_t eq = d.find('='); eq != std::string::npos &&
+                                                std::find(names.begin(), names.end(), d.substr(0, eq)) == names.end())
+            throw InputError("reference-check: --integrator '" + d + "': no scene '" + d.substr(0, eq) + "' is checked");
     for (const fs::path& p : stand_in_paths(a))
         if (const std::string problem = file_kind_problem(p); !problem.empty())
             throw InputError("reference-check: --stand-in '" + p.string() + "' " + problem);
@@ -222,6 +247,7 @@ std::vector<SceneInput> refcheck_inputs(const ReferenceCheckArgs& a) {
                              (a.width > 0 ? "--width " + std::to_string(a.width) : "--downsample " + std::to_string(a.downsample)) +
                              " does not divide into whole pixels (the box filter averages whole source pixels)");
         s.max_depth = depth_for(a.max_depths, n);
+        s.integrator = integrator_for(a.integrators, n);
         std::vector<std::string> warnings;
         const Scene scene = load_pbrt_scene(s.scene, false, warnings);  // a scene that cannot be read fails now, not after hours
         check_refcheck_memory(s, scene, ref.width, ref.height, a);
@@ -306,6 +332,7 @@ SceneRow check_scene(const SceneInput& in, const ReferenceCheckArgs& a, const fs
     // downsampling averages the reference over (the reference's own filter, 1/factor of our
     // pixel, blurs little next to it).
     if (a.filter == "box") scene.film.filter = FilterSpec{};
+    if (in.integrator) scene.film.integrator = *in.integrator;
     const int depth = in.max_depth > 0 ? in.max_depth : scene.film.max_depth;
     const BatchedRender ours = refcheck_batched(scene, depth, a);
 
@@ -362,6 +389,7 @@ std::string command_line(const ReferenceCheckArgs& a) {
     c += a.width > 0 ? " --width " + std::to_string(a.width) : " --downsample " + std::to_string(a.downsample);
     c += " --spp " + std::to_string(a.spp) + " --batches " + std::to_string(a.batches) + " --mask-spp " + std::to_string(a.mask_spp) + " --seed " + std::to_string(a.seed);
     for (const std::string& d : a.max_depths) c += " --max-depth " + d;
+    for (const std::string& d : a.integrators) c += " --integrator " + d;
     if (a.filter != "box") c += " --filter " + a.filter;
     for (const std::string& s : a.stand_ins) c += " --stand-in " + s;
     if (!a.table.empty()) c += " --table " + a.table;
@@ -508,6 +536,9 @@ void add_reference_check_command(CLI::App& app, int& exit_code) {
     cmd->add_option("--max-depth", args->max_depths,
                     "Path vertices after the camera, N for every scene or NAME=N for one (repeatable; default: the "
                     "scene's), e.g. to render with the depth the reference was rendered with");
+    cmd->add_option("--integrator", args->integrators,
+                    "path, bdpt or vcm, KIND for every scene or NAME=KIND for one (repeatable; default: the scene's), "
+                    "e.g. the method that converges in the check's time where the scene file names another");
     cmd->add_option("--threads", args->threads, "Worker threads, 0 = all cores")->capture_default_str()->check(CLI::Range(0, 1024));
     cmd->add_option("--seed", args->seed, "Random seed")->capture_default_str();
     cmd->add_option("--filter", args->filter, "Pixel filter of our render: box (matches the box downsampling) or scene")

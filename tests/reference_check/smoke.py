@@ -3,7 +3,7 @@
 ../shared/bitterli at 1/8 of the reference's size and 64 spp, a few seconds. Asserts what a broken
 importer, renderer or comparison would fail: the image mean within 3 % of Tungsten's per channel,
 at least 90 % of 8x8 blocks within |z| < 5, the table and the 3-panel picture written; and that
-bad input exits 2 writing nothing. Without ../shared it says so and exits with ctest's skip code
+bad input (a folder, a downsample, a batch count, an --integrator setting) exits 2 writing nothing. Without ../shared it says so and exits with ctest's skip code
 (77), as the tests reading the shared meshes do (with CI=true it fails instead)."""
 import os
 import re
@@ -36,6 +36,12 @@ with tempfile.TemporaryDirectory() as tmp:
                           "--spp", "30", "--batches", "16", "--table", table], capture_output=True, text=True)
     assert bad.returncode == 2 and "not a multiple of --batches 16" in bad.stderr, bad
     assert os.listdir(tmp) == [], os.listdir(tmp)
+    for setting, says in (("cornell-box=photons", "give KIND or NAME=KIND with KIND path, bdpt or vcm"),
+                          ("nosuch=bdpt", "no scene 'nosuch' is checked")):
+        bad = subprocess.run([binary, "reference-check", folder, "--scene", "cornell-box", "--downsample", "8",
+                              "--integrator", setting, "--table", table], capture_output=True, text=True)
+        assert bad.returncode == 2 and bad.stderr.count("\n") == 1 and says in bad.stderr, bad
+        assert os.listdir(tmp) == [], os.listdir(tmp)
 
     run = subprocess.run([binary, "reference-check", folder, "--scene", "cornell-box", "--downsample", "8",
                           "--spp", "64", "--threads", "2", "--table", table,
