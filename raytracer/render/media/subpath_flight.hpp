@@ -31,7 +31,7 @@
 #include "raytracer/accel/accel.hpp"
 #include "raytracer/render/media/scene_media.hpp"
 #include "raytracer/render/media/tracking.hpp"
-#include "raytracer/render/random.hpp"
+#include "raytracer/render/sampling/random.hpp"
 
 namespace sweeptrace {
 
