@@ -172,8 +172,19 @@ glm::vec3 BdptIntegrator::connections(Subpaths& sp, const LightVertices& light, 
 
 // The walk's vertices that a later technique can end at (light_vertices.hpp).
 void BdptIntegrator::store_light_vertices(const Subpaths& sp, LightVertices& out) const {
-    for (std::size_t b = 1; b < sp.light.size(); ++b)
-        if (sp.light[b].in_medium() || !is_delta(sp.light[b].mat(scene_))) out.push(sp.light[b], scene_);
+    for (std::size_t b = 1; b < sp.light.size(); ++b) {
+        const PathVertex& v = sp.light[b];
+        if (!media_.active()) {
+            if (!is_delta(v.mat(scene_))) out.push(v);
+        } else if (v.in_medium()) {
+            out.push(v, v.medium, v.medium);
+        } else if (!is_delta(v.mat(scene_))) {
+            // A boundary's two media; any other surface has the medium its subpath arrived in on both.
+            const MediumInterface& mi = scene_.objects[v.hit.object].media;
+            const bool boundary = mi.transition();
+            out.push(v, boundary ? mi.outside : v.medium, boundary ? mi.inside : v.medium);
+        }
+    }
 }
 
 void BdptIntegrator::light_subpath(float time, PixelSampler& sampler, std::uint64_t& rays, float merge_eta,

@@ -10,7 +10,7 @@ void LightVertices::clear() {
     textured_.clear();
 }
 
-void LightVertices::push(const PathVertex& v, const Scene& scene) {
+void LightVertices::push(const PathVertex& v, std::int32_t front, std::int32_t back) {
     photons_.push_back({v.hit.point, v.wo, v.beta, v.hit.normal, v.light_mis});
     const auto side = [](std::int32_t m) { return static_cast<std::int16_t>(m); };  // media are < 2^15 (scene/medium.hpp)
     if (v.in_medium()) {
@@ -22,11 +22,7 @@ void LightVertices::push(const PathVertex& v, const Scene& scene) {
         material = kTextured | static_cast<std::uint32_t>(textured_.size());
         textured_.push_back(v.textured);
     }
-    // A boundary's two media; any other surface has the medium its subpath arrived in on both.
-    const MediumInterface& mi = scene.objects[v.hit.object].media;
-    const bool boundary = mi.transition();
-    surfaces_.push_back({v.hit.shading_normal, v.hit.point_error, material, side(boundary ? mi.outside : v.medium),
-                         side(boundary ? mi.inside : v.medium)});
+    surfaces_.push_back({v.hit.shading_normal, v.hit.point_error, material, side(front), side(back)});
 }
 
 std::int32_t LightVertices::medium_toward(std::size_t i, const glm::vec3& dir) const {

@@ -38,8 +38,8 @@ public:
 
     void clear();
     // light[b] (b >= 1, a medium vertex or a surface vertex whose material is not a delta one),
-    // its MIS quantities set.
-    void push(const PathVertex& v, const Scene& scene);
+    // its MIS quantities set; a surface's media on its normal's side and the other (-1 vacuum).
+    void push(const PathVertex& v, std::int32_t front = -1, std::int32_t back = -1);
     // Appends another store's vertices (same scene).
     void append(const LightVertices& other);
     std::size_t size() const { return photons_.size(); }
