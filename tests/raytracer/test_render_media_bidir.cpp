@@ -75,7 +75,7 @@ TEST_CASE("media bidir: bdpt and vcm agree with the path tracer on a grid medium
     check_bidirectional_agree_with_path(scene, *accel, 512, 128, 4);
 }
 
-TEST_CASE("media bidir: the BVH and Embree agree under bdpt; any thread count and a farm split are bit-identical",
+TEST_CASE("media bidir: the BVH and Embree agree under bdpt, and any thread count and a farm split are bit-identical",
           "[media][bdpt][vcm]") {
     const Scene scene = ball(chromatic());
     const auto bvh = make_accel(AccelKind::Bvh, scene);
