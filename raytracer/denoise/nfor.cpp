@@ -81,7 +81,12 @@ Planes nfor(const NforInput& in, FilterIsa isa) {
     const Planes final_features = nl_means(feature_mean, feature_mean, feature_variance, {3, 2, 0.5f, 1.0f}, isa);
     feature_mean = feature_variance = Planes();
     const auto [color_mean, color_variance] = mean_and_variance(result_even, result_odd);
-    return std::move(collaborative_regression(color_mean, color_mean, color_variance, final_features, {3, 9, 2.0f}, {1.0f}, isa)[0]);
+    Planes result = std::move(collaborative_regression(color_mean, color_mean, color_variance, final_features, {3, 9, 2.0f}, {1.0f}, isa)[0]);
+    // Radiance is never negative, but a first-order fit across a bright edge overshoots below 0
+    // beside it (the dark surround of an emitter line, measured in docs/denoising.md). Moving a
+    // negative value to 0 brings it closer to any non-negative truth, so it only lowers the error.
+    for (float& v : result.data) v = std::max(v, 0.0f);
+    return result;
 }
 
 std::uint64_t nfor_memory_bytes(int width, int height, int feature_channels, int threads) {
