@@ -26,17 +26,17 @@
 #include "collision/finite.hpp"
 #include "raytracer/render/adaptive_sampling.hpp"
 #include "raytracer/render/camera.hpp"
-#include "raytracer/render/film_splats.hpp"
-#include "raytracer/render/guiding_sd_tree.hpp"
+#include "raytracer/render/film/film_splats.hpp"
+#include "raytracer/render/guiding/guiding_sd_tree.hpp"
 #include "raytracer/render/integrators/bdpt.hpp"
 #include "raytracer/render/integrators/path.hpp"
 #include "raytracer/render/integrators/vcm.hpp"
-#include "raytracer/render/lights.hpp"
-#include "raytracer/render/path_forensics.hpp"
+#include "raytracer/render/lights/lights.hpp"
+#include "raytracer/render/film/path_forensics.hpp"
 #include "raytracer/render/planted_defect.hpp"
 #include "raytracer/render/render_tiles.hpp"
-#include "raytracer/render/sample_features.hpp"
-#include "raytracer/render/sampler.hpp"
+#include "raytracer/render/film/sample_features.hpp"
+#include "raytracer/render/sampling/sampler.hpp"
 
 namespace sweeptrace {
 

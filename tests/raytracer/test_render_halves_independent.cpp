@@ -2,7 +2,7 @@
 // of the pixel. On a region of one true value (a diffuse floor under a sky, whose radiance is the
 // same at every point of it), independent halves e and o have E(e - o)^2 = E(e - m)^2 + E(o - m)^2,
 // so the ratio of those sums over the region is 1 within its noise. Under the sobol-halves sampler
-// (render/sampler.hpp) it is; under the plain Sobol sampler, whose even and odd samples are one
+// (render/sampling/sampler.hpp) it is; under the plain Sobol sampler, whose even and odd samples are one
 // stratified sequence, the halves' errors are anti-correlated and the ratio is well above 1; the
 // independent sampler is the control that the statistic itself is right.
 #include <cmath>
