@@ -9,8 +9,11 @@ Per scene (the Bitterli folder's scene-v4.pbrt at a quarter of its size, at the 
 Tungsten reference as docs/reference-scenes.md gives it):
   reference  REFS/NAME.exr and REFS/NAME-variance.exr (render --variance): rendered with --ref-spp
              (default 4096) and seed 1 when missing; give --refs to reuse them.
-  raw        render --aovs at each --spp (seed 2), CPU time of the render (getrusage of the child).
-  denoised   sweeptrace denoise of the raw renders at each --denoise-spp, its CPU time added.
+  raw        a plain render at each --spp (seed 2, the default Sobol sampler, no features), CPU time
+             of the render (getrusage of the child): the best the renderer does without a denoiser.
+  denoised   render --aovs at each --denoise-spp (seed 2; its sampler, sobol-halves, gives the
+             independent half buffers NFOR's error estimate needs), then sweeptrace denoise: the
+             CPU time of both.
 relMSE = mean over pixels and channels of (x - ref)^2 / (ref^2 + 0.01) (Rousselle et al.'s, as the
 NFOR paper uses it). The reference's own noise adds mean(var_ref / (ref^2 + 0.01)) to every
 relMSE ("floor" in the data); the raw spp of equal relMSE is found from the raw points by
@@ -103,20 +106,22 @@ def measure_scene(args, name, w, h, depth):
     os.makedirs(work, exist_ok=True)
     rows = []
     for spp in sorted(set(args.spp) | set(args.denoise_spp)):
-        raw = os.path.join(work, f"raw-{spp}.exr")
-        t0 = time.time()
-        cpu, _ = run([args.binary, "render"] + scene_args(args, name, w, h, depth) +
-                     ["--spp", str(spp), "--seed", "2", "--aovs", "-o", raw])
-        x = colour(raw)
-        rows.append(dict(scene=name, kind="raw", spp=spp, cpu=cpu, denoise_cpu=0.0, relmse=relmse(x, ref),
-                         flip=flip(args.binary, raw, ref_path), floor=floor))
-        print(f"{name}: raw {spp} spp, {cpu:.1f} CPU s ({time.time() - t0:.0f} s wall), relMSE {rows[-1]['relmse']:.5f}", flush=True)
+        if spp in args.spp:
+            raw = os.path.join(work, f"raw-{spp}.exr")
+            t0 = time.time()
+            cpu, _ = run([args.binary, "render"] + scene_args(args, name, w, h, depth) + ["--spp", str(spp), "--seed", "2", "-o", raw])
+            rows.append(dict(scene=name, kind="raw", spp=spp, cpu=cpu, denoise_cpu=0.0, relmse=relmse(colour(raw), ref),
+                             flip=flip(args.binary, raw, ref_path), floor=floor))
+            print(f"{name}: raw {spp} spp, {cpu:.1f} CPU s ({time.time() - t0:.0f} s wall), relMSE {rows[-1]['relmse']:.5f}", flush=True)
         if spp in args.denoise_spp:
+            features = os.path.join(work, f"features-{spp}.exr")
+            cpu, _ = run([args.binary, "render"] + scene_args(args, name, w, h, depth) +
+                         ["--spp", str(spp), "--seed", "2", "--aovs", "-o", features])
             den = os.path.join(work, f"nfor-{spp}.pfm")
-            dcpu, _ = run([args.binary, "denoise", raw, "-o", den, "--threads", str(args.threads), "--quiet"])
+            dcpu, _ = run([args.binary, "denoise", features, "-o", den, "--threads", str(args.threads), "--quiet"])
             rows.append(dict(scene=name, kind="nfor", spp=spp, cpu=cpu + dcpu, denoise_cpu=dcpu,
                              relmse=relmse(colour(den), ref), flip=flip(args.binary, den, ref_path), floor=floor))
-            print(f"{name}: NFOR {spp} spp, +{dcpu:.1f} CPU s, relMSE {rows[-1]['relmse']:.5f}", flush=True)
+            print(f"{name}: NFOR {spp} spp, {cpu:.1f} + {dcpu:.1f} CPU s, relMSE {rows[-1]['relmse']:.5f}", flush=True)
     return rows, ref
 
 
@@ -187,7 +192,7 @@ def table(rows, command, compare):
     lines = [f"Generated {time.strftime('%Y-%m-%d %H:%M UTC', time.gmtime())} by:", "```", command, "```",
              f"| scene | raw {nspp} spp relMSE / FLIP | NFOR {nspp} spp relMSE / FLIP | raw {rspp} spp relMSE / FLIP "
              f"| NFOR {nspp} <= raw {rspp} (relMSE, FLIP) | raw spp of NFOR {nspp}'s relMSE | reference floor "
-             f"| CPU s: render {nspp} + denoise / render {rspp} |",
+             f"| CPU s: render {nspp} --aovs + denoise / render {rspp} |",
              "|---|---|---|---|---|---|---|---|"]
     for name in dict.fromkeys(r["scene"] for r in rows):
         get = {(r["kind"], r["spp"]): r for r in rows if r["scene"] == name}
@@ -198,7 +203,7 @@ def table(rows, command, compare):
         ok = f"{'yes' if n32['relmse'] <= r256['relmse'] else '**no**'}, {'yes' if n32['flip'] <= r256['flip'] else '**no**'}"
         lines.append(f"| {name} | {r32['relmse']:.5f} / {r32['flip']:.4f} | {n32['relmse']:.5f} / {n32['flip']:.4f} | "
                      f"{r256['relmse']:.5f} / {r256['flip']:.4f} | {ok} | {eq:.0f} | {n32['floor']:.5f} | "
-                     f"{r32['cpu']:.1f} + {n32['denoise_cpu']:.1f} / {r256['cpu']:.1f} |")
+                     f"{n32['cpu'] - n32['denoise_cpu']:.1f} + {n32['denoise_cpu']:.1f} / {r256['cpu']:.1f} |")
     return "\n".join(lines)
 
 

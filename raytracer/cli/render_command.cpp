@@ -205,7 +205,15 @@ int run_render(const RenderArgs& a) {
     for (const std::string& w : emitters_facing_nothing(scene)) std::fprintf(stderr, "sweeptrace: warning: %s\n", escape_control(w).c_str());
     a.limits.apply(scene);
     if (a.aovs || !a.denoise.empty()) scene.film.aovs = true;
-    if (!a.sampler.empty()) scene.film.sampler = a.sampler == "independent" ? SamplerKind::Independent : SamplerKind::Sobol;
+    if (!a.sampler.empty())
+        scene.film.sampler = a.sampler == "independent"    ? SamplerKind::Independent
+                             : a.sampler == "sobol-halves" ? SamplerKind::SobolHalves
+                                                           : SamplerKind::Sobol;
+    // Half buffers are NFOR's error estimate, which takes them for independent: the scene's Sobol
+    // sampler becomes its halves form. Only --sampler sobol, said on this command line, keeps one
+    // sequence split in two (docs/aovs.md, "Independent halves").
+    else if (scene.film.aovs && scene.film.sampler == SamplerKind::Sobol)
+        scene.film.sampler = SamplerKind::SobolHalves;
     if (!a.integrator.empty())
         scene.film.integrator = a.integrator == "vcm"    ? IntegratorKind::Vcm
                                 : a.integrator == "bdpt" ? IntegratorKind::Bdpt
@@ -375,9 +383,11 @@ void add_render_command(CLI::App& app, int& exit_code) {
         ->check(CLI::IsMember({"bvh", "embree"}))
         ->capture_default_str();
     cmd->add_option("--sampler", args->sampler,
-                    "Sample numbers: sobol (Owen-scrambled Sobol, stratified) or independent (uniform random). "
-                    "Default: the scene's film.sampler, else sobol")
-        ->check(CLI::IsMember({"sobol", "independent"}));
+                    "Sample numbers: sobol (Owen-scrambled Sobol, stratified), sobol-halves (two independently scrambled "
+                    "Sobol sequences, one for the even and one for the odd samples: independent half buffers) or "
+                    "independent (uniform random). Default: the scene's film.sampler, else sobol; with --aovs or "
+                    "--denoise, a scene's sobol becomes sobol-halves (docs/aovs.md)")
+        ->check(CLI::IsMember({"sobol", "sobol-halves", "independent"}));
     cmd->add_option("--time-clock", args->time_clock,
                     "What --time counts: wall seconds, or cpu seconds of all threads (equal-time comparisons on a "
                     "shared machine)")

@@ -9,6 +9,7 @@
 #include <utility>
 #include <vector>
 
+#include "raytracer/denoise/halves_variance.hpp"
 #include "raytracer/denoise/nl_means.hpp"
 #include "raytracer/denoise/regression.hpp"
 #include "raytracer/denoise/tiles.hpp"
@@ -17,6 +18,7 @@ namespace sweeptrace::denoise {
 namespace {
 
 const std::vector<float> kCandidateK{0.5f, 1.0f};
+constexpr int kRegressionRadius = 9;  // windows of 19x19 pixels
 
 // The mean of two buffers and, as its variance of the mean, a quarter of their squared
 // difference: the two-sample estimate for two independent estimates of the same value.
@@ -33,19 +35,26 @@ std::pair<Planes, Planes> mean_and_variance(const Planes& a, const Planes& b) {
 }  // namespace
 
 Planes nfor(const NforInput& in, FilterIsa isa) {
+    // 0. The variances at the halves' own scale (halves_variance.hpp), over the regression's
+    // window: the renderer's sample variance overstates a stratified half's.
     const Buffers& color = in.color;
     const Buffers& features = in.features;
+    const Planes color_var = halves_variance(color, kRegressionRadius);
 
     // 1. Feature prefiltering: each half guided by the other.
-    const NlMeansParams prefilter{3, 5, 0.5f, 2.0f};
-    Planes features_even = nl_means(features.even, features.odd, features.variance, prefilter, isa);
-    Planes features_odd = nl_means(features.odd, features.even, features.variance, prefilter, isa);
+    Planes features_even, features_odd;
+    {
+        const Planes features_var = halves_variance(features, kRegressionRadius);
+        const NlMeansParams prefilter{3, 5, 0.5f, 2.0f};
+        features_even = nl_means(features.even, features.odd, features_var, prefilter, isa);
+        features_odd = nl_means(features.odd, features.even, features_var, prefilter, isa);
+    }
 
     // 2. Each half's colour regressed on the other half's features, weighted on the other half's
     // colour, per candidate bandwidth; 3. its error estimated from the halves.
-    const RegressionParams regression{3, 9, 2.0f};
-    std::vector<Planes> candidate_even = collaborative_regression(color.even, color.odd, color.variance, features_odd, regression, kCandidateK, isa);
-    std::vector<Planes> candidate_odd = collaborative_regression(color.odd, color.even, color.variance, features_even, regression, kCandidateK, isa);
+    const RegressionParams regression{3, kRegressionRadius, 2.0f};
+    std::vector<Planes> candidate_even = collaborative_regression(color.even, color.odd, color_var, features_odd, regression, kCandidateK, isa);
+    std::vector<Planes> candidate_odd = collaborative_regression(color.odd, color.even, color_var, features_even, regression, kCandidateK, isa);
     Planes error[2];
     for (int k = 0; k < 2; ++k) {
         // The even half's filtered value against the odd half's noisy one: the squared difference
@@ -53,17 +62,17 @@ Planes nfor(const NforInput& in, FilterIsa isa) {
         // same the other way; the two filtered halves' own spread is taken out too.
         Planes noisy_error(color.mean.width, color.mean.height, 3);
         for (std::size_t i = 0; i < noisy_error.data.size(); ++i) {
-            const float v2 = 2.0f * color.variance.data[i];
+            const float v2 = 2.0f * color_var.data[i];
             const float de = color.odd.data[i] - candidate_even[k].data[i], dodd = color.even.data[i] - candidate_odd[k].data[i];
             const float spread = candidate_odd[k].data[i] - candidate_even[k].data[i];
             noisy_error.data[i] = 0.5f * ((de * de - v2) + (dodd * dodd - v2)) - 0.25f * spread * spread;
         }
-        error[k] = nl_means(noisy_error, color.mean, color.variance, {1, 9, 1.0f, 1.0f}, isa);
+        error[k] = nl_means(noisy_error, color.mean, color_var, {1, 9, 1.0f, 1.0f}, isa);
     }
     // Selection: 1 where the wider candidate's error is smaller, smoothed like the error maps.
     Planes select(color.mean.width, color.mean.height, 3);
     for (std::size_t i = 0; i < select.data.size(); ++i) select.data[i] = error[0].data[i] < error[1].data[i] ? 0.0f : 1.0f;
-    select = nl_means(select, color.mean, color.variance, {1, 9, 1.0f, 1.0f}, isa);
+    select = nl_means(select, color.mean, color_var, {1, 9, 1.0f, 1.0f}, isa);
     Planes result_even(color.mean.width, color.mean.height, 3), result_odd = result_even;
     for (std::size_t i = 0; i < select.data.size(); ++i) {
         const float s = select.data[i];
@@ -81,7 +90,12 @@ Planes nfor(const NforInput& in, FilterIsa isa) {
     const Planes final_features = nl_means(feature_mean, feature_mean, feature_variance, {3, 2, 0.5f, 1.0f}, isa);
     feature_mean = feature_variance = Planes();
     const auto [color_mean, color_variance] = mean_and_variance(result_even, result_odd);
-    return std::move(collaborative_regression(color_mean, color_mean, color_variance, final_features, {3, 9, 2.0f}, {1.0f}, isa)[0]);
+    Planes result = std::move(collaborative_regression(color_mean, color_mean, color_variance, final_features, {3, kRegressionRadius, 2.0f}, {1.0f}, isa)[0]);
+    // Radiance is never negative, but a first-order fit across a bright edge overshoots below 0
+    // beside it (the dark surround of an emitter line, measured in docs/denoising.md). Moving a
+    // negative value to 0 brings it closer to any non-negative truth, so it only lowers the error.
+    for (float& v : result.data) v = std::max(v, 0.0f);
+    return result;
 }
 
 std::uint64_t nfor_memory_bytes(int width, int height, int feature_channels, int threads) {
@@ -89,9 +103,11 @@ std::uint64_t nfor_memory_bytes(int width, int height, int feature_channels, int
     // regressions): the prefiltered features of both halves (2m), the even half's two candidates
     // (6), and the regression's two results and its tiles' accumulation buffers (per bandwidth
     // 4 channels over tiles grown by R = 9 on each side: (50/32)^2 < 2.5, so 2 x (3 + 10)); the
-    // error maps then hold 12 + 6 + 6, the second pass at most 4m + 12. 4m + 40 bounds them all.
+    // error maps then hold 12 + 6 + 6, the second pass at most 4m + 12. 4m + 40 bounds them all,
+    // and the colour's variance at the halves' scale (3) is alive throughout. Before them, the
+    // features' (m) and halves_variance's five double sums (10) beside the prefilter's 2m.
     const std::uint64_t pixels = std::uint64_t(width) * std::uint64_t(height);
-    const std::uint64_t channels = 4 * std::uint64_t(feature_channels) + 40;
+    const std::uint64_t channels = 4 * std::uint64_t(feature_channels) + 43;
     // Per thread: a regression tile's distances and weights (2 x 19^2 offsets x 32^2 centres) and
     // its copy of the features and colour over the tile grown by 9 ((m + 3) x 50^2), or an
     // NL-means tile's sums (2 x channels x 32^2), with the patch scratch and a row's normal

@@ -90,8 +90,9 @@ Film read_film(const Node& node) {
     if (auto sampler = node.find("sampler")) {
         const std::string name = sampler->string();
         if (name == "sobol") film.sampler = SamplerKind::Sobol;
+        else if (name == "sobol-halves") film.sampler = SamplerKind::SobolHalves;
         else if (name == "independent") film.sampler = SamplerKind::Independent;
-        else sampler->fail("unknown sampler \"" + name + "\" (known: sobol, independent)");
+        else sampler->fail("unknown sampler \"" + name + "\" (known: sobol, sobol-halves, independent)");
     }
     if (auto guiding = node.find("guiding")) film.guiding = guiding->boolean();
     if (auto aovs = node.find("aovs")) film.aovs = aovs->boolean();

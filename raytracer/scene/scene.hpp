@@ -43,8 +43,11 @@ struct Camera {
     std::int32_t medium = -1;
 };
 
-// Where a camera sample's numbers come from (render/sampling/sampler.hpp).
-enum class SamplerKind { Independent, Sobol };
+// Where a camera sample's numbers come from (render/sampling/sampler.hpp). SobolHalves: the Sobol
+// construction run as two independently scrambled sequences, one for the even and one for the
+// odd sample indices, so that the two half buffers of render --aovs are independent estimates
+// (docs/aovs.md, "Independent halves").
+enum class SamplerKind { Independent, Sobol, SobolHalves };
 
 // Which light transport method renders the film (render/integrators/): the unidirectional path
 // tracer (the default), bidirectional path tracing (Veach 1997, ch. 10), or vertex connection and

@@ -92,6 +92,19 @@ TEST_CASE("nfor: a colour linear in a per-pixel texture is recovered from its no
     CHECK(blurred > raw);
 }
 
+TEST_CASE("nfor: the result is never negative, where the noisy input is", "[denoise]") {
+    // A black image with noise about 0: half its noisy values are negative, and so would be about
+    // half of any unbiased filter's output.
+    const SyntheticImage s = synthetic_image(
+        40, 30, 11, 0.05f, [](int, int, int f) { return f < 3 ? 0.5f : f < 6 ? (f == 5 ? 1.0f : 0.0f) : 2.0f; },
+        [](int, int, int, const float*) { return 0.0f; });
+    int negative_input = 0;
+    for (float v : s.input.color.mean.data) negative_input += v < 0.0f;
+    CHECK(negative_input > int(s.input.color.mean.data.size()) / 4);
+    const denoise::Planes out = denoise::nfor(s.input, denoise::FilterIsa::Baseline);
+    for (float v : out.data) REQUIRE(v >= 0.0f);
+}
+
 TEST_CASE("nfor: 1 and 2 threads give the same bits", "[denoise]") {
     const SyntheticImage s = textured_image(70, 40, 5, 0.2f);  // 3x2 tiles, one partial
     const denoise::Planes one = run_nfor(s.input, 1), two = run_nfor(s.input, 2);

@@ -1,5 +1,6 @@
 // `render --aovs` as a user runs it: the EXR holds the contract's channels (named as pbrt-v4's
-// gbuffer film names them) and the plain render's colour bit for bit; farm parts with features
+// gbuffer film names them) and, bit for bit, the colour of a plain render with the sampler --aovs
+// defaults to (sobol-halves; --sampler sobol, said, is kept); farm parts with features
 // merge into the same file byte for byte (uniform and adaptive, split at odd sample indices);
 // PNG and PFM outputs get their side files; the refusals exit 2 with one line and write nothing.
 #include <filesystem>
@@ -45,7 +46,8 @@ TEST_CASE("aovs cli: the EXR holds the contract's channels and the plain render'
     test::TempDir dir;
     write_aov_scene(dir);
     REQUIRE(test::run_sweeptrace(dir.path(), "render aovs.json --quiet --aovs -o f.exr").exit_code == 0);
-    REQUIRE(test::run_sweeptrace(dir.path(), "render aovs.json --quiet -o plain.exr --variance var.exr").exit_code == 0);
+    REQUIRE(test::run_sweeptrace(dir.path(), "render aovs.json --quiet --sampler sobol-halves -o plain.exr --variance var.exr")
+                .exit_code == 0);
     const ExrChannels f = read_exr_channels(dir.path() / "f.exr");
     CHECK(f.width == 20);
     CHECK(f.height == 14);
@@ -62,7 +64,7 @@ TEST_CASE("aovs cli: the EXR holds the contract's channels and the plain render'
         CHECK(f.channels.count(name) == 1);
     }
     CHECK(f.channels.size() == expected.size());
-    // R, G, B: exactly what -o plain.exr writes; Variance: what --variance writes, up to the
+    // R, G, B: exactly what -o plain.exr (the same sampler) writes; Variance: what --variance writes, up to the
     // rounding of its double sum of squares (the feature file's are exact integer sums).
     const Image plain = read_image(dir.path() / "plain.exr");
     const Image var = read_image(dir.path() / "var.exr");
@@ -78,6 +80,22 @@ TEST_CASE("aovs cli: the EXR holds the contract's channels and the plain render'
     const std::size_t centre_of_diffuse = 7 * 20 + 6;
     CHECK(f.channels.at("P.Z")[centre_of_diffuse] > 3.0f);
     CHECK(f.channels.at("Ns.Z")[centre_of_diffuse] > 0.5f);
+}
+
+TEST_CASE("aovs cli: --aovs renders with sobol-halves unless --sampler sobol is said", "[cli][aovs][sampler]") {
+    test::TempDir dir;
+    write_aov_scene(dir);
+    REQUIRE(test::run_sweeptrace(dir.path(), "render aovs.json --quiet --aovs -o halves.exr").exit_code == 0);
+    REQUIRE(test::run_sweeptrace(dir.path(), "render aovs.json --quiet --aovs --sampler sobol -o split.exr").exit_code == 0);
+    REQUIRE(test::run_sweeptrace(dir.path(), "render aovs.json --quiet -o sobol.exr").exit_code == 0);
+    const ExrChannels halves = read_exr_channels(dir.path() / "halves.exr"), split = read_exr_channels(dir.path() / "split.exr");
+    const Image sobol = read_image(dir.path() / "sobol.exr");
+    bool differs = false;
+    for (std::size_t i = 0; i < sobol.pixels.size(); ++i) {
+        CHECK(split.channels.at("R")[i] == sobol.pixels[i].x);
+        differs = differs || halves.channels.at("R")[i] != sobol.pixels[i].x;
+    }
+    CHECK(differs);  // other numbers: the default under --aovs is not the plain render's sampler
 }
 
 TEST_CASE("aovs cli: farm parts with features merge into the whole render's EXR byte for byte", "[cli][aovs][farm]") {

@@ -167,6 +167,32 @@ TEST_CASE("sampler: the first 2^k samples of every 2D slot of a pixel are a (0, 
     CHECK_FALSE(is_0mk2_net(sampler_points(SamplerKind::Independent, 3, 0, 0, 256), 8));
 }
 
+TEST_CASE("sampler: under sobol-halves the even samples of a pixel are a net, the odd ones another", "[render][sampler]") {
+    const auto half_points = [](std::uint64_t pixel, int dim, int half, int n) {
+        std::vector<Point> pts;
+        for (int i = 0; i < n; ++i) {
+            const glm::vec2 u = PixelSampler(SamplerKind::SobolHalves, 3, pixel, std::uint64_t(2 * i + half)).get2d(dim);
+            pts.push_back({u.x, u.y});
+        }
+        return pts;
+    };
+    for (int k : {2, 5, 8}) {
+        for (std::uint64_t pixel : {0ull, 12345ull}) {
+            for (int dim : slots_2d()) {
+                INFO("k " << k << ", pixel " << pixel << ", dim " << dim);
+                const std::vector<Point> even = half_points(pixel, dim, 0, 1 << k), odd = half_points(pixel, dim, 1, 1 << k);
+                REQUIRE(is_0mk2_net(even, k));
+                REQUIRE(is_0mk2_net(odd, k));
+                // Two sequences of their own: together they are no (0, k + 1, 2)-net, as the
+                // first 2^(k+1) samples of the plain Sobol sampler are.
+                std::vector<Point> both = even;
+                both.insert(both.end(), odd.begin(), odd.end());
+                CHECK_FALSE(is_0mk2_net(both, k + 1));
+            }
+        }
+    }
+}
+
 TEST_CASE("sampler: star discrepancy of 256 Sobol points is far below random points'", "[render][sampler]") {
     // Random points: E[D*] ~ 1/sqrt(N) (about 0.06 at N = 256); a (0, m, 2)-net in base 2 has
     // N D* <= m/2 + 3/2 (Niederreiter 1992, Theorem 4.5 with b = 2, s = 2, t = 0): 5.5/256 =

@@ -1,6 +1,6 @@
 // The renderer's samples are addressed by (seed, pixel, sample index): the image is the in-order
 // mean of per-sample radiances that can be computed in any order and any split of the sample
-// range (what a render farm splitting [0, spp) relies on), for both samplers. And the scene's
+// range (what a render farm splitting [0, spp) relies on), for every sampler. And the scene's
 // film.sampler key.
 #include <catch2/catch.hpp>
 
@@ -37,7 +37,7 @@ glm::vec3 one_sample(const Scene& scene, const PathIntegrator& integrator, const
 TEST_CASE("render: per-sample radiance is the same in any order and split of the sample range", "[render][determinism]") {
     const Scene scene = test::two_light_scene(19, 13);
     const test::DoublePrecisionAccel accel(scene);
-    for (SamplerKind kind : {SamplerKind::Sobol, SamplerKind::Independent}) {
+    for (SamplerKind kind : {SamplerKind::Sobol, SamplerKind::SobolHalves, SamplerKind::Independent}) {
         RenderOptions o;
         o.spp = 12;
         o.seed = 5;
@@ -77,12 +77,14 @@ TEST_CASE("scene: film.sampler selects the sampler, sobol by default", "[scene][
           SamplerKind::Independent);
     CHECK(load_scene(dir.write("c.json", text(R"({ "width": 4, "height": 4, "sampler": "sobol" })"))).film.sampler ==
           SamplerKind::Sobol);
+    CHECK(load_scene(dir.write("h.json", text(R"({ "width": 4, "height": 4, "sampler": "sobol-halves" })"))).film.sampler ==
+          SamplerKind::SobolHalves);
     const auto bad = dir.write("d.json", text(R"({ "width": 4, "height": 4, "sampler": "halton" })"));
     try {
         load_scene(bad);
         FAIL("an unknown sampler loaded");
     } catch (const InputError& e) {
         CHECK_THAT(e.what(), Catch::Contains("d.json") && Catch::Contains("film.sampler") &&
-                                 Catch::Contains("unknown sampler \"halton\"") && Catch::Contains("sobol, independent"));
+                                 Catch::Contains("unknown sampler \"halton\"") && Catch::Contains("sobol, sobol-halves, independent"));
     }
 }

@@ -13,6 +13,14 @@
 // the shipped scenes' max_depth (8-10) never reaches it. Cost: about 10 ns of CPU per 2D slot
 // (three hash permutations), against ~2 ns for a PCG pair; measured in docs/sampling.md as the
 // CPU time of whole renders.
+// SamplerKind::SobolHalves: two Sobol samplers of the kind above, with independent seeds, one for
+// the even sample indices and one for the odd, each taking index i >> 1. The even samples of a
+// pixel are then a shuffled scrambled (0, 2)-sequence of their own, and so are the odd ones: each
+// half buffer of render --aovs is a stratified estimate, and the two are independent, which
+// NFOR's error estimate assumes (docs/aovs.md). Under plain Sobol the halves are the even and odd
+// points of one sequence, stratified against each other, so their errors are anti-correlated.
+// The price: a pixel's 2n samples are two n-point nets, not one 2n-point net (docs/aovs.md
+// measures it).
 // SamplerKind::Independent: the per-sample PCG32 stream of random.hpp, consumed in call order
 // (dimensions ignored): exactly the renderer's samples before the Sobol sampler existed.
 // Two streams per (seed, pixel, sample): the camera sample's, and vcm's light subpath's
@@ -65,9 +73,9 @@ public:
     PixelSampler(SamplerKind kind, std::uint64_t seed, std::uint64_t pixel, std::uint64_t sample,
                  SamplerStream stream = SamplerStream::Camera)
         : kind_(kind),
-          key_(mix64(mix64(seed ^ 0x243f6a8885a308d3ull) ^ pixel)),
-          sample_(sample),
-          reversed_sample_(reverse_bits32(static_cast<std::uint32_t>(sample))) {
+          key_(pixel_key(kind, seed, pixel, sample)),
+          sample_(kind == SamplerKind::SobolHalves ? sample >> 1 : sample),
+          reversed_sample_(reverse_bits32(static_cast<std::uint32_t>(sample_))) {
         if (kind == SamplerKind::Independent) rng_ = Rng(seed, pixel, sample, static_cast<std::uint64_t>(stream));
     }
 
@@ -102,6 +110,13 @@ public:
 private:
     static constexpr int kFirstHashed = sample_dim::bounce(sample_dim::kSobolBounces, 0);
 
+    // The seed of every slot's scramble and shuffle in this pixel; under SobolHalves, of this
+    // pixel's half (sample & 1): two hashes of the pixel's key, unrelated to each other.
+    static std::uint64_t pixel_key(SamplerKind kind, std::uint64_t seed, std::uint64_t pixel, std::uint64_t sample) {
+        const std::uint64_t key = mix64(mix64(seed ^ 0x243f6a8885a308d3ull) ^ pixel);
+        return kind == SamplerKind::SobolHalves ? mix64(key + 1 + (sample & 1)) : key;
+    }
+
     struct SlotSeeds {
         std::uint32_t index;  // the shuffled sample index
         std::uint32_t x, y;   // scramble seeds of the slot's two coordinates
@@ -124,8 +139,8 @@ private:
     SamplerKind kind_;
     Rng rng_;  // Independent only
     std::uint64_t key_;
-    std::uint64_t sample_;
-    std::uint32_t reversed_sample_;  // bit-reversed sample index mod 2^32, for the shuffle
+    std::uint64_t sample_;           // the index in this pixel's sequence (SobolHalves: in its half's)
+    std::uint32_t reversed_sample_;  // bit-reversed sample_ mod 2^32, for the shuffle
 };
 
 }  // namespace sweeptrace

@@ -1,0 +1,54 @@
+#include "raytracer/denoise/halves_variance.hpp"
+
+#include <algorithm>
+#include <vector>
+
+namespace sweeptrace::denoise {
+namespace {
+
+// Sums of `values` (one channel, width x height) over the clipped (2r + 1)^2 window of every
+// pixel: along each row, then along each column, each sum taken afresh (no running sum whose
+// subtractions would leave rounding behind beside large values: a window of zeros sums to 0).
+std::vector<double> window_sums(const std::vector<double>& values, int width, int height, int r) {
+    std::vector<double> rows(values.size()), out(values.size());
+    const auto at = [width](int x, int y) { return std::size_t(y) * std::size_t(width) + std::size_t(x); };
+    for (int y = 0; y < height; ++y)
+        for (int x = 0; x < width; ++x) {
+            double sum = 0.0;
+            for (int xx = std::max(0, x - r); xx <= std::min(width - 1, x + r); ++xx) sum += values[at(xx, y)];
+            rows[at(x, y)] = sum;
+        }
+    for (int y = 0; y < height; ++y)
+        for (int x = 0; x < width; ++x) {
+            double sum = 0.0;
+            for (int yy = std::max(0, y - r); yy <= std::min(height - 1, y + r); ++yy) sum += rows[at(x, yy)];
+            out[at(x, y)] = sum;
+        }
+    return out;
+}
+
+}  // namespace
+
+Planes halves_variance(const Buffers& buffers, int radius) {
+    Planes out = buffers.variance;
+    const std::size_t n = out.pixels();
+    std::vector<double> spread(n), variance(n);
+    for (int c = 0; c < out.channels; ++c) {
+        const float* even = buffers.even.channel(c);
+        const float* odd = buffers.odd.channel(c);
+        const float* var = buffers.variance.channel(c);
+        for (std::size_t i = 0; i < n; ++i) {
+            const double d = double(even[i]) - double(odd[i]);
+            spread[i] = 0.25 * d * d;
+            variance[i] = var[i];
+        }
+        const std::vector<double> spread_sum = window_sums(spread, out.width, out.height, radius);
+        const std::vector<double> variance_sum = window_sums(variance, out.width, out.height, radius);
+        float* dst = out.channel(c);
+        for (std::size_t i = 0; i < n; ++i)
+            if (variance_sum[i] > 0.0) dst[i] = float(double(var[i]) * spread_sum[i] / variance_sum[i]);
+    }
+    return out;
+}
+
+}  // namespace sweeptrace::denoise
