@@ -45,9 +45,9 @@ TEST_CASE("pbrt media: MakeNamedMedium, MediumInterface and the interface materi
 
 TEST_CASE("pbrt media: an unsupported medium is warned with what is lost and is vacuum where named", "[pbrt][media]") {
     const TempDir dir;
-    const auto c = convert_text(dir, world_with("MakeNamedMedium \"cloud\" \"string type\" \"nanovdb\" \"string filename\" \"c.nvdb\"\n"
+    const auto c = convert_text(dir, world_with("MakeNamedMedium \"cloud\" \"string type\" \"cloud\" \"float density\" 2\n"
                                                 "MediumInterface \"cloud\" \"\"\nShape \"sphere\""));
-    CHECK(has_warning(c.warnings, "MakeNamedMedium \"cloud\": medium type \"nanovdb\" is not supported"));
+    CHECK(has_warning(c.warnings, "MakeNamedMedium \"cloud\": medium type \"cloud\" is not supported"));
     CHECK_FALSE(c.doc.contains("media"));
     CHECK_FALSE(c.doc["objects"][0].contains("inside"));
 }

@@ -31,7 +31,7 @@ std::array<glm::vec3, 8> probe_directions() {
 std::string medium_text(const Scene& scene, std::int32_t m) {
     if (m < 0) return "vacuum";
     // Appended piece by piece: GCC 12 warns (-Wrestrict, falsely) on "\"" + name + "\"" here.
-    std::string s = "medium \"";
+    std::string s = "\"";
     s += excerpt(scene.media[static_cast<std::size_t>(m)].name);
     s += '"';
     return s;
