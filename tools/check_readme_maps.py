@@ -6,7 +6,7 @@ The rules (each broken one is reported on one line):
   unnamed      Every source file (.cpp, .hpp, .h, .inl) under raytracer/ and collision/ is named
                by the README.md of its folder or, for a folder without one, of its nearest
                ancestor that has one (collision/README.md covers collision/thesis/ and
-               collision/detail/; raytracer/render/README.md covers render/integrators/).
+               collision/detail/).
                A file counts as named when the README holds, standing alone (not as the tail
                of a longer name such as `x_bvh.cpp`, nor after a folder as `other/bvh.cpp`):
                its path from the README's folder, by name or by stem with a star

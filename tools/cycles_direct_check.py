@@ -15,18 +15,12 @@ import sys
 
 import numpy as np
 
+from pfm import read_pfm
+
 BANDS = [(350, 400), (400, 450), (450, 500), (500, 530), (530, 550)]
 SUB = 8
 
 
-def read_pfm(path):
-    with open(path, "rb") as f:
-        if f.readline().strip() != b"PF":
-            sys.exit(f"{path}: not a colour PFM")
-        w, h = map(int, f.readline().split())
-        scale = float(f.readline())
-        data = np.frombuffer(f.read(), dtype="<f4" if scale < 0 else ">f4").reshape(h, w, 3)
-    return data[::-1].astype(np.float64)  # top row first
 
 
 def polygon_irradiance(corners, p, n):

@@ -25,18 +25,12 @@ import sys
 
 import numpy as np
 
+from pfm import read_pfm
+
 # Reduced sizes (the machine is shared); reference spp per scene (two halves of half as many).
 SCENES = [("smallpt", 128, 96, 8192), ("cornell-box", 96, 96, 4096), ("default", 128, 72, 4096)]
 
 
-def read_pfm(path):
-    with open(path, "rb") as f:
-        if f.readline().strip() != b"PF":
-            raise SystemExit(f"equal_time: {path}: not a colour PFM")
-        w, h = (int(v) for v in f.readline().split())
-        scale = float(f.readline())
-        data = np.fromfile(f, dtype="<f4" if scale < 0 else ">f4")
-    return data.reshape(h, w, 3)[::-1].astype(np.float64)
 
 
 def render(binary, scene, w, h, out, extra):
@@ -279,11 +273,6 @@ def timed_render_path(work, name, w, h, mode, t, seed):
     return os.path.join(work, f"{name}-{w}x{h}-{mode}-{t:g}-seed{seed}.pfm")
 
 
-def write_pfm(path, img):
-    h, w, _ = img.shape
-    with open(path, "wb") as f:
-        f.write(f"PF\n{w} {h}\n-1.0\n".encode())
-        img[::-1].astype("<f4").tofile(f)
 
 
 def write_docs(args, rows, z_lines, times):

@@ -22,7 +22,7 @@ The sky map. pbrt-v4's image infinite light looks a direction w up in its light 
 the rows from the top (the first row an image reader returns; PFM stores rows bottom to top, so
 the top row is written last). metals.pbrt is a z-up world whose infinite light has no transform,
 so light space is the world. Each texel is the mean of 4 x 4 sub-samples: w from
-EqualAreaSquareToSphere (raytracer/render/equal_area_octahedral.cpp, reimplemented below), turned
+EqualAreaSquareToSphere (raytracer/render/sampling/equal_area_octahedral.cpp, reimplemented below), turned
 into the sky's y-up frame by the rotation (x, y, z) -> (x, z, -y) (world +z is the sky's +Y, world
 -y its +Z), and read from the equirectangular sky as our loader reads it (scenes/README.md,
 "Environment": u = 1/2 + atan2(d.x, -d.z) / 2 pi, v = acos(d.y) / pi, nearest texel, RGBE decoded
@@ -57,7 +57,7 @@ def fail(message):
     sys.exit("make_pbrt_example_assets: " + message)
 
 
-# --- the equal-area octahedral mapping (pbrt-v4's, as render/equal_area_octahedral.cpp) -------
+# --- the equal-area octahedral mapping (pbrt-v4's, as render/sampling/equal_area_octahedral.cpp) -------
 def square_to_sphere(u, v):
     u, v = 2 * u - 1, 2 * v - 1
     a, b = abs(u), abs(v)

@@ -9,7 +9,7 @@ sky through a window, rendered three ways at the same CPU time:
               more than it gained, and since then a portal-less colour is no light, so this
               column is the first one's estimator again (docs/sky-and-portals.md);
   portal      the new build, the scene as committed: the sky drawn through the window's portal
-              (render/portal.hpp).
+              (render/lights/portal.hpp).
 
 Each is `render --time T --time-clock cpu` (CPU seconds of all the render's threads, so the
 figures hold while other processes share the machine), for --seeds seeds; its RMSE (linear

@@ -22,7 +22,7 @@
 #include <string>
 #include <vector>
 
-#include "raytracer/render/roulette.hpp"
+#include "raytracer/render/sampling/roulette.hpp"
 
 namespace sweeptrace::accuracy {
 

@@ -7,9 +7,9 @@
 #include "raytracer/image/feature_sums.hpp"
 #include "raytracer/image/partial_sum.hpp"
 #include "raytracer/input_error.hpp"
-#include "raytracer/render/film_splats.hpp"
+#include "raytracer/render/film/film_splats.hpp"
 #include "raytracer/render/integrators/light_vertices.hpp"
-#include "raytracer/render/path_forensics.hpp"
+#include "raytracer/render/film/path_forensics.hpp"
 #include "raytracer/render/renderer.hpp"
 
 namespace sweeptrace {

@@ -9,8 +9,8 @@
 // the display copy and the encoded file; under vcm also every pixel's light subpath, under
 // adaptive sampling its per-pixel counts, weights and pass sums, with feature outputs (film.aovs)
 // their exact sums and images), bdpt's and vcm's light-tracing splat buffers (bounded by the
-// renderer's waves, render/film_splats.hpp), --forensics' per-region sums
-// (render/path_forensics.hpp) and the scene's acceleration structure over every object and
+// renderer's waves, render/film/film_splats.hpp), --forensics' per-region sums
+// (render/film/path_forensics.hpp) and the scene's acceleration structure over every object and
 // triangle. It is an estimate of the peak, not a bound: small per-object data and
 // allocator overhead are not counted. The scene's meshes are already loaded when it is made
 // (their input files are limited in size, scene/text_file.hpp) and are not part of it.

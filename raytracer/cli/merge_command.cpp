@@ -17,7 +17,7 @@
 #include "raytracer/image/image.hpp"
 #include "raytracer/image/partial_image.hpp"
 #include "raytracer/input_error.hpp"
-#include "raytracer/render/tone_map.hpp"
+#include "raytracer/render/film/tone_map.hpp"
 
 namespace sweeptrace {
 namespace {

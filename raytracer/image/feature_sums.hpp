@@ -1,7 +1,7 @@
 #pragma once
 // Feature outputs (AOVs, `render --aovs`): per pixel, the colour and three features of every
 // camera sample (albedo, shading normal, position at its first non-specular vertex:
-// render/sample_features.hpp says how that vertex is found and what a miss or an emitter gives),
+// render/film/sample_features.hpp says how that vertex is found and what a miss or an emitter gives),
 // summed exactly (fixed point, partial_sum.hpp; squares in square_sum.hpp) and split into two
 // halves by the parity of the sample's index, so that a feature-based denoiser (NFOR) gets the
 // two half buffers it estimates its error from, and so that farm parts of a render merge into

@@ -4,7 +4,7 @@
 
 #include <glm/geometric.hpp>
 
-#include "raytracer/render/sampling.hpp"
+#include "raytracer/render/sampling/sampling.hpp"
 
 namespace sweeptrace {
 

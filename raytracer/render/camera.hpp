@@ -8,7 +8,7 @@
 #include <glm/vec3.hpp>
 
 #include "collision/ray.hpp"
-#include "raytracer/render/pixel_filter.hpp"
+#include "raytracer/render/film/pixel_filter.hpp"
 #include "raytracer/scene/scene.hpp"
 
 namespace sweeptrace {
@@ -18,7 +18,7 @@ public:
     CameraModel(const Camera& camera, int width, int height, const FilterSpec& filter = {});
 
     // Where in its pixel a camera sample lands, from two uniforms, and the weight it carries:
-    // drawn from the film's reconstruction filter (render/pixel_filter.hpp). The default box
+    // drawn from the film's reconstruction filter (render/film/pixel_filter.hpp). The default box
     // gives (u1, u2) themselves with weight 1.
     FilmOffset film_offset(float u1, float u2) const { return filter_.sample(u1, u2); }
 

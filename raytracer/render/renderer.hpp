@@ -10,7 +10,7 @@
 #include "raytracer/render/adaptive_sampling.hpp"
 #include "raytracer/image/feature_sums.hpp"
 #include "raytracer/image/image.hpp"
-#include "raytracer/render/roulette.hpp"
+#include "raytracer/render/sampling/roulette.hpp"
 #include "raytracer/image/partial_sum.hpp"
 #include "raytracer/render/time_budget.hpp"
 #include "raytracer/scene/scene.hpp"

@@ -5,7 +5,7 @@
 
 namespace sweeptrace {
 
-// `node` is [[x, y, z] x 4]: a rectangle's corners in order round its edge (render/portal.hpp).
+// `node` is [[x, y, z] x 4]: a rectangle's corners in order round its edge (render/lights/portal.hpp).
 // Opposite edges must be parallel and adjacent ones perpendicular, each to within 0.001 in the
 // cosine of their angle: pbrt-v4's own test of a portal, so every portal pbrt-v4 accepts loads
 // here (the importer writes pbrt's corners as they are), and corners written with a few digits

@@ -178,7 +178,7 @@ Material read_material(const Node& node, const std::string& name, std::vector<Te
     const std::string type = type_node.string();
     Material m;
     m.name = name;
-    // A roughness in [0, 1], or a texture of it (a data map: render/texture.hpp).
+    // A roughness in [0, 1], or a texture of it (a data map: render/materials/texture.hpp).
     auto read_roughness = [&](const Node& r) {
         if (r.value().is_object()) m.roughness_texture = add_texture(r, TextureUse::Roughness, textures);
         else m.roughness = r.number_in(0.0f, 1.0f);

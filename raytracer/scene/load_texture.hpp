@@ -19,8 +19,8 @@ enum class TextureUse {
     Albedo,     // colours in [0, 1]
     Emission,   // radiance, each component >= 0 (a .png's values are at most 1)
     Roughness,  // data in [0, 1]; a checker's a and b are numbers
-    NormalMap,  // data in [0, 1], a tangent-space normal as 0.5 + n / 2 (render/shading_frame.hpp)
-    BumpMap,    // data in [0, 1], a height (render/shading_frame.hpp); an image, not a checker
+    NormalMap,  // data in [0, 1], a tangent-space normal as 0.5 + n / 2 (render/materials/shading_frame.hpp)
+    BumpMap,    // data in [0, 1], a height (render/materials/shading_frame.hpp); an image, not a checker
 };
 
 // `node` is {"checker": {"a": .., "b": .., "scale": n, "uv_scale", "uv_offset"}} or {"image": {"file": ..,

@@ -43,7 +43,7 @@ struct Camera {
     std::int32_t medium = -1;
 };
 
-// Where a camera sample's numbers come from (render/sampler.hpp).
+// Where a camera sample's numbers come from (render/sampling/sampler.hpp).
 enum class SamplerKind { Independent, Sobol };
 
 // Which light transport method renders the film (render/integrators/): the unidirectional path
@@ -55,10 +55,10 @@ inline const char* integrator_name(IntegratorKind k) {
     return k == IntegratorKind::Vcm ? "vcm" : k == IntegratorKind::Bdpt ? "bdpt" : "path";
 }
 
-// The curve that takes exposed linear radiance to [0, 1] for 8-bit output (render/tone_map.hpp).
+// The curve that takes exposed linear radiance to [0, 1] for 8-bit output (render/film/tone_map.hpp).
 enum class ToneCurve { Clamp, Aces };
 
-// The pixel reconstruction filter, as the scene gives it (render/pixel_filter.hpp samples it).
+// The pixel reconstruction filter, as the scene gives it (render/film/pixel_filter.hpp samples it).
 // Separable: the 2D filter is f(x) f(y) for offsets (x, y) in pixels from the pixel's centre.
 struct FilterSpec {
     enum class Type { Box, Tent, Gaussian, Mitchell };
@@ -85,7 +85,7 @@ struct Film {
     float exposure = 0.0f;  // stops: 8-bit output shows radiance x 2^exposure (linear outputs untouched)
     ToneCurve tone_curve = ToneCurve::Clamp;
     FilterSpec filter;  // box of radius 0.5: each sample uniform in its pixel
-    // A biased, opt-in firefly guard (render/radiance_clamp.hpp): each contribution of a path of
+    // A biased, opt-in firefly guard (render/film/radiance_clamp.hpp): each contribution of a path of
     // three or more segments (light reaching the camera after two or more bounces) has its largest
     // component limited to this. 0 = off, the unbiased estimator.
     float clamp_indirect = 0.0f;
@@ -100,7 +100,7 @@ struct Background {
     glm::vec3 color{0.0f};               // Constant
     glm::vec3 horizon{1.0f};             // Sky: radiance toward the horizon and below
     glm::vec3 zenith{0.5f, 0.7f, 1.0f};  // Sky: radiance straight up (+Y), blended by dir.y
-    // Environment: a radiance map (render/environment_light.hpp states both layouts), shared,
+    // Environment: a radiance map (render/lights/environment_light.hpp states both layouts), shared,
     // not copied, by copies of the scene; turned about +Y by rotate_degrees (or, with `turned`, by
     // the rotation `turn`: a "rotate" given as an axis and degrees), its frame's x negated after
     // the turn when mirrored, and multiplied by scale.
@@ -114,12 +114,12 @@ struct Background {
     float scale = 1.0f;
     // Any kind: a window rectangle (corners in order round its edge) through which the
     // background lights the scene; it guides next event estimation only, the radiance is the
-    // same without it (render/portal.hpp).
+    // same without it (render/lights/portal.hpp).
     bool has_portal = false;
     std::array<glm::vec3, 4> portal{};
 };
 
-// A colour that varies over a surface with its uv coordinates (render/texture.hpp evaluates it;
+// A colour that varies over a surface with its uv coordinates (render/materials/texture.hpp evaluates it;
 // each shape's home states its uv parameterisation). A constant colour is not a Texture: it is
 // the material's plain value.
 struct Texture {
@@ -146,7 +146,7 @@ struct Texture {
 };
 
 // What a surface does with light: every parameter the BSDF, emission and textures read. A hit's
-// textured copy (render/texture.hpp) is one of these, so the hot paths copy no name.
+// textured copy (render/materials/texture.hpp) is one of these, so the hot paths copy no name.
 struct MaterialParameters {
     enum class Type { Diffuse, Metal, Dielectric, Emissive, ThinDielectric, RoughDielectric, CoatedDiffuse, Conductor, Interface };
     // Interface (pbrt-v4's "interface"): no surface at all for light, only the boundary between
@@ -179,14 +179,14 @@ struct MaterialParameters {
     // quads, the disk's normal, (b - a) x (c - a) for triangles and mesh faces.
     bool two_sided_emission = false;
     // Textures on the other parameters (indices into Scene::textures, or -1), evaluated at each
-    // hit by render/texture.hpp. With emission_texture, `emission` holds the texture's mean (the
+    // hit by render/materials/texture.hpp. With emission_texture, `emission` holds the texture's mean (the
     // light's selection weight; each hit and light sample reads the texture itself).
     int roughness_texture = -1;  // the mean of the texel's three channels
     int emission_texture = -1;
-    // A tangent-space normal map (render/shading_frame.hpp): replaces the shading normal.
+    // A tangent-space normal map (render/materials/shading_frame.hpp): replaces the shading normal.
     int normal_texture = -1;
     // A height field (the mean of a texel's channels, times bump_scale, in world units along the
-    // normal) whose slope tilts the shading normal (render/shading_frame.hpp), after any normal map.
+    // normal) whose slope tilts the shading normal (render/materials/shading_frame.hpp), after any normal map.
     int bump_texture = -1;
     float bump_scale = 1.0f;
 };

@@ -15,8 +15,8 @@
 
 #include <glm/geometric.hpp>
 
-#include "raytracer/render/bsdf.hpp"
-#include "raytracer/render/random.hpp"
+#include "raytracer/render/materials/bsdf.hpp"
+#include "raytracer/render/sampling/random.hpp"
 
 namespace sweeptrace::test {
 

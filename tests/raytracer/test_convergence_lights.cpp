@@ -116,7 +116,7 @@ TEST_CASE("inside a closed emissive sphere, depth 40: Le / (1 - rho) up to rho^4
 // (depth 2, truth 1.5 Le: NEE+MIS 1.431 at r = 1, 1.420 at r = 0.7, 1.4946 at r = 3; BSDF-only
 // 1.5000). Cause: the sphere light chose cone or area sampling by |p - c|^2 > r^2, which rounding
 // decides for the sphere's own hit points; a third of them got a degenerate cone. Now a point on
-// the light's own surface samples it by area (render/lights.cpp, cone_from).
+// the light's own surface samples it by area (render/lights/lights.cpp, cone_from).
 TEST_CASE("inside a closed emissive sphere with NEE+MIS, depth 4", "[convergence][lights]") {
     check_emissive_sphere(4, 16, Sampling::NeeMis);
 }

@@ -12,7 +12,7 @@
 #include <glm/geometric.hpp>
 
 #include "convergence_harness.hpp"
-#include "raytracer/render/sampling.hpp"
+#include "raytracer/render/sampling/sampling.hpp"
 
 using namespace sweeptrace;
 using namespace sweeptrace::testing;

@@ -11,7 +11,7 @@
 #include "pbrt_test_support.hpp"
 #include "raytracer/image/image.hpp"
 #include "raytracer/input_error.hpp"
-#include "raytracer/render/environment_light.hpp"
+#include "raytracer/render/lights/environment_light.hpp"
 #include "raytracer/scene/scene_transform.hpp"
 
 using namespace sweeptrace;

@@ -1,4 +1,4 @@
-// Feature outputs (render --aovs; render/sample_features.hpp, image/feature_sums.hpp): the
+// Feature outputs (render --aovs; render/film/sample_features.hpp, image/feature_sums.hpp): the
 // features against closed forms (a checker-textured quad's albedo, depth and normal; a sphere's
 // normals and albedo seen through a mirror, for every integrator), the exact variance of equal
 // samples, the half buffers against the full sums, determinism at 1 and 2 threads, the image

@@ -18,7 +18,7 @@
 #include "random_mis_path.hpp"
 #include "raytracer/render/camera.hpp"
 #include "raytracer/render/integrators/bidir_mis.hpp"
-#include "raytracer/render/lights.hpp"
+#include "raytracer/render/lights/lights.hpp"
 #include "raytracer/render/planted_defect.hpp"
 #include "raytracer/scene/load_scene.hpp"
 

@@ -5,9 +5,9 @@
 
 #include <glm/geometric.hpp>
 
-#include "raytracer/render/bsdf.hpp"
-#include "raytracer/render/random.hpp"
-#include "raytracer/render/sampling.hpp"
+#include "raytracer/render/materials/bsdf.hpp"
+#include "raytracer/render/sampling/random.hpp"
+#include "raytracer/render/sampling/sampling.hpp"
 #include "render_test_stats.hpp"
 
 using namespace sweeptrace;

@@ -13,7 +13,7 @@
 #include <cmath>
 
 #include "bsdf_chi_square.hpp"
-#include "raytracer/render/bsdf.hpp"
+#include "raytracer/render/materials/bsdf.hpp"
 
 using namespace sweeptrace;
 using sweeptrace::test::chi_square_alpha;

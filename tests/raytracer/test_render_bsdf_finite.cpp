@@ -9,8 +9,8 @@
 
 #include <glm/geometric.hpp>
 
-#include "raytracer/render/bsdf.hpp"
-#include "raytracer/render/random.hpp"
+#include "raytracer/render/materials/bsdf.hpp"
+#include "raytracer/render/sampling/random.hpp"
 
 using namespace sweeptrace;
 

@@ -7,7 +7,7 @@
 #include <glm/geometric.hpp>
 
 #include "raytracer/render/camera.hpp"
-#include "raytracer/render/random.hpp"
+#include "raytracer/render/sampling/random.hpp"
 #include "raytracer/scene/load_scene.hpp"
 #include "scene_load_error.hpp"
 #include "scene_test_files.hpp"

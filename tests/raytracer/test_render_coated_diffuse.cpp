@@ -1,4 +1,4 @@
-// The coated diffuse material (render/bsdf_coated_diffuse.cpp): its hemispherical Fresnel mean
+// The coated diffuse material (render/materials/bsdf_coated_diffuse.cpp): its hemispherical Fresnel mean
 // against a long-double integral, the rough coat's albedo table against a fine quadrature,
 // reciprocity, its directional albedo against the closed form (never above 1, exactly 1 for a
 // white base under a smooth coat), and white coated spheres in a white furnace. Its pdf
@@ -8,9 +8,9 @@
 #include <cmath>
 
 #include "furnace_sphere.hpp"
-#include "raytracer/render/bsdf.hpp"
-#include "raytracer/render/coat_albedo.hpp"
-#include "raytracer/render/random.hpp"
+#include "raytracer/render/materials/bsdf.hpp"
+#include "raytracer/render/materials/coat_albedo.hpp"
+#include "raytracer/render/sampling/random.hpp"
 #include "render_test_stats.hpp"
 
 using namespace sweeptrace;

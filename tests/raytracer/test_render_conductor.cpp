@@ -10,8 +10,8 @@
 #include <complex>
 
 #include "furnace_sphere.hpp"
-#include "raytracer/render/bsdf.hpp"
-#include "raytracer/render/random.hpp"
+#include "raytracer/render/materials/bsdf.hpp"
+#include "raytracer/render/sampling/random.hpp"
 #include "raytracer/scene/load_scene.hpp"
 #include "raytracer/scene/named_metals.hpp"
 #include "render_test_stats.hpp"

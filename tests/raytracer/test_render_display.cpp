@@ -6,7 +6,7 @@
 #include <limits>
 
 #include "convergence_harness.hpp"
-#include "raytracer/render/tone_map.hpp"
+#include "raytracer/render/film/tone_map.hpp"
 #include "raytracer/scene/emitter_check.hpp"
 #include "raytracer/scene/load_scene.hpp"
 

@@ -1,4 +1,4 @@
-// The environment light (render/environment_light.hpp), in both layouts and mirrored: its
+// The environment light (render/lights/environment_light.hpp), in both layouts and mirrored: its
 // sampling density integrates to 1, is the one pdf() reports and follows the map; a constant map
 // renders as the constant background does; a white furnace under a uniform map; NEE+MIS against
 // BSDF-only under a map with a bright spot; .hdr loading with the mapping and mirror keys.
@@ -9,11 +9,11 @@
 
 #include "convergence_harness.hpp"
 #include "environment_test_maps.hpp"
-#include "raytracer/render/environment_light.hpp"
-#include "raytracer/render/equal_area_octahedral.hpp"
-#include "raytracer/render/lights.hpp"
-#include "raytracer/render/random.hpp"
-#include "raytracer/render/sampling.hpp"
+#include "raytracer/render/lights/environment_light.hpp"
+#include "raytracer/render/sampling/equal_area_octahedral.hpp"
+#include "raytracer/render/lights/lights.hpp"
+#include "raytracer/render/sampling/random.hpp"
+#include "raytracer/render/sampling/sampling.hpp"
 #include "raytracer/scene/load_scene.hpp"
 #include "scene_test_files.hpp"
 

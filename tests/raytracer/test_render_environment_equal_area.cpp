@@ -1,5 +1,5 @@
-// The equal-area octahedral map (render/equal_area_octahedral.hpp) and the environment's map frame
-// (render/environment_light.hpp): the map round-trips and is equal-area (a plain octahedral map
+// The equal-area octahedral map (render/sampling/equal_area_octahedral.hpp) and the environment's map frame
+// (render/lights/environment_light.hpp): the map round-trips and is equal-area (a plain octahedral map
 // fails the same check), the frame's orientation pinned by texels whose direction is worked out
 // by hand from w = (d'.x, -d'.z, d'.y), and the mirror is S = diag(-1, 1, 1) after the turn.
 // Sampling, rendering and loading under both layouts: test_render_environment.cpp.
@@ -12,9 +12,9 @@
 #include <glm/geometric.hpp>
 
 #include "environment_test_maps.hpp"
-#include "raytracer/render/environment_light.hpp"
-#include "raytracer/render/equal_area_octahedral.hpp"
-#include "raytracer/render/random.hpp"
+#include "raytracer/render/lights/environment_light.hpp"
+#include "raytracer/render/sampling/equal_area_octahedral.hpp"
+#include "raytracer/render/sampling/random.hpp"
 
 using namespace sweeptrace;
 using namespace sweeptrace::testing;

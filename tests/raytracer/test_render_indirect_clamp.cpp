@@ -1,4 +1,4 @@
-// film.clamp_indirect (render/radiance_clamp.hpp): which contributions it limits, how far, and
+// film.clamp_indirect (render/film/radiance_clamp.hpp): which contributions it limits, how far, and
 // that on a real scene it only ever removes light, leaves direct views of emitters exact and is
 // off by default.
 #include <catch2/catch.hpp>
@@ -6,7 +6,7 @@
 #include <filesystem>
 
 #include "raytracer/accel/accel.hpp"
-#include "raytracer/render/radiance_clamp.hpp"
+#include "raytracer/render/film/radiance_clamp.hpp"
 #include "raytracer/render/renderer.hpp"
 #include "raytracer/scene/load_scene.hpp"
 

@@ -1,4 +1,4 @@
-// Which light next event estimation picks (render/lights.hpp, "Which light"): the lights at
+// Which light next event estimation picks (render/lights/lights.hpp, "Which light"): the lights at
 // infinity share a fixed part, n / (n + 1), by their irradiance, the finite ones split the rest by
 // power; the picks follow
 // those probabilities (Pearson's chi-square), the density each sample reports is the one pdf() and
@@ -13,10 +13,10 @@
 #include "bsdf_chi_square.hpp"
 #include "convergence_harness.hpp"
 #include "environment_test_maps.hpp"
-#include "raytracer/render/environment_light.hpp"
-#include "raytracer/render/lights.hpp"
-#include "raytracer/render/random.hpp"
-#include "raytracer/render/sampling.hpp"
+#include "raytracer/render/lights/environment_light.hpp"
+#include "raytracer/render/lights/lights.hpp"
+#include "raytracer/render/sampling/random.hpp"
+#include "raytracer/render/sampling/sampling.hpp"
 
 using namespace sweeptrace;
 using namespace sweeptrace::testing;

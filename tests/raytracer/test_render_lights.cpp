@@ -8,10 +8,10 @@
 #include <glm/geometric.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "raytracer/render/guiding_quadtree.hpp"
-#include "raytracer/render/lights.hpp"
-#include "raytracer/render/random.hpp"
-#include "raytracer/render/sampling.hpp"
+#include "raytracer/render/guiding/guiding_quadtree.hpp"
+#include "raytracer/render/lights/lights.hpp"
+#include "raytracer/render/sampling/random.hpp"
+#include "raytracer/render/sampling/sampling.hpp"
 #include "render_test_scenes.hpp"
 #include "render_test_stats.hpp"
 

@@ -19,9 +19,9 @@
 #include "raytracer/cli/memory_budget.hpp"
 #include "raytracer/image/feature_sums.hpp"
 #include "raytracer/input_error.hpp"
-#include "raytracer/render/film_splats.hpp"
+#include "raytracer/render/film/film_splats.hpp"
 #include "raytracer/render/integrators/light_vertices.hpp"
-#include "raytracer/render/path_forensics.hpp"
+#include "raytracer/render/film/path_forensics.hpp"
 #include "raytracer/scene/load_scene.hpp"
 #include "scene_test_files.hpp"
 

@@ -9,8 +9,8 @@
 #include <cstdio>
 
 #include "furnace_sphere.hpp"
-#include "raytracer/render/bsdf.hpp"
-#include "raytracer/render/random.hpp"
+#include "raytracer/render/materials/bsdf.hpp"
+#include "raytracer/render/sampling/random.hpp"
 #include "render_test_stats.hpp"
 
 using namespace sweeptrace;

@@ -1,4 +1,4 @@
-// Shading normals (render/shading_frame.hpp): the tangent frame of each home and of a mesh's vt,
+// Shading normals (render/materials/shading_frame.hpp): the tangent frame of each home and of a mesh's vt,
 // the guards, a bump map's normal against the displaced surface's, and the energy checks the
 // issue asks for. A white furnace (albedo 1 under a
 // uniform environment of 1) on a normal-mapped sphere and on a mesh with wild vertex normals
@@ -14,8 +14,8 @@
 #include <glm/geometric.hpp>
 
 #include "convergence_harness.hpp"
-#include "raytracer/render/shading_frame.hpp"
-#include "raytracer/render/texture.hpp"
+#include "raytracer/render/materials/shading_frame.hpp"
+#include "raytracer/render/materials/texture.hpp"
 
 using namespace sweeptrace;
 using namespace sweeptrace::testing;
@@ -137,7 +137,7 @@ double check_furnace(const std::function<Scene(float albedo)>& make, AccelKind a
     const double mean = check_no_gain(r, mask);
     CHECK(r.stats.nonfinite_samples == 0);
     WARN(what << (accel == AccelKind::Bvh ? " (bvh)" : " (embree)") << ": furnace mean over covered pixels " << mean);
-    // The surface is lit at all. What is lost (measured: README of render/shading_frame.hpp's
+    // The surface is lit at all. What is lost (measured: README of render/materials/shading_frame.hpp's
     // guards) is where wo or wi falls below the mapped normal or the geometric plane.
     CHECK(mean > 0.3);
     return mean;

@@ -1,4 +1,4 @@
-// Noise forensics (render/path_forensics.hpp): the image is the same bit for bit with it on, the
+// Noise forensics (render/film/path_forensics.hpp): the image is the same bit for bit with it on, the
 // report is the same at 1 and 3 threads, the credits add up to the samples' second moment and
 // mean exactly as the header states, the path types are the ones the scene can make, and a
 // region keeps at most kRegionTypes keys however many the paths make.
@@ -8,7 +8,7 @@
 #include <string>
 
 #include "convergence_harness.hpp"
-#include "raytracer/render/path_forensics.hpp"
+#include "raytracer/render/film/path_forensics.hpp"
 
 using namespace sweeptrace;
 using namespace sweeptrace::testing;

@@ -1,4 +1,4 @@
-// Pixel reconstruction filters by filter importance sampling (render/pixel_filter.hpp): the
+// Pixel reconstruction filters by filter importance sampling (render/film/pixel_filter.hpp): the
 // sampler's integrals against quadrature of the filter, the default box keeping today's jitter,
 // and a knife edge (a half-plane emitter seen straight on) whose rendered profile matches the
 // convolution of a step with each filter, column by column.
@@ -8,8 +8,8 @@
 #include <functional>
 
 #include "convergence_harness.hpp"
-#include "raytracer/render/pixel_filter.hpp"
-#include "raytracer/render/random.hpp"
+#include "raytracer/render/film/pixel_filter.hpp"
+#include "raytracer/render/sampling/random.hpp"
 
 using namespace sweeptrace;
 using namespace sweeptrace::testing;

@@ -1,4 +1,4 @@
-// The portal (render/portal.hpp) and the background as a light (render/background_light.hpp):
+// The portal (render/lights/portal.hpp) and the background as a light (render/lights/background_light.hpp):
 // the portal's solid angle against the closed form, its directions uniform in that solid angle
 // (chi-square over cells of the rectangle, each cell's solid angle by Van Oosterom and
 // Strackee's triangle formula, independent of the sampler's), sample() and pdf() agreeing, and
@@ -14,11 +14,11 @@
 #include <glm/geometric.hpp>
 
 #include "environment_test_maps.hpp"
-#include "raytracer/render/background_light.hpp"
-#include "raytracer/render/lights.hpp"
-#include "raytracer/render/portal.hpp"
-#include "raytracer/render/random.hpp"
-#include "raytracer/render/sampling.hpp"
+#include "raytracer/render/lights/background_light.hpp"
+#include "raytracer/render/lights/lights.hpp"
+#include "raytracer/render/lights/portal.hpp"
+#include "raytracer/render/sampling/random.hpp"
+#include "raytracer/render/sampling/sampling.hpp"
 
 using namespace sweeptrace;
 

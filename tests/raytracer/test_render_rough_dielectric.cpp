@@ -1,4 +1,4 @@
-// The rough dielectric (render/bsdf_rough_dielectric.cpp): it never creates energy (per incident
+// The rough dielectric (render/materials/bsdf_rough_dielectric.cpp): it never creates energy (per incident
 // angle, and as a glass sphere in a white furnace, the losses stated), it obeys the generalised
 // reciprocity of a refracting BSDF, and as roughness -> 0 it becomes the smooth dielectric.
 // Its pdf consistency is in test_render_bsdf_chi_square.cpp.
@@ -8,8 +8,8 @@
 #include <cstdio>
 
 #include "furnace_sphere.hpp"
-#include "raytracer/render/bsdf.hpp"
-#include "raytracer/render/random.hpp"
+#include "raytracer/render/materials/bsdf.hpp"
+#include "raytracer/render/sampling/random.hpp"
 #include "render_test_stats.hpp"
 
 using namespace sweeptrace;

@@ -1,4 +1,4 @@
-// The Sobol sampler (render/sampler.hpp, sampler_sobol.hpp): the nets it promises, exactly; its
+// The Sobol sampler (render/sampling/sampler.hpp, sampler_sobol.hpp): the nets it promises, exactly; its
 // discrepancy against random points; addressing by (seed, pixel, sample, dimension) so any order
 // or split of the work gives the same numbers; the independent sampler being today's stream.
 #include <catch2/catch.hpp>
@@ -10,9 +10,9 @@
 
 #include <glm/vec2.hpp>
 
-#include "raytracer/render/random.hpp"
-#include "raytracer/render/roulette.hpp"
-#include "raytracer/render/sampler.hpp"
+#include "raytracer/render/sampling/random.hpp"
+#include "raytracer/render/sampling/roulette.hpp"
+#include "raytracer/render/sampling/sampler.hpp"
 
 using namespace sweeptrace;
 

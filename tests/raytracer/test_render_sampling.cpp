@@ -8,8 +8,8 @@
 #include <glm/geometric.hpp>
 
 #include "raytracer/render/camera.hpp"
-#include "raytracer/render/random.hpp"
-#include "raytracer/render/sampling.hpp"
+#include "raytracer/render/sampling/random.hpp"
+#include "raytracer/render/sampling/sampling.hpp"
 #include "render_test_stats.hpp"
 
 using namespace sweeptrace;

@@ -14,8 +14,8 @@
 #include "bidirectional_test_support.hpp"
 #include "convergence_harness.hpp"
 #include "pbrt_test_support.hpp"
-#include "raytracer/render/lights.hpp"
-#include "raytracer/render/sampling.hpp"
+#include "raytracer/render/lights/lights.hpp"
+#include "raytracer/render/sampling/sampling.hpp"
 #include "raytracer/scene/load_scene.hpp"
 #include "raytracer/scene/pbrt/pbrt_import.hpp"
 

@@ -1,4 +1,4 @@
-// Textures (render/texture.hpp) and the shapes' uv parameterisations (geometry/shapes/): uv at
+// Textures (render/materials/texture.hpp) and the shapes' uv parameterisations (geometry/shapes/): uv at
 // known points of each home that has one, checker and bilinear image lookups with both wrap
 // modes, a checker-textured quad under a uniform sky rendering albedo(uv) x L pixel by pixel,
 // and textures refused on shapes without uv.
@@ -10,7 +10,7 @@
 #include "convergence_harness.hpp"
 #include "plane_truth.hpp"
 #include "raytracer/input_error.hpp"
-#include "raytracer/render/texture.hpp"
+#include "raytracer/render/materials/texture.hpp"
 #include "raytracer/scene/load_scene.hpp"
 #include "raytracer/scene/obj_loader.hpp"
 #include "scene_test_files.hpp"

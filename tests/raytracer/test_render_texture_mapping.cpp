@@ -9,7 +9,7 @@
 
 #include "pbrt_test_support.hpp"
 #include "raytracer/image/srgb.hpp"
-#include "raytracer/render/texture.hpp"
+#include "raytracer/render/materials/texture.hpp"
 #include "raytracer/scene/load_scene.hpp"
 #include "scene_load_error.hpp"
 #include "scene_test_files.hpp"

@@ -1,4 +1,4 @@
-// Textures on every parameter (render/texture.hpp, scene/load_texture.hpp): roughness, metal tint
+// Textures on every parameter (render/materials/texture.hpp, scene/load_texture.hpp): roughness, metal tint
 // and emission maps render exactly the image of the constant they encode; a .png read as data
 // keeps its stored codes (no sRGB decoding); wrap modes at chosen uvs; an image shared by every
 // parameter that names it; light samples read an emission texture where they land (NEE+MIS
@@ -9,7 +9,7 @@
 
 #include "convergence_harness.hpp"
 #include "raytracer/image/srgb.hpp"
-#include "raytracer/render/texture.hpp"
+#include "raytracer/render/materials/texture.hpp"
 #include "raytracer/scene/load_scene.hpp"
 #include "scene_test_files.hpp"
 

@@ -1,4 +1,4 @@
-// The thin dielectric sheet (render/bsdf.hpp): its reflectance is the sum of the bounces between
+// The thin dielectric sheet (render/materials/bsdf.hpp): its reflectance is the sum of the bounces between
 // its two interfaces, it conserves energy exactly at every angle (weights and probabilities),
 // and a sheet in a white furnace is invisible.
 #include <catch2/catch.hpp>
@@ -6,7 +6,7 @@
 #include <cmath>
 
 #include "convergence_harness.hpp"
-#include "raytracer/render/bsdf.hpp"
+#include "raytracer/render/materials/bsdf.hpp"
 
 using namespace sweeptrace;
 using namespace sweeptrace::testing;

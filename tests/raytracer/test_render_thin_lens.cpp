@@ -15,7 +15,7 @@
 
 #include "convergence_harness.hpp"
 #include "raytracer/render/camera.hpp"
-#include "raytracer/render/random.hpp"
+#include "raytracer/render/sampling/random.hpp"
 
 using namespace sweeptrace;
 using namespace sweeptrace::testing;

@@ -10,8 +10,8 @@
 
 #include "pbrt_test_support.hpp"
 #include "raytracer/accel/accel.hpp"
-#include "raytracer/render/random.hpp"
-#include "raytracer/render/texture.hpp"
+#include "raytracer/render/sampling/random.hpp"
+#include "raytracer/render/materials/texture.hpp"
 #include "raytracer/scene/load_scene.hpp"
 #include "scene_load_error.hpp"
 #include "scene_test_files.hpp"

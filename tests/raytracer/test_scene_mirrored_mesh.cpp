@@ -12,7 +12,7 @@
 #include <glm/geometric.hpp>
 
 #include "raytracer/accel/accel.hpp"
-#include "raytracer/render/random.hpp"
+#include "raytracer/render/sampling/random.hpp"
 #include "raytracer/render/renderer.hpp"
 #include "raytracer/scene/load_scene.hpp"
 #include "scene_load_error.hpp"

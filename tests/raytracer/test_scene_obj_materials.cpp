@@ -15,7 +15,7 @@
 #include "plane_truth.hpp"
 #include "raytracer/image/srgb.hpp"
 #include "raytracer/input_error.hpp"
-#include "raytracer/render/texture.hpp"
+#include "raytracer/render/materials/texture.hpp"
 #include "raytracer/scene/load_scene.hpp"
 #include "scene_test_files.hpp"
 

@@ -1,6 +1,6 @@
 #pragma once
 // What a shape's home (geometry/shapes/<shape>.hpp) tells the renderer's light sampler about one
-// emissive object of that shape, and the surface point it samples. LightSet (render/lights.hpp)
+// emissive object of that shape, and the surface point it samples. LightSet (render/lights/lights.hpp)
 // owns the strategies and the densities; each home owns only its own geometry: which strategy
 // fits it, its area, and how a uniform point on its surface is drawn.
 #include <cmath>

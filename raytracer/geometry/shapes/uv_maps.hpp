@@ -11,7 +11,7 @@
 namespace sweeptrace {
 
 // The derivatives of a surface point by its uv parameters, in object space, at one point
-// (tangent_frame in render/shading_frame.hpp builds a normal map's frame from them). Zero where
+// (tangent_frame in render/materials/shading_frame.hpp builds a normal map's frame from them). Zero where
 // the parameterisation is degenerate (a pole, a cap's centre): no normal map applies there.
 struct UvTangents {
     glm::vec3 dpdu{0.0f}, dpdv{0.0f};

@@ -5,12 +5,12 @@
 
 #include <glm/geometric.hpp>
 
-#include "raytracer/render/bsdf.hpp"
+#include "raytracer/render/materials/bsdf.hpp"
 #include "raytracer/render/integrators/bidir_mis.hpp"
 #include "raytracer/render/integrators/mis_window.hpp"
 #include "raytracer/render/integrators/path.hpp"
-#include "raytracer/render/sampling.hpp"
-#include "raytracer/render/texture.hpp"
+#include "raytracer/render/sampling/sampling.hpp"
+#include "raytracer/render/materials/texture.hpp"
 
 namespace sweeptrace {
 

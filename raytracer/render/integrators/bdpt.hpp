@@ -13,7 +13,7 @@
 // lights as pbrt does. Both subpaths see the scene at the camera sample's time. Light subpath
 // throughputs carry power: refraction's 1/eta^2 is undone there (importance_refraction_scale)
 // and shading normals get pbrt's adjoint correction |wo.ns||wi.ng| / (|wo.ng||wi.ns|).
-// The surface emitters' and camera's densities are render/light_emission.cpp's and
+// The surface emitters' and camera's densities are render/lights/light_emission.cpp's and
 // CameraModel::direction_pdf; the pixel filter's weights for splats are f(dx) f(dy) / (int f)^2,
 // what a camera sample of that pixel estimates (film_splats.hpp, where the renderer spreads them).
 // Not done here: path guiding, film.clamp_indirect (the path tracer's firefly guard).
@@ -26,15 +26,15 @@
 
 #include "raytracer/accel/accel.hpp"
 #include "raytracer/render/camera.hpp"
-#include "raytracer/render/film_splats.hpp"
+#include "raytracer/render/film/film_splats.hpp"
 #include "raytracer/render/integrators/bidir_mis.hpp"
 #include "raytracer/render/integrators/light_vertices.hpp"
 #include "raytracer/render/integrators/path_vertex.hpp"
-#include "raytracer/render/lights.hpp"
+#include "raytracer/render/lights/lights.hpp"
 #include "raytracer/render/planted_defect.hpp"
-#include "raytracer/render/roulette.hpp"
-#include "raytracer/render/sample_features.hpp"
-#include "raytracer/render/sampler.hpp"
+#include "raytracer/render/sampling/roulette.hpp"
+#include "raytracer/render/film/sample_features.hpp"
+#include "raytracer/render/sampling/sampler.hpp"
 #include "raytracer/scene/scene.hpp"
 
 namespace sweeptrace {

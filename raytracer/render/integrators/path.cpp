@@ -7,15 +7,15 @@
 
 #include <glm/geometric.hpp>
 
-#include "raytracer/render/bsdf.hpp"
-#include "raytracer/render/guiding_path_recorder.hpp"
-#include "raytracer/render/guiding_sampler.hpp"
-#include "raytracer/render/background_light.hpp"
+#include "raytracer/render/materials/bsdf.hpp"
+#include "raytracer/render/guiding/guiding_path_recorder.hpp"
+#include "raytracer/render/guiding/guiding_sampler.hpp"
+#include "raytracer/render/lights/background_light.hpp"
 #include "raytracer/render/media/henyey_greenstein.hpp"
 #include "raytracer/render/media/tracking.hpp"
-#include "raytracer/render/radiance_clamp.hpp"
-#include "raytracer/render/sampling.hpp"
-#include "raytracer/render/texture.hpp"
+#include "raytracer/render/film/radiance_clamp.hpp"
+#include "raytracer/render/sampling/sampling.hpp"
+#include "raytracer/render/materials/texture.hpp"
 
 namespace sweeptrace {
 
@@ -169,7 +169,7 @@ glm::vec3 PathIntegrator::radiance(collision::Ray ray, PixelSampler& sampler, st
             --depth;
             continue;
         }
-        std::optional<MaterialParameters> textured;  // only for materials that read a texture (render/texture.hpp)
+        std::optional<MaterialParameters> textured;  // only for materials that read a texture (render/materials/texture.hpp)
         const MaterialParameters& mat = !reads_texture(base) ? base : textured.emplace(textured_material(scene_, base, hit));
         const glm::vec3 wo = -ray.dir;
         if (features != nullptr) features->at_vertex(mat, hit, wo);

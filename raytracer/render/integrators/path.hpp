@@ -10,7 +10,7 @@
 // Delta lobes (mirror, glass) take no NEE and give the BSDF-sampled ray full weight; the camera
 // ray, and escaped rays when the background is no light (scene_lights.cpp), too. Delta lights (point, spot,
 // a directional light without a diameter) come only from NEE, at full weight; a sun with an
-// angular diameter and an emitting background (render/background_light.hpp) are found by escaped
+// angular diameter and an emitting background (render/lights/background_light.hpp) are found by escaped
 // rays too (LightSet::escaped_radiance, MIS weighted). Sampling::BsdfOnly turns NEE
 // off and gives every emitter hit full weight: an independent estimator of the same integral.
 //
@@ -30,14 +30,14 @@
 
 #include "collision/ray.hpp"
 #include "raytracer/accel/accel.hpp"
-#include "raytracer/render/guiding_sd_tree.hpp"
-#include "raytracer/render/lights.hpp"
+#include "raytracer/render/guiding/guiding_sd_tree.hpp"
+#include "raytracer/render/lights/lights.hpp"
 #include "raytracer/render/media/scene_media.hpp"
-#include "raytracer/render/path_forensics.hpp"
+#include "raytracer/render/film/path_forensics.hpp"
 #include "raytracer/render/planted_defect.hpp"
-#include "raytracer/render/roulette.hpp"
-#include "raytracer/render/sample_features.hpp"
-#include "raytracer/render/sampler.hpp"
+#include "raytracer/render/sampling/roulette.hpp"
+#include "raytracer/render/film/sample_features.hpp"
+#include "raytracer/render/sampling/sampler.hpp"
 #include "raytracer/scene/scene.hpp"
 
 namespace sweeptrace {

@@ -10,10 +10,10 @@
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
-#include "raytracer/render/bsdf.hpp"
+#include "raytracer/render/materials/bsdf.hpp"
 #include "raytracer/render/integrators/bidir_mis.hpp"
 #include "raytracer/render/integrators/mis_window.hpp"
-#include "raytracer/render/sampling.hpp"
+#include "raytracer/render/sampling/sampling.hpp"
 #include "raytracer/scene/film_limits.hpp"
 
 namespace sweeptrace {

@@ -19,7 +19,7 @@
 #include "raytracer/accel/accel.hpp"
 #include "raytracer/render/media/medium_model.hpp"
 #include "raytracer/render/media/tracking.hpp"
-#include "raytracer/render/random.hpp"
+#include "raytracer/render/sampling/random.hpp"
 #include "raytracer/scene/scene.hpp"
 
 namespace sweeptrace {

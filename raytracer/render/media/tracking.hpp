@@ -23,7 +23,7 @@
 #include <glm/vec3.hpp>
 
 #include "raytracer/render/media/medium_model.hpp"
-#include "raytracer/render/random.hpp"
+#include "raytracer/render/sampling/random.hpp"
 
 namespace sweeptrace {
 

@@ -17,7 +17,7 @@ constexpr int kFirstNm = 380, kLastNm = 780;  // the weights' range, every nm
 constexpr int kThetaSteps = 90;               // midpoints of one-degree steps
 
 // The textbook form with complex n cos(theta_t) = sqrt(n^2 - sin^2), independent of the
-// renderer's real closed form (render/bsdf_conductor.cpp), as the Python tool's.
+// renderer's real closed form (render/materials/bsdf_conductor.cpp), as the Python tool's.
 double fresnel_complex(double cos_i, double eta, double k) {
     using C = std::complex<double>;
     const C n2 = C(eta, k) * C(eta, k);

@@ -8,7 +8,7 @@
 //
 // Environment maps. pbrt-v4's image infinite light reads a square image in its equal-area
 // octahedral mapping: our environment's "mapping": "equal-area", whose frame is pbrt's light
-// space turned by `Rotate -90 1 0 0` ((x, y, z)_pbrt = (x, -z, y)_ours, render/environment_light.hpp).
+// space turned by `Rotate -90 1 0 0` ((x, y, z)_pbrt = (x, -z, y)_ours, render/lights/environment_light.hpp).
 // A 2:1 image is taken as pbrt-v3's equirectangular map: +z up in light space, u = phi / 2 pi from
 // +x toward +y, v = theta / pi from +z; ours has +y up, u = 0.5 from -z, turning right-handed
 // toward +x; as maps of directions the two differ by (x, y, z)_pbrt = (z, -x, y)_ours, a mirror,
@@ -55,7 +55,7 @@ void add_background(WorldContext& w, const Where& at, const glm::dvec3& radiance
 }
 
 // pbrt-v4's "portal", four points in the light's space, as our background's "portal" in the
-// world (render/portal.hpp; the loader checks it is a rectangle, as pbrt-v4 does). It only guides
+// world (render/lights/portal.hpp; the loader checks it is a rectangle, as pbrt-v4 does). It only guides
 // next event estimation; pbrt-v4 also darkens the sky behind the portal's plane, which we do not.
 void add_portal(WorldContext& w, const LightRecord& l, const std::string& what) {
     const ParamList& p = l.statement.params;

@@ -3,7 +3,7 @@
 // (scenes/README.md "Materials", "Textures"). The mapping, parameter by parameter, and what is
 // approximated: docs/pbrt-import.md. Roughness is converted exactly: pbrt-v4's GGX alpha is
 // sqrt(roughness) with "remaproughness" true (its default) and roughness itself otherwise; ours is
-// alpha = roughness^2 (render/bsdf.cpp), so our roughness = sqrt(alpha).
+// alpha = roughness^2 (render/materials/bsdf.cpp), so our roughness = sqrt(alpha).
 #include <filesystem>
 #include <map>
 #include <optional>
