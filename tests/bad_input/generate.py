@@ -3,8 +3,9 @@
 
 Each case is the files a hostile or careless user hands sweeptrace, the command line, the exit
 code expected and a pattern its one-line message must match (it names the file and the place).
-run_corpus.py runs them. Regenerate with `python3 tests/bad_input/generate.py` (the output is
-committed; rerunning it writes the same bytes).
+run_corpus.py runs them. Regenerate with `/usr/bin/python3 tests/bad_input/generate.py` (Debian's
+Python, whose python3-openvdb writes the VDB cases' files; the output is committed; rerunning it
+writes the same bytes).
 """
 import gzip
 import json
