@@ -86,7 +86,7 @@ void check_background(float background, const std::filesystem::path& file, const
 // older header; they are left to OpenVDB.
 class LayoutReader {
 public:
-    LayoutReader(const std::filesystem::path& file) : file_(file), in_(file, std::ios::binary) {
+    explicit LayoutReader(const std::filesystem::path& file) : file_(file), in_(file, std::ios::binary) {
         in_.seekg(0, std::ios::end);
         size_ = static_cast<std::int64_t>(in_.tellg());
         in_.seekg(0);
@@ -156,7 +156,7 @@ VdbDensity read_openvdb(const std::filesystem::path& file, const std::string& gr
     check_openvdb_layout(file);
     openvdb::initialize();  // registers the grid and map types; idempotent
     openvdb::io::File f(file.string());
-    f.open(false);  // read the grids into memory, no delayed loading (the file may change later)
+    f.open(false);  // no delayed loading: grids are read whole, when asked for, after the checks
     if (!f.hasGrid(grid)) {
         std::string names;
         for (auto it = f.beginName(); it != f.endName(); ++it) names += (names.empty() ? "" : ", ") + quoted(*it);
@@ -233,18 +233,18 @@ VdbDensity read_nanovdb(const std::filesystem::path& file, const std::string& gr
     return out;
 }
 
-enum class Format { OpenVdb, NanoVdb, Neither };
+enum class VdbFormat { OpenVdb, NanoVdb, Neither };
 
 // By the magic numbers: OpenVDB's 32-bit 0x56444220 (" BDV" in the file) and NanoVDB's 64-bit
 // "NanoVDB0" (both little-endian, as both libraries write them).
-Format sniff(const std::filesystem::path& file) {
+VdbFormat sniff(const std::filesystem::path& file) {
     std::ifstream in(file, std::ios::binary);
     char head[8] = {};
     in.read(head, sizeof head);
     const auto got = in.gcount();
-    if (got >= 4 && std::memcmp(head, " BDV", 4) == 0) return Format::OpenVdb;
-    if (got >= 8 && std::memcmp(head, "NanoVDB0", 8) == 0) return Format::NanoVdb;
-    return Format::Neither;
+    if (got >= 4 && std::memcmp(head, " BDV", 4) == 0) return VdbFormat::OpenVdb;
+    if (got >= 8 && std::memcmp(head, "NanoVDB0", 8) == 0) return VdbFormat::NanoVdb;
+    return VdbFormat::Neither;
 }
 
 }  // namespace
@@ -252,11 +252,11 @@ Format sniff(const std::filesystem::path& file) {
 VdbDensity read_vdb_density(const std::filesystem::path& file, const std::string& grid, const std::string& what) {
     if (const std::string problem = file_kind_problem(file); !problem.empty()) fail(file, problem);
     note_read_file(file);
-    const Format format = sniff(file);
-    if (format == Format::Neither) fail(file, "not an OpenVDB (.vdb) or NanoVDB (.nvdb) file (its first bytes are neither's magic number)");
+    const VdbFormat format = sniff(file);
+    if (format == VdbFormat::Neither) fail(file, "not an OpenVDB (.vdb) or NanoVDB (.nvdb) file (its first bytes are neither's magic number)");
     VdbDensity out;
     try {
-        out = format == Format::OpenVdb ? read_openvdb(file, grid, what) : read_nanovdb(file, grid, what);
+        out = format == VdbFormat::OpenVdb ? read_openvdb(file, grid, what) : read_nanovdb(file, grid, what);
     } catch (const InputError&) {
         throw;
     } catch (const openvdb::Exception& e) {
@@ -266,7 +266,7 @@ VdbDensity read_vdb_density(const std::filesystem::path& file, const std::string
         // is a size read from corrupt data.
         fail(file, "corrupt: reading it asked for more memory than its metadata declares");
     } catch (const std::exception& e) {
-        fail(file, std::string(format == Format::OpenVdb ? "OpenVDB" : "NanoVDB") + " cannot read it: " + e.what());
+        fail(file, std::string(format == VdbFormat::OpenVdb ? "OpenVDB" : "NanoVDB") + " cannot read it: " + e.what());
     }
     return out;
 }
@@ -276,7 +276,7 @@ std::vector<std::string> vdb_grid_names(const std::filesystem::path& file) {
     if (!file_kind_problem(file).empty()) return names;
     try {
         switch (sniff(file)) {
-            case Format::OpenVdb: {
+            case VdbFormat::OpenVdb: {
                 check_openvdb_layout(file);
                 openvdb::initialize();
                 openvdb::io::File f(file.string());
@@ -284,10 +284,10 @@ std::vector<std::string> vdb_grid_names(const std::filesystem::path& file) {
                 for (auto it = f.beginName(); it != f.endName(); ++it) names.push_back(*it);
                 break;
             }
-            case Format::NanoVdb:
+            case VdbFormat::NanoVdb:
                 for (const auto& m : nanovdb::io::readGridMetaData(file.string())) names.push_back(m.gridName);
                 break;
-            case Format::Neither: break;
+            case VdbFormat::Neither: break;
         }
     } catch (const std::exception&) {
         names.clear();  // read_vdb_density reports it

@@ -7,11 +7,15 @@
 //   - it renders the same as that grid medium (z-test), from a .vdb through our JSON and from
 //     a .nvdb through the pbrt importer; the grid mirrored in x is told apart;
 //   - a .nvdb with a "temperature" grid is imported with a warning naming what is lost.
-// Bad files (missing, not a VDB, truncated, another grid name or value type, a box over the
-// memory budget) are the bad-input corpus's (tests/bad_input/, media-vdb-* and pbrt-nanovdb-*).
+//   - a truncated .nvdb, and one whose dense box is over the budget, are refused at the
+//     MakeNamedMedium line (here: Python's openvdb writes no .nvdb for the corpus).
+// The other bad files (missing, not a VDB, truncated .vdb, another grid name or value type, a
+// box over the budget) are the bad-input corpus's (tests/bad_input/, media-vdb-*, pbrt-nanovdb-*).
 #include <catch2/catch.hpp>
 
+#include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -23,6 +27,7 @@
 
 #include "medium_test_scenes.hpp"
 #include "pbrt_test_support.hpp"
+#include "raytracer/load_budget.hpp"
 #include "raytracer/scene/load_scene.hpp"
 #include "raytracer/scene/pbrt/pbrt_import.hpp"
 #include "scene_test_files.hpp"
@@ -168,4 +173,27 @@ TEST_CASE("media vdb: a nanovdb file's temperature grid is warned as lost; anoth
     CHECK(sweeptrace::test::has_warning(warnings, "the blackbody emission of a \"temperature\" grid is not imported"));
     REQUIRE(s.media.size() == 1);
     check_same_grid(s.media[0], reference_grid());
+}
+
+TEST_CASE("media vdb: a truncated or oversized .nvdb is refused at its MakeNamedMedium line", "[media][vdb][pbrt]") {
+    const TempDir dir;
+    const std::filesystem::path nvdb = dir.path() / "smoke.nvdb";
+    const std::filesystem::path scene = dir.write("scene.pbrt", nanovdb_pbrt());
+    std::vector<std::string> warnings;
+    // Cut in its grid's buffer.
+    write_nvdb(nvdb, {density_grid("density")});
+    std::filesystem::resize_file(nvdb, std::filesystem::file_size(nvdb) / 2);
+    CHECK_THROWS_WITH(load_pbrt_scene(scene, false, warnings),
+                      Catch::Contains("scene.pbrt:6: MakeNamedMedium \"smoke\": ") && Catch::Contains("smoke.nvdb: NanoVDB cannot read it"));
+    // Two voxels 3000 apart: a small file whose dense box (3001^3 floats, 108 GB) is over the budget.
+    openvdb::FloatGrid::Ptr far = openvdb::FloatGrid::create(0.0f);
+    far->setName("density");
+    far->tree().setValue(openvdb::Coord(0, 0, 0), 1.0f);
+    far->tree().setValue(openvdb::Coord(3000, 3000, 3000), 1.0f);
+    write_nvdb(nvdb, {far});
+    set_load_memory_limit(std::uint64_t{1} << 30);
+    CHECK_THROWS_WITH(load_pbrt_scene(scene, false, warnings),
+                      Catch::Contains("scene.pbrt:6: MakeNamedMedium \"smoke\": ") &&
+                          Catch::Contains("(its active box, 3001 x 3001 x 3001 voxels, dense) needs 108.11 GB"));
+    set_load_memory_limit(std::nullopt);
 }
