@@ -147,7 +147,7 @@ TEST_CASE("media vdb: a .vdb grid loads as the grid medium of its values over it
     check_same_grid(load_vdb_medium(dir), reference_grid());
 }
 
-TEST_CASE("media vdb: a .vdb medium renders as the equivalent grid medium; a mirrored grid is told apart", "[media][vdb]") {
+TEST_CASE("media vdb: a .vdb medium renders as the equivalent grid medium, and a mirrored grid is told apart", "[media][vdb]") {
     const TempDir dir;
     const RenderResult reference = render_ball(reference_grid(), 3);
     CHECK(sweeptrace::test::blocks_apart(reference, render_ball(load_vdb_medium(dir), 4)) == 0);
@@ -165,7 +165,7 @@ TEST_CASE("media vdb: pbrt-v4's nanovdb medium imports as the same grid and rend
     CHECK(sweeptrace::test::blocks_apart(render_ball(reference_grid(), 3), render_ball(s.media[0], 6)) == 0);
 }
 
-TEST_CASE("media vdb: a nanovdb file's temperature grid is warned as lost; another gridname is read", "[media][vdb][pbrt]") {
+TEST_CASE("media vdb: a nanovdb file's temperature grid is warned as lost, and another gridname is read", "[media][vdb][pbrt]") {
     const TempDir dir;
     write_nvdb(dir.path() / "smoke.nvdb", {density_grid("temperature", 100.0f), density_grid("smoky")});
     std::vector<std::string> warnings;
