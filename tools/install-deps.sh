@@ -19,13 +19,15 @@ for arg in "$@"; do
 done
 packages=(build-essential cmake libglm-dev libembree-dev libstb-dev nlohmann-json3-dev
           libtinyobjloader-dev libcli11-dev libtbb-dev libopenexr-dev libjpeg-dev
-          zlib1g-dev)  # gzip: pbrt-v4 scenes' .ply.gz meshes and .pbrt.gz Includes
+          zlib1g-dev   # gzip: pbrt-v4 scenes' .ply.gz meshes and .pbrt.gz Includes
+          libopenvdb-dev libnanovdb-dev)  # media's .vdb and pbrt-v4's .nvdb density grids
 if [ "$mode" = test ]; then
   packages+=(catch2 python3 python3-matplotlib
              ccache         # cached objects: a rebuild after a pull compiles only what changed
              chromium       # the diff HTML report test renders the page headless
              slurm-wlm munge  # the farm test's single-node Slurm (tools/slurm/)
-             clang libclang-rt-14-dev)  # clang + its runtime: the libFuzzer harnesses (tests/fuzz)
+             clang libclang-rt-14-dev  # clang + its runtime: the libFuzzer harnesses (tests/fuzz)
+             python3-openvdb)  # tests/bad_input/generate.py writes the corpus's .vdb files
 fi
 missing=()
 for p in "${packages[@]}"; do

@@ -8,6 +8,7 @@
 // 1 + 2 gamma(3) never rejects a box the exact ray meets. A zero direction component gives an
 // infinite inv_dir; a ray lying exactly in a slab plane then gives 0 * inf = NaN, and the
 // comparisons are written so a NaN never shrinks the interval (the box is kept: conservative).
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
@@ -24,7 +25,8 @@ struct TraversalRay {
     glm::vec3 origin;
     glm::vec3 inv_dir;
     // Byte offsets, from the start of a BvhNode, of the near and far face coordinate per axis:
-    // lo (offset 0) is met first where the dir component is >= 0, hi (offset 16) otherwise.
+    // lo (offset 0) is met first where the dir component is +0 or above, hi (offset 16) where it
+    // is -0 or below.
     // Picking faces by offset keeps the box test free of branches and selects.
     std::uint32_t near_offset[3];
     std::uint32_t far_offset[3];
@@ -34,8 +36,10 @@ struct TraversalRay {
         for (int a = 0; a < 3; ++a) {
             const std::uint32_t lo = static_cast<std::uint32_t>(offsetof(collision::BvhNode, lo)) + 4u * a;
             const std::uint32_t hi = static_cast<std::uint32_t>(offsetof(collision::BvhNode, hi)) + 4u * a;
-            near_offset[a] = ray.dir[a] < 0.0f ? hi : lo;
-            far_offset[a] = ray.dir[a] < 0.0f ? lo : hi;
+            // By the sign bit, as inv_dir has it: a -0 component has inv_dir -inf, so its near
+            // face is hi (a `dir < 0` test took lo, and every box was missed).
+            near_offset[a] = std::signbit(ray.dir[a]) ? hi : lo;
+            far_offset[a] = std::signbit(ray.dir[a]) ? lo : hi;
         }
     }
 };

@@ -27,6 +27,7 @@
 // The mesh leaf loops are flattened (the scalar test inlined into them); in the AVX2 unit that
 // compiles the scalar test with VEX encodings but still without FMA.
 #include <bit>
+#include <cmath>
 #include <cstdint>
 #include <utility>
 
@@ -58,8 +59,10 @@ struct WideRay {
             inv_dir_far[a] = inv_dir[a] * kSlabFarScale;
             const std::uint32_t lo = static_cast<std::uint32_t>(sizeof(float)) * kWideWidth * (2 * a);
             const std::uint32_t hi = lo + static_cast<std::uint32_t>(sizeof(float)) * kWideWidth;
-            near_offset[a] = ray.dir[a] < 0.0f ? hi : lo;
-            far_offset[a] = ray.dir[a] < 0.0f ? lo : hi;
+            // By the sign bit, as inv_dir has it: a -0 component has inv_dir -inf, so its near
+            // face is hi (a `dir < 0` test took lo, and every box was missed).
+            near_offset[a] = std::signbit(ray.dir[a]) ? hi : lo;
+            far_offset[a] = std::signbit(ray.dir[a]) ? lo : hi;
         }
     }
 };

@@ -32,6 +32,7 @@
 #include "raytracer/render/integrators/path.hpp"
 #include "raytracer/render/integrators/vcm.hpp"
 #include "raytracer/render/lights/lights.hpp"
+#include "raytracer/render/media/media_nesting.hpp"
 #include "raytracer/render/film/path_forensics.hpp"
 #include "raytracer/render/planted_defect.hpp"
 #include "raytracer/render/render_tiles.hpp"
@@ -624,6 +625,8 @@ RenderResult render_with_planted_defect(const Scene& scene, const Accel& accel, 
     }
     if (options.adaptive && (options.integrator != IntegratorKind::Path || options.guiding || options.forensics != nullptr))
         throw std::invalid_argument("render: adaptive sampling is the path integrator's, without guiding or forensics");
+    // Boundaries that contradict each other are bad input, refused before any sample.
+    if (uses_media(scene)) check_media_nesting(scene, accel);
 
     const auto start = std::chrono::steady_clock::now();
     PassRenderer renderer(scene, accel, options, defect);

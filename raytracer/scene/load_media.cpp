@@ -3,7 +3,11 @@
 #include <cmath>
 #include <vector>
 
+#include <glm/matrix.hpp>
+
+#include "raytracer/input_error.hpp"
 #include "raytracer/load_budget.hpp"
+#include "raytracer/scene/vdb_grid.hpp"
 
 namespace sweeptrace {
 
@@ -38,6 +42,33 @@ std::vector<float> read_grid_values(const Node& node, std::size_t count, const s
     return values;
 }
 
+// A "vdb" medium's density: the file's grid as the dense grid a "grid" medium renders
+// (vdb_grid.hpp), its index-to-world map composed after the medium's own transform.
+void read_vdb_grid(const Node& node, Medium& m, Transform (*read_transform)(const Node&)) {
+    const Node file = node.at("file");
+    const std::string relative = file.string();
+    if (relative.empty()) file.fail("must name an OpenVDB (.vdb) or NanoVDB (.nvdb) file");
+    const std::string grid = node.has("grid") ? node.at("grid").string() : "density";
+    VdbDensity v;
+    try {
+        v = read_vdb_density(node.file().parent_path() / relative, grid, "medium \"" + excerpt(m.name) + "\"");
+    } catch (const InputError& e) {
+        file.fail(e.what());
+    }
+    const double det = glm::determinant(v.index_to_world);
+    if (!(det != 0.0) || !std::isfinite(det))
+        file.fail("grid \"" + excerpt(grid) + "\"'s index-to-world transform is singular or not finite");
+    glm::dmat4 to_medium(1.0);
+    if (auto t = node.find("transform")) to_medium = glm::dmat4(read_transform(*t).to_object);
+    m.to_medium = glm::mat4(glm::inverse(v.index_to_world) * to_medium);
+    m.nx = v.nx;
+    m.ny = v.ny;
+    m.nz = v.nz;
+    m.density = std::move(v.density);
+    m.p0 = v.p0;
+    m.p1 = v.p1;
+}
+
 Medium read_medium(const Node& node, const std::string& name, Transform (*read_transform)(const Node&)) {
     if (!node.value().is_object()) node.fail("must be an object with a \"type\"");
     const Node type_node = node.at("type");
@@ -50,8 +81,11 @@ Medium read_medium(const Node& node, const std::string& name, Transform (*read_t
         node.require_object({"type", "sigma_a", "sigma_s", "scale", "g", "emission", "size", "density", "p0", "p1",
                              "transform", "emission_scale"});
         m.kind = Medium::Kind::Grid;
+    } else if (type == "vdb") {
+        node.require_object({"type", "sigma_a", "sigma_s", "scale", "g", "emission", "file", "grid", "transform"});
+        m.kind = Medium::Kind::Grid;
     } else {
-        type_node.fail("unknown medium type \"" + type + "\" (known: homogeneous, grid)");
+        type_node.fail("unknown medium type \"" + type + "\" (known: homogeneous, grid, vdb)");
     }
     const float scale = node.has("scale") ? node.at("scale").number_at_least(0.0f, true) : 1.0f;
     m.sigma_a = read_sigma(node, "sigma_a", scale);
@@ -62,6 +96,10 @@ Medium read_medium(const Node& node, const std::string& name, Transform (*read_t
     }
     if (auto e = node.find("emission")) m.emission = e->vec3_at_least(0.0f);
     if (m.kind == Medium::Kind::Homogeneous) return m;
+    if (type == "vdb") {
+        read_vdb_grid(node, m, read_transform);
+        return m;
+    }
 
     const Node size = node.at("size");
     if (size.array_size() != 3) size.fail("must be [nx, ny, nz], three positive integers");

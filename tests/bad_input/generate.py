@@ -3,8 +3,9 @@
 
 Each case is the files a hostile or careless user hands sweeptrace, the command line, the exit
 code expected and a pattern its one-line message must match (it names the file and the place).
-run_corpus.py runs them. Regenerate with `python3 tests/bad_input/generate.py` (the output is
-committed; rerunning it writes the same bytes).
+run_corpus.py runs them. Regenerate with `/usr/bin/python3 tests/bad_input/generate.py` (Debian's
+Python, whose python3-openvdb writes the VDB cases' files; the output is committed; rerunning it
+writes the same bytes).
 """
 import gzip
 import json
@@ -546,8 +547,8 @@ pbrt_case("pbrt-fov-180", E + r"scene\.pbrt:1: Camera \"perspective\": \"fov\" m
 pbrt_case("pbrt-binary-file", E + r"scene\.pbrt:1: control byte 1", "Shape\x01\x02")
 pbrt_case("pbrt-strict-unsupported", E + r"scene\.pbrt:3: Shape \"curve\" is not supported \(ignored\) \(--strict makes this an error\)",
           PBRT_OK + 'Shape "curve"\nShape "sphere"\n', args="--strict")
-pbrt_case("pbrt-strict-unsupported-convert", E + r"scene\.pbrt:3: MakeNamedMedium \"fog\": medium type \"nanovdb\" is not supported",
-          PBRT_OK + 'MakeNamedMedium "fog" "string type" "nanovdb"\n', command="convert", args="--strict")
+pbrt_case("pbrt-strict-unsupported-convert", E + r"scene\.pbrt:3: MakeNamedMedium \"fog\": medium type \"cloud\" is not supported",
+          PBRT_OK + 'MakeNamedMedium "fog" "string type" "cloud"\n', command="convert", args="--strict")
 case("pbrt-convert-not-pbrt", 2, E + r"convert reads pbrt-v4 scenes \(\.pbrt\), got 'scene\.json'", "convert scene.json -o out.json",
      {"scene.json": scene()})
 case("pbrt-convert-out-not-json", 2, E + r"output 'out\.png': write the scene to a \.json file", "convert scene.pbrt -o out.png",
@@ -840,8 +841,8 @@ render_case("media-scale-overflow", E + r"scene\.json: media\.fog\.sigma_a: time
             media_scene({"fog": dict(FOG, sigma_a=[1e30, 0, 0], scale=1e30)}))
 render_case("media-g-one", E + r"scene\.json: media\.fog\.g: must be in \(-1, 1\)", media_scene({"fog": dict(FOG, g=1)}))
 render_case("media-g-below", E + r"scene\.json: media\.fog\.g: must be in \(-1, 1\)", media_scene({"fog": dict(FOG, g=-1.5)}))
-render_case("media-unknown-type", E + r"scene\.json: media\.fog\.type: unknown medium type \"vdb\"",
-            media_scene({"fog": dict(FOG, type="vdb")}))
+render_case("media-unknown-type", E + r"scene\.json: media\.fog\.type: unknown medium type \"cloud\" \(known: homogeneous, grid, vdb\)",
+            media_scene({"fog": dict(FOG, type="cloud")}))
 render_case("media-grid-wrong-size", E + r"scene\.json: media\.smoke\.density: must hold size\[0\] x size\[1\] x size\[2\] = 8 numbers, got 7",
             media_scene({"smoke": grid([2, 2, 2], [1] * 7)}))
 render_case("media-grid-size-zero", E + r"scene\.json: media\.smoke\.size\[1\]: must be in \[1, 16777216\]",
@@ -866,6 +867,110 @@ pbrt_case("pbrt-medium-grid-size", E + r"scene\.pbrt:3: MakeNamedMedium \"smoke\
           PBRT_OK + 'MakeNamedMedium "smoke" "string type" "uniformgrid" "integer nx" 2 "integer ny" 2 "float density" [1 2 3]\n')
 pbrt_case("pbrt-medium-g", E + r"scene\.pbrt:3: MakeNamedMedium \"fog\": \"g\" must be in \(-1, 1\)",
           PBRT_OK + 'MakeNamedMedium "fog" "string type" "homogeneous" "float g" 1\nMediumInterface "fog" ""\nShape "sphere"\n')
+
+
+# VDB density grids (scene/vdb_grid.hpp): the .vdb files are written here by Debian's
+# python3-openvdb (run this script with /usr/bin/python3), their random UUID replaced by a fixed
+# one so that rerunning writes the same bytes.
+def vdb_file(grids):
+    import tempfile
+    import pyopenvdb
+    with tempfile.TemporaryDirectory() as d:
+        path = os.path.join(d, "g.vdb")
+        pyopenvdb.write(path, grids=grids)
+        data = bytearray(open(path, "rb").read())
+    data[21:57] = b"00000000-0000-0000-0000-000000000000"  # the header's UUID, after magic, versions and a flag
+    return bytes(data)
+
+
+def float_grid(voxels, name="density", background=0.0):
+    import pyopenvdb
+    g = pyopenvdb.FloatGrid(background)
+    g.name = name
+    acc = g.getAccessor()
+    for ijk, v in voxels.items():
+        acc.setValueOn(ijk, v)
+    return g
+
+
+def vdb_scene(**medium):
+    return media_scene({"smoke": dict({"type": "vdb", "sigma_s": [1, 1, 1], "file": "smoke.vdb"}, **medium)},
+                       objects__0__inside="smoke", materials__m={"type": "interface"})
+
+
+SMOKE = {(0, 0, 0): 1.0, (1, 0, 0): 0.5}
+SMOKE_VDB = vdb_file([float_grid(SMOKE)])
+render_case("media-vdb-missing", E + r"scene\.json: media\.smoke\.file: .*nothere\.vdb: not found",
+            vdb_scene(file="nothere.vdb"))
+render_case("media-vdb-empty-name", E + r"scene\.json: media\.smoke\.file: must name an OpenVDB \(\.vdb\) or NanoVDB \(\.nvdb\) file",
+            vdb_scene(file=""))
+render_case("media-vdb-not-vdb", E + r"scene\.json: media\.smoke\.file: .*smoke\.vdb: not an OpenVDB \(\.vdb\) or NanoVDB \(\.nvdb\) file",
+            vdb_scene(), extra={"smoke.vdb": "# a smoke grid\n"})
+render_case("media-vdb-truncated", E + r"scene\.json: media\.smoke\.file: .*smoke\.vdb: truncated: grid \"density\" ends at byte 10037, the file has 5000",
+            vdb_scene(), extra={"smoke.vdb": SMOKE_VDB[:5000]})
+render_case("media-vdb-truncated-header", E + r"scene\.json: media\.smoke\.file: .*smoke\.vdb: truncated or corrupt: the file \(40 bytes\) ends inside its header",
+            vdb_scene(), extra={"smoke.vdb": SMOKE_VDB[:40]})
+render_case("media-vdb-grid-name", E + r"scene\.json: media\.smoke\.file: .*smoke\.vdb: no grid named \"density\" \(the file holds: \"temperature\"\)",
+            vdb_scene(), extra={"smoke.vdb": vdb_file([float_grid(SMOKE, name="temperature")])})
+
+
+def vec3_grid(name):
+    import pyopenvdb
+    g = pyopenvdb.Vec3SGrid()
+    g.name = name
+    g.getAccessor().setValueOn((0, 0, 0), (1, 2, 3))
+    return g
+
+
+render_case("media-vdb-grid-type", E + r"scene\.json: media\.smoke\.file: .*smoke\.vdb: grid \"vel\" holds vec3s values; a density grid holds float",
+            vdb_scene(grid="vel"), extra={"smoke.vdb": vdb_file([vec3_grid("vel")])})
+render_case("media-vdb-huge-box", E + r"scene\.json: media\.smoke\.file: .*smoke\.vdb: medium \"smoke\"'s grid \"density\" \(its active box, "
+            r"3001 x 3001 x 3001 voxels, dense\) needs 108\.11 GB, .* over the load budget of 1\.07 GB \(--max-memory\)",
+            vdb_scene(), extra={"smoke.vdb": vdb_file([float_grid({(0, 0, 0): 1.0, (3000, 3000, 3000): 1.0})])},
+            args="--max-memory 1G")
+render_case("media-vdb-negative-density", E + r"scene\.json: media\.smoke\.file: .*smoke\.vdb: grid \"density\"'s voxel \(1, 0, 0\) is -2\.0+; a density must be >= 0",
+            vdb_scene(), extra={"smoke.vdb": vdb_file([float_grid({(0, 0, 0): 1.0, (1, 0, 0): -2.0})])})
+render_case("media-vdb-background", E + r"scene\.json: media\.smoke\.file: .*smoke\.vdb: grid \"density\"'s background value is 0\.5\d*, not 0",
+            vdb_scene(), extra={"smoke.vdb": vdb_file([float_grid(SMOKE, background=0.5)])})
+pbrt_case("pbrt-nanovdb-missing", E + r"scene\.pbrt:3: MakeNamedMedium \"smoke\": .*nothere\.nvdb: not found",
+          PBRT_OK + 'MakeNamedMedium "smoke" "string type" "nanovdb" "string filename" "nothere.nvdb"\n'
+          'MediumInterface "smoke" ""\nMaterial "interface"\nShape "sphere"\n')
+pbrt_case("pbrt-nanovdb-no-filename", E + r"scene\.pbrt:3: MakeNamedMedium \"smoke\": a \"nanovdb\" medium needs \"string filename\"",
+          PBRT_OK + 'MakeNamedMedium "smoke" "string type" "nanovdb"\nMediumInterface "smoke" ""\nShape "sphere"\n')
+pbrt_case("pbrt-nanovdb-not-nvdb", E + r"scene\.pbrt:3: MakeNamedMedium \"smoke\": .*smoke\.nvdb: not an OpenVDB \(\.vdb\) or NanoVDB \(\.nvdb\) file",
+          PBRT_OK + 'MakeNamedMedium "smoke" "string type" "nanovdb" "string filename" "smoke.nvdb"\n'
+          'MediumInterface "smoke" ""\nMaterial "interface"\nShape "sphere"\n', extra={"smoke.nvdb": "NanoVDB?"})
+
+# Media inside media with no way out (render/media/media_nesting.hpp): a boundary or the camera
+# whose declared medium is not the one the surface it faces says.
+FOG_BOX = {"type": "box", "min": [-2, -2, -2], "max": [2, 2, 2], "material": "i", "inside": "fog"}
+
+
+def nesting_scene(**changes):
+    s = json.loads(media_scene({"fog": FOG}, **changes))
+    s["materials"]["i"] = {"type": "interface"}
+    s["objects"].insert(0, FOG_BOX)
+    return json.dumps(s)
+
+
+# The ball (objects[1]) bounds fog inside and says vacuum outside, but the fog box is around it.
+render_case("media-nesting-outside", E + r"scene\.json: media do not nest: objects\[1\] \(sphere\)'s \"outside\" is vacuum, but from its point "
+            r"\([-\d., ]+\) along its outward normal the first surface, objects\[0\] \(box\), has \"fog\" on that side",
+            nesting_scene(objects__0__radius=0.5, objects__0__inside="fog"))
+# The camera, in the fog box, says vacuum (the diffuse ball beside it is no boundary: no verdict).
+render_case("media-nesting-camera", E + r"scene\.json: media do not nest: the camera's \"medium\" is vacuum, but looking from \(0, 0, 1\.5\) along "
+            r"\(1, 0, 0\) the first surface, objects\[0\] \(box\), has \"fog\" on that side",
+            nesting_scene(camera__position=[0, 0, 1.5], camera__look_at=[0, 0, -1]))
+# A glass ball filling most of the fog box says vacuum outside: seen from the box's inside first.
+render_case("media-nesting-inside", E + r"scene\.json: media do not nest: objects\[0\] \(box\)'s \"inside\" is \"fog\", but from its point "
+            r"\([-\d., ]+\) along its inward normal the first surface, glass ball, has vacuum on that side",
+            nesting_scene(objects__0__radius=1.9, objects__0__inside="fog", objects__0__name="glass ball"))
+# pbrt: a glass sphere (line 5) with vacuum outside, in a fog sphere (line 10).
+pbrt_case("pbrt-medium-nesting", E + r"scene\.pbrt: media do not nest: Shape \"sphere\" \(scene\.pbrt:5\)'s \"outside\" is vacuum, but .* "
+          r"the first surface, Shape \"sphere\" \(scene\.pbrt:10\), has \"fog\" on that side",
+          PBRT_OK + 'MakeNamedMedium "fog" "string type" "homogeneous"\nMediumInterface "fog" ""\n'
+          'Shape "sphere" "float radius" 1\nMaterial "interface"\nAttributeBegin\nMediumInterface "fog" ""\n'
+          'Translate 0 0 -1\nShape "sphere" "float radius" 20\nAttributeEnd\n')
 
 
 # --- sweeptrace denoise (issue 42): feature images without a channel NFOR reads, a NaN feature, a

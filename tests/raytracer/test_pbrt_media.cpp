@@ -6,6 +6,8 @@
 #include <filesystem>
 
 #include "pbrt_test_support.hpp"
+#include "raytracer/accel/accel.hpp"
+#include "raytracer/render/media/media_nesting.hpp"
 #include "raytracer/scene/pbrt/pbrt_import.hpp"
 
 using namespace sweeptrace;
@@ -45,14 +47,14 @@ TEST_CASE("pbrt media: MakeNamedMedium, MediumInterface and the interface materi
 
 TEST_CASE("pbrt media: an unsupported medium is warned with what is lost and is vacuum where named", "[pbrt][media]") {
     const TempDir dir;
-    const auto c = convert_text(dir, world_with("MakeNamedMedium \"cloud\" \"string type\" \"nanovdb\" \"string filename\" \"c.nvdb\"\n"
+    const auto c = convert_text(dir, world_with("MakeNamedMedium \"cloud\" \"string type\" \"cloud\" \"float density\" 2\n"
                                                 "MediumInterface \"cloud\" \"\"\nShape \"sphere\""));
-    CHECK(has_warning(c.warnings, "MakeNamedMedium \"cloud\": medium type \"nanovdb\" is not supported"));
+    CHECK(has_warning(c.warnings, "MakeNamedMedium \"cloud\": medium type \"cloud\" is not supported"));
     CHECK_FALSE(c.doc.contains("media"));
     CHECK_FALSE(c.doc["objects"][0].contains("inside"));
 }
 
-TEST_CASE("pbrt media: volumetric-caustic and staircase2 import with their media and no media warning", "[pbrt][media]") {
+TEST_CASE("pbrt media: volumetric-caustic and staircase2 import with their media, no media warning, and nest", "[pbrt][media]") {
     const std::filesystem::path shared = std::filesystem::path(SWEEPTRACE_SHARED_DIR) / "bitterli";
     for (const char* name : {"volumetric-caustic", "staircase2"}) {
         const std::filesystem::path file = shared / name / "scene-v4.pbrt";
@@ -69,5 +71,7 @@ TEST_CASE("pbrt media: volumetric-caustic and staircase2 import with their media
         for (const Object& o : s.objects) bounded += o.media.transition();
         CHECK(bounded > 0);
         CHECK(uses_media(s));
+        // Their boundaries agree with each other and with the camera (media_nesting.hpp).
+        CHECK_NOTHROW(check_media_nesting(s, *make_accel(AccelKind::Bvh, s)));
     }
 }

@@ -261,13 +261,13 @@ TEST_CASE("pbrt film, sampler, integrator and pixel filter", "[pbrt]") {
 TEST_CASE("pbrt warnings: one per kind, naming the first place, --strict makes them errors", "[pbrt]") {
     const TempDir dir;
     const std::string text = world_with("Shape \"curve\" \"point3 P\" [0 0 0 1 1 1 2 2 2 3 3 3]\nShape \"curve\"\n"
-                                        "Shape \"sphere\" \"float zmax\" 0.5 \"float frobs\" 2\nMakeNamedMedium \"fog\" \"string type\" \"nanovdb\"");
+                                        "Shape \"sphere\" \"float zmax\" 0.5 \"float frobs\" 2\nMakeNamedMedium \"fog\" \"string type\" \"cloud\"");
     const auto c = convert_text(dir, text);
     REQUIRE(c.warnings.size() == 4);
     CHECK(c.warnings[0] == "" + (dir.path() / "scene.pbrt").string() + ":4: Shape \"curve\" is not supported (ignored) (and 1 more like it)");
     CHECK(has_warning(c.warnings, ":6: Shape \"sphere\": a partial shape"));
     CHECK(has_warning(c.warnings, ":6: Shape \"sphere\": parameter \"float frobs\" is not supported (ignored)"));
-    CHECK(has_warning(c.warnings, ":7: MakeNamedMedium \"fog\": medium type \"nanovdb\" is not supported"));
+    CHECK(has_warning(c.warnings, ":7: MakeNamedMedium \"fog\": medium type \"cloud\" is not supported"));
     try {
         convert_text(dir, text, true);
         FAIL("--strict accepted an unsupported shape");

@@ -10,6 +10,7 @@
 #include "raytracer/scene/load_scene.hpp"
 #include "raytracer/scene/text_file.hpp"
 #include "scene_test_files.hpp"
+#include "vdb_test_files.hpp"
 
 namespace {
 
@@ -43,6 +44,7 @@ TEST_CASE("scenes README: every JSON example loads", "[scene][docs]") {
     dir.write("sky.hdr", hdr);
     sweeptrace::write_image(sweeptrace::Image(2, 2), dir.path() / "pbrt_sky.exr");  // the equal-area example's: square
     sweeptrace::write_image(sweeptrace::Image(2, 2), dir.path() / "wood.png");  // the image texture example's file
+    sweeptrace::test::write_small_vdb(dir.path() / "cloud.vdb");                   // the vdb medium example's
     std::string materials;
     for (const std::string& b : blocks)
         if (starts_with(b, "\"materials\"")) materials = b;

@@ -7,9 +7,8 @@
 // that differ (geometry/object.hpp, MediumInterface) is a boundary, and a ray leaving it toward
 // its outward normal's side is in the outside medium, otherwise in the inside one; a surface
 // without that keeps the medium the ray arrived in (a wall inside fog reflects into the fog).
-// The camera sits in Scene::camera.medium. Nothing checks that the boundaries nest consistently;
-// a ray simply carries the medium its last boundary gave it (scene/load_media.hpp reports what a
-// loader can see).
+// The camera sits in Scene::camera.medium. A ray carries the medium its last boundary gave it;
+// that the boundaries nest consistently is checked once before rendering (media_nesting.hpp).
 #include <cstdint>
 #include <vector>
 

@@ -39,8 +39,8 @@ Translation translate(const std::filesystem::path& file, const std::filesystem::
 
 // The JSON loader's message "<json>: <path>: <what>" said at the pbrt statement that wrote that
 // part of the document: "<pbrt file>:<line>: Shape \"plymesh\": <rest of path>: <what>". Objects
-// and lights by index, materials by name, and the camera, film and background. A complaint about
-// an object's "file" (the mesh loader's, which names the mesh file itself) loses the JSON path;
+// and lights by index, materials and media by name, and the camera, film and background. A
+// complaint about a "file" (the mesh or VDB reader's, which names the file itself) loses the JSON path;
 // one about another key keeps the key. nullopt for any other message.
 std::optional<std::string> said_at_statement(std::string_view message, const std::string& json_name,
                                              const pbrt::DocumentOrigins& origins) {
@@ -65,15 +65,17 @@ std::optional<std::string> said_at_statement(std::string_view message, const std
     else if (origins.camera && take("camera")) origin = &*origins.camera;
     else if (origins.film && take("film")) origin = &*origins.film;
     else if (origins.background && take("background")) origin = &*origins.background;
-    else if (rest.starts_with("materials"))
-        for (const auto& [name, o] : origins.materials) {
-            const std::string key = scene_json::key_component("materials", name);
-            if (rest.starts_with(key) && rest.size() > key.size() && (rest[key.size()] == '.' || rest[key.size()] == ':')) {
-                rest.remove_prefix(key.size());
-                origin = &o;
-                break;
-            }
-        }
+    else
+        for (const auto& [table, named] : {std::pair{"materials", &origins.materials}, std::pair{"media", &origins.media}})
+            if (rest.starts_with(table))
+                for (const auto& [name, o] : *named) {
+                    const std::string key = scene_json::key_component(table, name);
+                    if (rest.starts_with(key) && rest.size() > key.size() && (rest[key.size()] == '.' || rest[key.size()] == ':')) {
+                        rest.remove_prefix(key.size());
+                        origin = &o;
+                        break;
+                    }
+                }
     if (!origin) return std::nullopt;
     for (const std::string_view lead : {".file: ", ": ", "."}) {
         if (rest.starts_with(lead)) {

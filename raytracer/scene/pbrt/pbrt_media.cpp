@@ -1,31 +1,65 @@
 #include "raytracer/scene/pbrt/pbrt_media.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 #include <vector>
 
 #include "raytracer/load_budget.hpp"
 #include "raytracer/scene/pbrt/pbrt_world.hpp"
+#include "raytracer/scene/vdb_grid.hpp"
 
 namespace sweeptrace::pbrt {
 
 using nlohmann::json;
 
+namespace {
+
+// The medium's transform: the current transformation matrix as our transform steps.
+void write_transform(json& m, const Statement& s, const std::string& what, const glm::dmat4& ctm, Diagnostics& diag) {
+    if (ctm == glm::dmat4(1.0)) return;
+    const std::optional<json> steps = transform_json(ctm);
+    if (!steps) diag.fail(s.where, what + ": its transformation mirrors or is singular (a grid's transform must be a rotation, scale and translation)");
+    m["transform"] = *steps;
+}
+
+// pbrt-v4's NanoVDBMedium: its .nvdb file and grid, read by the scene loader.
+void write_nanovdb(json& m, const Statement& s, const std::string& what, const FileNames& files, Diagnostics& diag) {
+    const ParamList& p = s.params;
+    const std::string filename = p.get_string("filename", "", diag);
+    if (filename.empty()) diag.fail(s.where, what + ": a \"nanovdb\" medium needs \"string filename\" (its .nvdb file)");
+    m["file"] = files.json_path(filename);
+    m["grid"] = p.get_string("gridname", "density", diag);
+    std::string lost;
+    for (const char* key : {"temperaturename", "Lescale", "temperatureoffset", "temperaturecutoff", "temperaturescale"})
+        if (p.find(key)) lost += std::string(lost.empty() ? "" : ", ") + "\"" + key + "\"";
+    const std::string temperature = p.get_string("temperaturename", "temperature", diag);
+    const std::vector<std::string> grids = vdb_grid_names(files.resolve(filename));
+    if (std::find(grids.begin(), grids.end(), temperature) != grids.end() || !lost.empty())
+        diag.warn(s.where, "nanovdb temperature",
+                  what + ": the blackbody emission of a \"" + excerpt(temperature) + "\" grid is not imported (it does not emit)" +
+                      (lost.empty() ? "" : "; ignored: " + lost));
+}
+
+}  // namespace
+
 std::optional<json> translate_medium(const Statement& s, const std::string& name, const glm::dmat4& ctm,
-                                     MaterialTranslator& materials, Diagnostics& diag) {
+                                     MaterialTranslator& materials, const FileNames& files, Diagnostics& diag) {
     const ParamList& p = s.params;
     const std::string type = p.get_string("type", "", diag);
     const std::string what = "MakeNamedMedium \"" + excerpt(name) + "\"";
-    if (type != "homogeneous" && type != "uniformgrid") {
+    if (type != "homogeneous" && type != "uniformgrid" && type != "nanovdb") {
         for (const Param& q : p.params) q.used = true;
         diag.warn(s.where, "medium " + type,
-                  what + ": medium type \"" + excerpt(type) + "\" is not supported (known: homogeneous, uniformgrid); "
+                  what + ": medium type \"" + excerpt(type) + "\" is not supported (known: homogeneous, uniformgrid, nanovdb); "
                   "where it is named there is vacuum");
         return std::nullopt;
     }
     json m;
-    m["type"] = type == "homogeneous" ? "homogeneous" : "grid";
-    // pbrt-v4's defaults (HomogeneousMedium::Create and GridMedium::Create alike).
+    m["type"] = type == "homogeneous" ? "homogeneous" : type == "uniformgrid" ? "grid" : "vdb";
+    // pbrt-v4's defaults: HomogeneousMedium::Create's and GridMedium::Create's alike, and
+    // NanoVDBMedium::Create's 1.
+    const bool vdb = type == "nanovdb";
     const auto coefficient = [&](const char* key, const glm::dvec3& fallback) {
         json c = materials.colour(p, key, fallback, false, what);
         if (!c.is_array()) {
@@ -38,8 +72,8 @@ std::optional<json> translate_medium(const Statement& s, const std::string& name
         diag.warn(s.where, "medium preset", what + ": \"preset\" \"" + excerpt(p.get_string("preset", "", diag)) +
                                                 "\" (measured media) is not supported (sigma_a and sigma_s as given, or pbrt-v4's defaults)");
     }
-    coefficient("sigma_a", glm::dvec3(0.0011, 0.0024, 0.014));
-    coefficient("sigma_s", glm::dvec3(2.55, 3.21, 3.77));
+    coefficient("sigma_a", vdb ? glm::dvec3(1.0) : glm::dvec3(0.0011, 0.0024, 0.014));
+    coefficient("sigma_s", vdb ? glm::dvec3(1.0) : glm::dvec3(2.55, 3.21, 3.77));
     // Checked here, at the statement's line, rather than by the JSON loader at a key of the
     // converted document the user never wrote.
     for (const char* key : {"sigma_a", "sigma_s"})
@@ -55,6 +89,12 @@ std::optional<json> translate_medium(const Statement& s, const std::string& name
             const glm::dvec3 le = materials.emitted(p, "Le", what) * p.get_float("Lescale", 1.0, diag);
             m["emission"] = {le.r, le.g, le.b};
         }
+        p.warn_unused(what, diag);
+        return m;
+    }
+    if (vdb) {
+        write_nanovdb(m, s, what, files, diag);
+        write_transform(m, s, what, ctm, diag);
         p.warn_unused(what, diag);
         return m;
     }
@@ -74,11 +114,7 @@ std::optional<json> translate_medium(const Statement& s, const std::string& name
     m["density"] = density;
     if (const auto p0 = p.get_point3("p0", diag)) m["p0"] = {p0->x, p0->y, p0->z};
     if (const auto p1 = p.get_point3("p1", diag)) m["p1"] = {p1->x, p1->y, p1->z};
-    if (ctm != glm::dmat4(1.0)) {
-        const std::optional<json> steps = transform_json(ctm);
-        if (!steps) diag.fail(s.where, what + ": its transformation mirrors or is singular (a grid's transform must be a rotation, scale and translation)");
-        m["transform"] = *steps;
-    }
+    write_transform(m, s, what, ctm, diag);
     p.warn_unused(what, diag);
     return m;
 }

@@ -308,11 +308,13 @@ private:
             s.where = w;
             s.params = parse_params(tokens, pos, w, diag_);
             if (name.empty()) diag_.fail(w, "MakeNamedMedium needs a name (\"\" is vacuum)");
-            if (std::optional<nlohmann::json> m = translate_medium(s, name, state_.ctm, materials_, diag_)) {
+            if (std::optional<nlohmann::json> m = translate_medium(s, name, state_.ctm, materials_, files_, diag_)) {
                 scene_.media[name] = std::move(*m);
+                scene_.medium_where[name] = s.where;
                 unsupported_media_.erase(name);
             } else {
                 scene_.media.erase(name);
+                scene_.medium_where.erase(name);
                 unsupported_media_.insert(name);
             }
         } else if (d == "MediumInterface") {

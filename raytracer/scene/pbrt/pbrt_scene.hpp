@@ -65,6 +65,7 @@ struct PbrtScene {
     // MakeNamedMedium's media as our JSON (pbrt_media.hpp), by name, and the camera's (the
     // MediumInterface's outside medium where Camera was given; "" vacuum).
     std::map<std::string, nlohmann::json> media;
+    std::map<std::string, Where> medium_where;  // the MakeNamedMedium that defined it, for messages
     std::string camera_medium;
 };
 

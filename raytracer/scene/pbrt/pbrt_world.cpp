@@ -122,15 +122,19 @@ json write_world(const PbrtScene& scene, MaterialTranslator& materials, const Fi
     origins.camera = scene.camera ? origin(*scene.camera, "Camera") : ObjectOrigin{top, "Camera (the default)"};
     origins.film = scene.film ? origin(*scene.film, "Film") : ObjectOrigin{top, "Film (the default)"};
     for (const auto& [name, where] : scene.material_where) origins.materials[name] = {where, "material \"" + excerpt(name) + "\""};
+    for (const auto& [name, where] : scene.medium_where) origins.media[name] = {where, "MakeNamedMedium \"" + excerpt(name) + "\""};
     if (!scene.media.empty()) w.doc["media"] = scene.media;
     if (!scene.camera_medium.empty()) w.doc["camera"]["medium"] = scene.camera_medium;
     for (const ShapeRecord& s : scene.shapes) {
         const std::size_t before = w.doc["objects"].size();
         write_shape(w, s);
-        if (s.inside != s.outside)  // a boundary between media (scene/load_media.hpp)
+        // A boundary between media (scene/load_media.hpp), named by its statement (as lights are)
+        // for the nesting check's message (render/media/media_nesting.hpp).
+        if (s.inside != s.outside)
             for (std::size_t i = before; i < w.doc["objects"].size(); ++i) {
                 if (!s.inside.empty()) w.doc["objects"][i]["inside"] = s.inside;
                 if (!s.outside.empty()) w.doc["objects"][i]["outside"] = s.outside;
+                w.doc["objects"][i]["name"] = origin(s.statement, "Shape").what + " (" + s.statement.where.short_text() + ")";
             }
         if (const std::size_t n = w.doc["objects"].size(); n > origins.objects.size()) origins.objects.resize(n, origin(s.statement, "Shape"));
     }

@@ -38,6 +38,7 @@ struct ObjectOrigin {
 struct DocumentOrigins {
     std::vector<ObjectOrigin> objects, lights;  // objects[i], lights[i]
     std::map<std::string, ObjectOrigin> materials;  // by the material's name in the JSON
+    std::map<std::string, ObjectOrigin> media;      // by the medium's name
     std::optional<ObjectOrigin> background, camera, film;
 };
 
