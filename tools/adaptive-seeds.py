@@ -23,15 +23,8 @@ import sys
 
 import numpy as np
 
-
-def read_pfm(path):
-    with open(path, "rb") as f:
-        if f.readline().strip() != b"PF":
-            sys.exit(f"adaptive-seeds: {path}: not an RGB PFM")
-        w, h = (int(v) for v in f.readline().split())
-        scale = float(f.readline())
-        data = np.fromfile(f, dtype="<f4" if scale < 0 else ">f4", count=w * h * 3)
-    return data.reshape(h, w, 3)
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from pfm import read_pfm  # noqa: E402  (tools/pfm.py)
 
 
 def main():

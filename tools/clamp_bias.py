@@ -20,15 +20,8 @@ import tempfile
 
 import numpy as np
 
-
-def read_pfm(path):
-    with open(path, "rb") as f:
-        kind = f.readline().strip()
-        width, height = map(int, f.readline().split())
-        scale = float(f.readline())
-        data = np.frombuffer(f.read(), dtype="<f4" if scale < 0 else ">f4")
-    channels = 3 if kind == b"PF" else 1
-    return data.reshape(height, width, channels)[::-1]
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from pfm import read_pfm  # noqa: E402  (tools/pfm.py)
 
 
 def render(binary, scene, size, spp, out):
