@@ -33,6 +33,7 @@
 #include "raytracer/render/integrators/vcm.hpp"
 #include "raytracer/render/lights/lights.hpp"
 #include "raytracer/render/media/media_nesting.hpp"
+#include "raytracer/render/media/medium_model.hpp"
 #include "raytracer/render/film/path_forensics.hpp"
 #include "raytracer/render/planted_defect.hpp"
 #include "raytracer/render/render_tiles.hpp"
@@ -609,15 +610,15 @@ RenderResult render_with_planted_defect(const Scene& scene, const Accel& accel, 
     if (options.guiding && options.integrator != IntegratorKind::Path)
         throw std::invalid_argument("render: path guiding is the path integrator's");
     if (!(options.time_budget >= 0.0)) throw std::invalid_argument("render: time_budget must be >= 0 seconds");
-    // bdpt and vcm carry media on their subpaths, but not a medium's own emission (no light
-    // subpath starts in it) and at most 2^15 media (light_vertices.hpp): refused here, for every
-    // caller (the render command, bench, reference-check), rather than rendered silently wrong.
+    // bdpt and vcm carry at most 2^15 media (light_vertices.hpp), and only their camera subpaths
+    // find a medium's emission (render/media/subpath_flight.hpp), which light tracing alone has
+    // not: refused here, for every caller, rather than rendered silently wrong.
     if (options.integrator != IntegratorKind::Path) {
-        for (std::size_t i = 0; i < scene.media.size(); ++i)
-            if (scene.media[i].emission != glm::vec3(0.0f) && scene.media[i].sigma_a != glm::vec3(0.0f))
-                throw InputError(scene.source.filename().string() + ": " + integrator_name(options.integrator) +
-                                 " does not render a medium's emission (medium '" + scene.media[i].name +
-                                 "' emits); render it with --integrator path");
+        if (options.sampling == Sampling::LightTracing)
+            for (const Medium& m : scene.media)
+                if (medium_emits(m))
+                    throw InputError(scene.source.filename().string() + ": light tracing alone does not render a "
+                                     "medium's emission (medium '" + m.name + "' emits): camera subpaths find it");
         if (scene.media.size() > 32767)
             throw InputError(scene.source.filename().string() + ": " + integrator_name(options.integrator) +
                              " renders at most 32767 media (the scene has " + std::to_string(scene.media.size()) +

@@ -859,8 +859,6 @@ render_case("media-camera-unknown", E + r"scene\.json: camera\.medium: unknown m
             media_scene({}, camera__medium="fog"))
 render_case("media-interface-keys", E + r"scene\.json: materials\.m\.albedo: unknown key",
             media_scene({"fog": FOG}, materials__m={"type": "interface", "albedo": [1, 1, 1]}))
-render_case("media-bdpt-emission", E + r"scene\.json: bdpt does not render a medium's emission \(medium 'glow' emits\)",
-            media_scene({"glow": dict(FOG, emission=[1, 1, 1])}, objects__0__inside="glow"), args="--integrator bdpt")
 pbrt_case("pbrt-medium-unknown", E + r"scene\.pbrt:4: Shape: its MediumInterface names medium \"smoke\", which no MakeNamedMedium defines",
           PBRT_OK + 'MediumInterface "smoke" ""\nShape "sphere"\n')
 pbrt_case("pbrt-medium-grid-size", E + r"scene\.pbrt:3: MakeNamedMedium \"smoke\": 3 \"density\" values, but nx x ny x nz = 2 x 2 x 1",

@@ -65,6 +65,39 @@ void set_material(const Scene& scene, PathVertex& v) {
     if (v.has_textured) v.textured = textured_material(scene, base, v.hit);
 }
 
+// The medium each light emits into, for the lights where it can be found once per render
+// rather than by a probe ray on every light subpath (light_walk): a point or spot light's, whose
+// position is fixed, found by probes from it in eight directions (+-1, +-2, +-3), one per
+// octant, when they all agree. Not when a boundary moves during the shutter (where the light is
+// then depends on the sample's time), nor when the probes disagree (a light on a boundary, or
+// boundaries that do not close around it): those lights, surface lights (their point varies) and
+// lights at infinity keep the probe along each light subpath's first ray.
+std::vector<std::int32_t> light_media(const Scene& scene, const Accel& accel, const LightSet& lights, bool moving,
+                                      std::int32_t probe_each_sample) {
+    std::vector<std::int32_t> out(static_cast<std::size_t>(lights.light_count()), probe_each_sample);
+    for (const Object& o : scene.objects)
+        if (o.media.transition() && scene.camera.shutter && o.motion.moving()) return out;
+    for (std::uint32_t l = 0; l < out.size(); ++l) {
+        if (!lights.light_is_delta_position(l)) continue;
+        std::int32_t found = probe_each_sample;
+        for (int octant = 0; octant < 8; ++octant) {
+            const glm::vec3 dir = glm::normalize(glm::vec3(octant & 1 ? -1.0f : 1.0f, octant & 2 ? -2.0f : 2.0f,
+                                                           octant & 4 ? -3.0f : 3.0f));
+            std::uint64_t rays = 0;
+            const std::int32_t m = medium_at(accel, scene, collision::Ray{lights.delta_light_position(l), dir, 0.0f,
+                                                                          std::numeric_limits<float>::infinity()},
+                                             moving, 0.0f, rays);
+            if (octant > 0 && m != found) {
+                found = probe_each_sample;
+                break;
+            }
+            found = m;
+        }
+        out[l] = found;
+    }
+    return out;
+}
+
 }  // namespace
 
 struct BdptIntegrator::Subpaths {
@@ -91,6 +124,7 @@ BdptIntegrator::BdptIntegrator(const Scene& scene, const Accel& accel, const Lig
     for (const Object& o : scene.objects) moving_ = moving_ || (scene.camera.shutter && o.motion.moving());
     for (std::uint32_t l = 0; l < static_cast<std::uint32_t>(lights.light_count()); ++l)
         if (lights.light_is_found_at_infinity(l)) infinite_lights_.push_back(l);
+    if (media_.active()) light_medium_ = light_media(scene, accel, lights, moving_, kProbeEachSample);
 }
 
 bool BdptIntegrator::blocked(const collision::Ray& ray, float time) const {
@@ -212,7 +246,7 @@ glm::vec3 BdptIntegrator::camera_subpath(float x, float y, const glm::vec2& lens
 }
 
 void BdptIntegrator::camera_walk(float x, float y, const glm::vec2& lens, float time, PixelSampler& sampler,
-                                 std::uint64_t& rays, Subpaths& sp, glm::vec3& escaped) const {
+                                 std::uint64_t& rays, Subpaths& sp, glm::vec3& found) const {
     sp.cam.clear();
     PathVertex c;
     c.kind = PathVertex::Kind::Camera;
@@ -228,8 +262,8 @@ void BdptIntegrator::camera_walk(float x, float y, const glm::vec2& lens, float 
     for (int depth = 1;; ++depth) {
         PathVertex v;
         ++rays;
-        if (!next_vertex(ray, medium, time, sp.cam_rng, rays, beta, v)) {
-            escaped += escaped_radiance(sp, ray.dir, beta, pdf, v.mis_tr);
+        if (!next_vertex(ray, medium, time, sp.cam_rng, rays, beta, v, &found)) {
+            found += escaped_radiance(sp, ray.dir, beta, pdf, v.mis_tr);
             return;
         }
         v.beta = beta;
@@ -278,11 +312,14 @@ void BdptIntegrator::camera_walk(float x, float y, const glm::vec2& lens, float 
 
 // The subpath's next vertex along `ray` (traced in `medium`): a surface, or with media a medium
 // vertex where the free flight scattered (the flight's weight taken into `beta`). False when
-// the ray escapes (v.mis_tr then holds the flight's MIS transmittance).
+// the ray escapes (v.mis_tr then holds the flight's MIS transmittance). With `emitted` (the
+// camera subpath), the emission of the media the flight crossed, times the throughput before it,
+// is added there at full weight: no other strategy makes a path that ends in a medium.
 bool BdptIntegrator::next_vertex(const collision::Ray& ray, std::int32_t medium, float time, Rng& rng,
-                                 std::uint64_t& rays, glm::vec3& beta, PathVertex& v) const {
+                                 std::uint64_t& rays, glm::vec3& beta, PathVertex& v, glm::vec3* emitted) const {
     if (media_.active()) {
-        const FlightEnd fe = fly(media_, accel_, ray, medium, moving_, time, rng, rays);
+        const FlightEnd fe = fly(media_, accel_, ray, medium, moving_, time, rng, rays, emitted != nullptr);
+        if (emitted != nullptr) *emitted += beta * fe.emitted;
         beta *= fe.weight;
         v.mis_tr = fe.mis_tr;
         if (fe.kind == FlightEnd::Kind::Escaped) return false;
@@ -336,11 +373,13 @@ void BdptIntegrator::light_walk(float time, PixelSampler& sampler, std::uint64_t
     }
     std::int32_t medium = -1;
     if (media_.active()) {
-        // The medium the light emits into: its boundary's side, else found from around it.
+        // The medium the light emits into: its boundary's side, else the one found at setup,
+        // else found from around it along this ray.
         sp.light_rng = sampler.stream(kLightMediumStream);
         const bool boundary = em.object < scene_.objects.size() && scene_.objects[em.object].media.transition();
-        medium = boundary ? media_.after_crossing(em.object, em.normal, em.dir, -1)
-                          : medium_at(accel_, scene_, ray, moving_, time, rays);
+        medium = boundary                                   ? media_.after_crossing(em.object, em.normal, em.dir, -1)
+                 : light_medium_[em.light] != kProbeEachSample ? light_medium_[em.light]
+                                                             : medium_at(accel_, scene_, ray, moving_, time, rays);
         sp.light.back().medium = medium;
     }
     float pdf = em.pdf_dir;

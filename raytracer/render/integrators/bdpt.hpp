@@ -77,14 +77,16 @@ public:
 
 private:
     struct Subpaths;
+    // The camera subpath; `found` takes what the walk itself finds at full or its own weight:
+    // escaped rays (s = 0 at infinity) and the emission of media along its flights.
     void camera_walk(float x, float y, const glm::vec2& lens, float time, PixelSampler& sampler, std::uint64_t& rays,
-                     Subpaths& sp, glm::vec3& escaped) const;
+                     Subpaths& sp, glm::vec3& found) const;
     void light_walk(float time, PixelSampler& sampler, std::uint64_t& rays, Subpaths& sp) const;
     glm::vec3 connections(Subpaths& sp, const LightVertices& light, std::size_t first, std::size_t count, float time,
                           PixelSampler& sampler, std::uint64_t& rays) const;
     void store_light_vertices(const Subpaths& sp, LightVertices& out) const;
     bool next_vertex(const collision::Ray& ray, std::int32_t medium, float time, Rng& rng, std::uint64_t& rays,
-                     glm::vec3& beta, PathVertex& v) const;
+                     glm::vec3& beta, PathVertex& v, glm::vec3* emitted = nullptr) const;
     bool light_roulette(PixelSampler& sampler, int b, glm::vec3& beta, float beta_start) const;
     glm::vec3 escaped_radiance(const Subpaths& sp, const glm::vec3& dir, const glm::vec3& beta, float pdf,
                                const glm::vec3& mis_tr) const;
@@ -123,6 +125,10 @@ private:
     float filter_radius_;
     std::vector<std::uint32_t> infinite_lights_;  // found by escaping rays (suns, the environment)
     SceneMedia media_;                            // inactive in vacuum: the walks trace surfaces alone
+    // With media, per light: the medium a point or spot light emits into, found once
+    // (light_media() in bdpt.cpp), or kProbeEachSample where each light subpath finds it.
+    static constexpr std::int32_t kProbeEachSample = -2;
+    std::vector<std::int32_t> light_medium_;
 };
 
 }  // namespace sweeptrace

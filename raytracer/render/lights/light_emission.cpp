@@ -45,6 +45,10 @@ bool LightSet::light_is_delta_position(std::uint32_t light) const {
     return k < scene_lights_.size() && scene_lights_[k].light->type != SceneLight::Type::Directional;
 }
 
+glm::vec3 LightSet::delta_light_position(std::uint32_t light) const {
+    return scene_lights_[light - lights_.size()].light->position;
+}
+
 bool LightSet::light_is_at_infinity(std::uint32_t light) const {
     if (light < lights_.size()) return false;
     const std::size_t k = light - lights_.size();

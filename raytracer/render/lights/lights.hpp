@@ -174,6 +174,8 @@ public:
     // Lights at infinity that an escaping ray can find (suns with a disc, the environment).
     bool light_is_found_at_infinity(std::uint32_t light) const;
     bool light_is_delta_position(std::uint32_t light) const;
+    // A point or spot light's position (light_is_delta_position), where it emits from.
+    glm::vec3 delta_light_position(std::uint32_t light) const;
     bool light_is_at_infinity(std::uint32_t light) const;
     // Radiance of a light at infinity along `dir` (toward the light); zero outside a sun's disc.
     glm::vec3 radiance_at_infinity(std::uint32_t light, const glm::vec3& dir) const;

@@ -10,7 +10,7 @@ namespace sweeptrace {
 MediumModel::MediumModel(const Medium& m, int majorant_res) : m_(&m) {
     const glm::vec3 st = m.sigma_a + m.sigma_s;
     max_sigma_t_ = std::max(st.x, std::max(st.y, st.z));
-    emits_ = m.emission != glm::vec3(0.0f) && m.sigma_a != glm::vec3(0.0f);
+    emits_ = medium_emits(m);
     if (m.kind == Medium::Kind::Grid) {
         const glm::vec3 extent = m.p1 - m.p0;
         to_grid_ = glm::scale(glm::mat4(1.0f), 1.0f / extent) * glm::translate(glm::mat4(1.0f), -m.p0) * m.to_medium;

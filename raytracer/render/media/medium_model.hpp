@@ -15,6 +15,9 @@
 
 namespace sweeptrace {
 
+// Whether `m` emits light anywhere: its emission counts times sigma_a (scene/medium.hpp).
+inline bool medium_emits(const Medium& m) { return m.emission != glm::vec3(0.0f) && m.sigma_a != glm::vec3(0.0f); }
+
 struct MediumPoint {
     glm::vec3 sigma_a{0.0f}, sigma_s{0.0f};
     glm::vec3 emission{0.0f};  // radiance emitted per unit sigma_a there

@@ -34,9 +34,10 @@ glm::vec3 exp_of(const glm::vec3& sigma_t, float d) {
 }
 
 // One medium's stretch [tmin, tmax) of the unit-direction ray o + t d, channel c: true and `t`
-// set when the flight scatters in it.
+// set when the flight scatters in it. `emitted` (null: not estimated) gathers the medium's
+// emission on the stretch, per unit throughput before the flight (subpath_flight.hpp).
 bool stretch(const MediumModel& m, const glm::vec3& o, const glm::vec3& d, float tmin, float tmax, int c, Rng& rng,
-             FlightRatio& ratio, glm::vec3& mis_tr, glm::vec3& sigma_t, float& t_out) {
+             FlightRatio& ratio, glm::vec3& mis_tr, glm::vec3& sigma_t, float& t_out, glm::vec3* emitted) {
     if (m.homogeneous()) {
         const MediumPoint mp = m.at(o);
         const glm::vec3 st = mp.sigma_a + mp.sigma_s;
@@ -44,6 +45,12 @@ bool stretch(const MediumModel& m, const glm::vec3& o, const glm::vec3& d, float
         const float t = st[c] > 0.0f ? tmin - std::log1p(-u) / st[c] : std::numeric_limits<float>::infinity();
         if (t < tmax) {
             const glm::vec3 tr = exp_of(st, t - tmin);
+            if (emitted != nullptr) {
+                // The point's emission over the flight's density of it: T sigma_a Le / p(x).
+                FlightRatio e = ratio;
+                e.take(mp.sigma_a * mp.emission * tr, st * tr);
+                *emitted += e.weight();
+            }
             ratio.take(mp.sigma_s * tr, st * tr);
             mis_tr *= tr;
             sigma_t = st;
@@ -63,6 +70,8 @@ bool stretch(const MediumModel& m, const glm::vec3& o, const glm::vec3& d, float
             if (!(t < t1)) return true;
             const MediumPoint mp = m.at(o + t * d);
             const glm::vec3 st = mp.sigma_a + mp.sigma_s;
+            // Every tentative collision's emission, before its event is chosen (tracking.hpp).
+            if (emitted != nullptr) *emitted += ratio.weight() * mp.sigma_a * mp.emission / mu;
             if (rng.uniform() * mu < st[c]) {
                 ratio.take(mp.sigma_s, st);
                 sigma_t = st;
@@ -80,7 +89,7 @@ bool stretch(const MediumModel& m, const glm::vec3& o, const glm::vec3& d, float
 }  // namespace
 
 FlightEnd fly(const SceneMedia& media, const Accel& accel, collision::Ray ray, std::int32_t medium, bool moving,
-              float time, Rng& rng, std::uint64_t& rays) {
+              float time, Rng& rng, std::uint64_t& rays, bool emission) {
     FlightEnd out;
     FlightRatio ratio;
     const int c = std::min(2, static_cast<int>(rng.uniform() * 3.0f));
@@ -92,7 +101,9 @@ FlightEnd fly(const SceneMedia& media, const Accel& accel, collision::Ray ray, s
             const glm::vec3 d = ray.dir / len;
             float t = 0.0f;
             const float tmax = found ? hit.t * len : std::numeric_limits<float>::infinity();
-            if (stretch(media.model(medium), ray.origin, d, ray.tmin * len, tmax, c, rng, ratio, out.mis_tr, out.sigma_t, t)) {
+            const MediumModel& m = media.model(medium);
+            glm::vec3* emitted = emission && m.emits() ? &out.emitted : nullptr;
+            if (stretch(m, ray.origin, d, ray.tmin * len, tmax, c, rng, ratio, out.mis_tr, out.sigma_t, t, emitted)) {
                 out.kind = FlightEnd::Kind::Medium;
                 out.hit = SurfaceHit{};
                 out.hit.point = ray.origin + t * d;

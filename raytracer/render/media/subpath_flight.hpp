@@ -22,6 +22,14 @@
 // need not use the true densities to be unbiased, only to sum to 1 over the strategies of each
 // path, and a deterministic function of the path's points, the same from either subpath and in
 // every strategy (sigma_t at the vertex, the homogeneous stretches' closed forms), does.
+//
+// Emission. A camera subpath's flight also estimates the radiance the media along it emit, the
+// integral of T sigma_a Le, with the same flight's samples: in a homogeneous stretch at the point
+// it scatters, T sigma_a Le / p(x) (the mixture p above); in a grid at every tentative collision,
+// sigma_a Le / mu times the sequence-level ratio so far (as tracking.hpp's path tracer collects it,
+// pbrt-v4's volpath's collision estimator). The flight's own choices are the only strategy that
+// finds such a path (no light subpath and no light sample starts in a medium), so its MIS weight
+// is 1 (render/media/README.md).
 #include <cstdint>
 
 #include <glm/geometric.hpp>
@@ -43,12 +51,14 @@ struct FlightEnd {
     glm::vec3 weight{1.0f};    // f / p of the flight: the throughput's factor
     glm::vec3 mis_tr{1.0f};    // the transmittance the MIS densities count (closed forms; 1 over grids)
     glm::vec3 sigma_t{0.0f};   // Medium: the extinction at the point
+    glm::vec3 emitted{0.0f};   // with `emission`: the media's emission on the way, per unit throughput before the flight
 };
 
 // The flight of the ray `ray` (any direction length) starting in `medium` (-1 vacuum), through
 // interface surfaces, to the next medium vertex, surface or escape. `rays` counts the rays traced.
+// `emission` (camera subpaths): estimate the emission of the media on the way (above).
 FlightEnd fly(const SceneMedia& media, const Accel& accel, collision::Ray ray, std::int32_t medium, bool moving,
-              float time, Rng& rng, std::uint64_t& rays);
+              float time, Rng& rng, std::uint64_t& rays, bool emission);
 
 // The density factor of a flight's end (above): p for a medium vertex with extinction sigma_t,
 // P for a surface, from the segment's MIS transmittance. 1 in vacuum.
