@@ -4,14 +4,15 @@
 # independent runs (seeds 1..RUNS, their spread gives the variance of pbrt's mean) and by
 # sweeptrace's path tracer through its pbrt importer with --variance, then compared by
 # `sweeptrace diff` with both variances (the block z-test) and by channel means.
-# Usage: tools/media-pbrt-check.sh BUILD_DIR [SPP_PER_PBRT_RUN=256] [RUNS=4] [OUR_SPP=1024]
+# Usage: tools/media-pbrt-check.sh BUILD_DIR [SPP_PER_PBRT_RUN=256] [RUNS=4] [OUR_SPP=1024] [SCENE=scenes/pbrt/fog-grey.pbrt]
+# (scenes/pbrt/glow-grid.pbrt checks a uniformgrid's emission the same way)
 # Needs ../shared/tools/pbrt-v4 (its README lists the runtime packages). Prints what it measured.
 set -euo pipefail
-build=${1:?usage: media-pbrt-check.sh BUILD_DIR [SPP_PER_RUN] [RUNS] [OUR_SPP]}
+build=${1:?usage: media-pbrt-check.sh BUILD_DIR [SPP_PER_RUN] [RUNS] [OUR_SPP] [SCENE]}
 spp=${2:-256}; runs=${3:-4}; ours=${4:-1024}
 root=$(cd "$(dirname "$0")/.." && pwd)
 pbrt=$root/../shared/tools/pbrt-v4/pbrt
-scene=$root/scenes/pbrt/fog-grey.pbrt
+scene=$(realpath "${5:-$root/scenes/pbrt/fog-grey.pbrt}")
 st=$(cd "$build" && pwd)/sweeptrace
 [ -x "$pbrt" ] || { echo "media-pbrt-check: no pbrt-v4 at $pbrt (../shared/tools/pbrt-v4)"; exit 1; }
 work=$(mktemp -d)

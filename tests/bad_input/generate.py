@@ -863,6 +863,8 @@ pbrt_case("pbrt-medium-unknown", E + r"scene\.pbrt:4: Shape: its MediumInterface
           PBRT_OK + 'MediumInterface "smoke" ""\nShape "sphere"\n')
 pbrt_case("pbrt-medium-grid-size", E + r"scene\.pbrt:3: MakeNamedMedium \"smoke\": 3 \"density\" values, but nx x ny x nz = 2 x 2 x 1",
           PBRT_OK + 'MakeNamedMedium "smoke" "string type" "uniformgrid" "integer nx" 2 "integer ny" 2 "float density" [1 2 3]\n')
+pbrt_case("pbrt-medium-lescale-size", E + r"scene\.pbrt:3: MakeNamedMedium \"glow\": 3 \"Lescale\" values, but the grid has 2 \(nx x ny x nz\)",
+          PBRT_OK + 'MakeNamedMedium "glow" "string type" "uniformgrid" "integer nx" 2 "float density" [1 1] "rgb Le" [1 1 1] "float Lescale" [1 2 3]\n')
 pbrt_case("pbrt-medium-g", E + r"scene\.pbrt:3: MakeNamedMedium \"fog\": \"g\" must be in \(-1, 1\)",
           PBRT_OK + 'MakeNamedMedium "fog" "string type" "homogeneous" "float g" 1\nMediumInterface "fog" ""\nShape "sphere"\n')
 

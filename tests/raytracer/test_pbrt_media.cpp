@@ -45,6 +45,27 @@ TEST_CASE("pbrt media: MakeNamedMedium, MediumInterface and the interface materi
     CHECK_FALSE(c.doc["objects"][1].contains("outside"));
 }
 
+TEST_CASE("pbrt media: a uniformgrid's Le and per-voxel Lescale become its emission and emission_scale", "[pbrt][media]") {
+    const TempDir dir;
+    const std::string grid = "MakeNamedMedium \"glow\" \"string type\" \"uniformgrid\" \"integer nx\" 2 \"float density\" [1 1] ";
+    const auto c = convert_text(dir, world_with(grid + "\"rgb Le\" [1 1 1] \"float Lescale\" [0.5 2]\n"
+                                                "MediumInterface \"glow\" \"\"\nMaterial \"interface\"\nShape \"sphere\""));
+    CHECK(c.warnings.empty());
+    const json& glow = c.doc["media"]["glow"];
+    REQUIRE(glow.contains("emission"));
+    CHECK(glow["emission"][0].get<double>() > 0.0);  // an illuminant, normalized as pbrt-v4's lights and homogeneous Le
+    CHECK(glow["emission_scale"] == json({0.5, 2.0}));
+    // Without Lescale the emission is uniform; a count other than the grid's is refused at its line.
+    CHECK_FALSE(convert_text(dir, world_with(grid + "\"rgb Le\" [1 1 1]"))
+                    .doc["media"]["glow"].contains("emission_scale"));
+    CHECK_THROWS_WITH(convert_text(dir, world_with(grid + "\"rgb Le\" [1 1 1] \"float Lescale\" [1 2 3]")),
+                      Catch::Contains("3 \"Lescale\" values, but the grid has 2"));
+    // A blackbody "temperature" grid has no RGB counterpart: warned, not emitting.
+    const auto t = convert_text(dir, world_with(grid + "\"float temperature\" [1000 2000]"));
+    CHECK(has_warning(t.warnings, "blackbody emission from \"temperature\" is not imported"));
+    CHECK_FALSE(t.doc["media"]["glow"].contains("emission"));
+}
+
 TEST_CASE("pbrt media: an unsupported medium is warned with what is lost and is vacuum where named", "[pbrt][media]") {
     const TempDir dir;
     const auto c = convert_text(dir, world_with("MakeNamedMedium \"cloud\" \"string type\" \"cloud\" \"float density\" 2\n"

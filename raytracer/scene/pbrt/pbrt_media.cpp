@@ -98,10 +98,13 @@ std::optional<json> translate_medium(const Statement& s, const std::string& name
         p.warn_unused(what, diag);
         return m;
     }
-    if (p.has("Le") || p.has("temperature")) {
-        for (const char* key : {"Le", "Lescale", "temperature", "temperaturescale", "temperatureoffset"})
+    // A grid's blackbody emission from a "temperature" grid has no RGB counterpart here; "Le"
+    // with its optional per-voxel "Lescale" (pbrt-v4's LeScale grid, read like the density:
+    // trilinear, 0 outside the samples) is the scene's emission and emission_scale.
+    if (p.has("temperature")) {
+        for (const char* key : {"Le", "Lescale", "temperature", "temperaturescale", "temperatureoffset", "temperaturecutoff"})
             if (p.has(key)) p.find(key);
-        diag.warn(s.where, "grid medium emission", what + ": a grid's emission (\"Le\", \"temperature\") is not imported (it does not emit)");
+        diag.warn(s.where, "grid medium emission", what + ": a grid's blackbody emission from \"temperature\" is not imported (it does not emit)");
     }
     const std::vector<double> density = p.get_floats("density", diag);
     if (density.empty()) diag.fail(s.where, what + ": a \"uniformgrid\" needs \"float density\" values");
@@ -112,6 +115,20 @@ std::optional<json> translate_medium(const Statement& s, const std::string& name
                                std::to_string(nx) + " x " + std::to_string(ny) + " x " + std::to_string(nz));
     m["size"] = {nx, ny, nz};
     m["density"] = density;
+    if (!p.has("temperature") && p.has("Le")) {
+        const glm::dvec3 le = materials.emitted(p, "Le", what);
+        const std::vector<double> le_scale = p.get_floats("Lescale", diag);
+        if (!le_scale.empty() && le_scale.size() != density.size())
+            diag.fail(s.where, what + ": " + std::to_string(le_scale.size()) + " \"Lescale\" values, but the grid has " +
+                                   std::to_string(density.size()) + " (nx x ny x nz)");
+        for (const double v : le_scale)
+            if (!(v >= 0.0 && std::isfinite(v))) diag.fail(s.where, what + ": \"Lescale\" must be >= 0 and finite in every voxel");
+        m["emission"] = {le.r, le.g, le.b};
+        if (!le_scale.empty()) {
+            charge_load_memory(le_scale.size() * sizeof(json), s.where.text(), what + "'s Lescale grid");
+            m["emission_scale"] = le_scale;
+        }
+    }
     if (const auto p0 = p.get_point3("p0", diag)) m["p0"] = {p0->x, p0->y, p0->z};
     if (const auto p1 = p.get_point3("p1", diag)) m["p1"] = {p1->x, p1->y, p1->z};
     write_transform(m, s, what, ctm, diag);
