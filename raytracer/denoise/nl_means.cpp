@@ -134,6 +134,11 @@ Rect distances_baseline(const Planes& guide, const Planes& variance, const NlMea
     return distances(guide, variance, params, tile, dx, dy, scratch, dist);
 }
 
+[[gnu::target("avx512f")]] Rect distances_avx512(const Planes& guide, const Planes& variance, const NlMeansParams& params, const Rect& tile,
+                                               int dx, int dy, PatchScratch& scratch, std::vector<float>& dist) {
+    return distances(guide, variance, params, tile, dx, dy, scratch, dist);
+}
+
 void filter_tile_baseline(const Planes& image, const Planes& guide, const Planes& variance, const NlMeansParams& params, const Rect& tile,
                           Planes& result) {
     filter_tile(image, guide, variance, params, tile, result);
@@ -144,16 +149,22 @@ void filter_tile_baseline(const Planes& image, const Planes& guide, const Planes
     filter_tile(image, guide, variance, params, tile, result);
 }
 
+[[gnu::target("avx512f")]] void filter_tile_avx512(const Planes& image, const Planes& guide, const Planes& variance, const NlMeansParams& params,
+                                                const Rect& tile, Planes& result) {
+    filter_tile(image, guide, variance, params, tile, result);
+}
+
 }  // namespace
 
 Rect patch_distances(const Planes& guide, const Planes& variance, const NlMeansParams& params, const Rect& tile, int dx, int dy,
                      PatchScratch& scratch, std::vector<float>& dist, FilterIsa isa) {
-    return (isa == FilterIsa::Avx2 ? distances_avx2 : distances_baseline)(guide, variance, params, tile, dx, dy, scratch, dist);
+    const auto distances_of = isa == FilterIsa::Avx512 ? distances_avx512 : isa == FilterIsa::Avx2 ? distances_avx2 : distances_baseline;
+    return distances_of(guide, variance, params, tile, dx, dy, scratch, dist);
 }
 
 Planes nl_means(const Planes& image, const Planes& guide, const Planes& variance, const NlMeansParams& params, FilterIsa isa) {
     Planes result(image.width, image.height, image.channels);
-    const auto filter = isa == FilterIsa::Avx2 ? filter_tile_avx2 : filter_tile_baseline;
+    const auto filter = isa == FilterIsa::Avx512 ? filter_tile_avx512 : isa == FilterIsa::Avx2 ? filter_tile_avx2 : filter_tile_baseline;
     for_each_tile(image_tiles(image.width, image.height),
                   [&](std::size_t, const Rect& tile) { filter(image, guide, variance, params, tile, result); });
     return result;
