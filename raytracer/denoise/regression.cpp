@@ -19,6 +19,8 @@
 #include <utility>
 #include <vector>
 
+#include <tbb/enumerable_thread_specific.h>
+
 #include "raytracer/denoise/exp_weight.hpp"
 #include "raytracer/denoise/float_vector.hpp"
 #include "raytracer/denoise/least_squares.hpp"
@@ -305,24 +307,41 @@ std::vector<Planes> collaborative_regression(const Planes& image, const Planes& 
     const NlMeansParams distance_params{params.patch_radius, r, 1.0f, params.variance_scale};
     const std::vector<Rect> tiles = image_tiles(w, h);
     std::vector<std::vector<TileResult>> results(bandwidths.size(), std::vector<TileResult>(tiles.size()));
+    // Each thread's working buffers, reused from tile to tile (each tile overwrites what it reads).
+    struct Buffers {
+        TileWork work;
+        std::vector<float> distance, dist;
+        PatchScratch scratch;
+    };
+    tbb::enumerable_thread_specific<Buffers> thread_buffers;
     for_each_tile(tiles, [&](std::size_t index, const Rect& tile) {
         const std::size_t n = std::size_t(tile.width()) * std::size_t(tile.height());
-        TileWork work;
+        Buffers& buffers = thread_buffers.local();
+        TileWork& work = buffers.work;
+        std::vector<float>& distance = buffers.distance;
         work.tile = tile;
         work.r = r;
         work.stride = kLanes + 2 * r;
         // distance[offset][row][lane]: the largest channel distance decides (a window pixel must
         // resemble the centre in every channel); infinite where the window pixel is outside the
-        // image (weight 0).
+        // image, or the lane or row outside the tile (weight 0).
         const std::size_t offset_stride = std::size_t(kTileSize) * kLanes, weights_size = std::size_t(side) * std::size_t(side) * offset_stride;
-        std::vector<float> distance(weights_size, std::numeric_limits<float>::infinity()), dist;
-        PatchScratch scratch;
+        constexpr float kFar = std::numeric_limits<float>::infinity();
+        distance.resize(weights_size);
         for (int dy = -r, o = 0; dy <= r; ++dy)
             for (int dx = -r; dx <= r; ++dx, ++o) {
-                const Rect out = patch_distances(guide, guide_variance, distance_params, tile, dx, dy, scratch, dist, isa);
-                for (int y = out.y0; y < out.y1; ++y) {
+                const Rect out = patch_distances(guide, guide_variance, distance_params, tile, dx, dy, buffers.scratch, buffers.dist, isa);
+                const std::vector<float>& dist = buffers.dist;
+                for (int y = tile.y0; y < tile.y0 + kTileSize; ++y) {
+                    float* to = distance.data() + std::size_t(o) * offset_stride + std::size_t(y - tile.y0) * kLanes;
+                    if (out.empty() || y < out.y0 || y >= out.y1) {
+                        std::fill(to, to + kLanes, kFar);
+                        continue;
+                    }
+                    std::fill(to, to + (out.x0 - tile.x0), kFar);
+                    std::fill(to + (out.x1 - tile.x0), to + kLanes, kFar);
+                    to += out.x0 - tile.x0;
                     const std::size_t from = std::size_t(y - tile.y0) * std::size_t(tile.width()) + std::size_t(out.x0 - tile.x0);
-                    float* to = distance.data() + std::size_t(o) * offset_stride + std::size_t(y - tile.y0) * kLanes + std::size_t(out.x0 - tile.x0);
                     for (int i = 0; i < out.width(); ++i) to[i] = dist[from + std::size_t(i)];
                     for (int c = 1; c < guide.channels; ++c)
                         for (int i = 0; i < out.width(); ++i) to[i] = std::max(to[i], dist[std::size_t(c) * n + from + std::size_t(i)]);
