@@ -5,13 +5,14 @@ aim is 15 s on 2 cores). A bench, not a test: it prints, asserts nothing.
 The input is rendered by the command itself: scenes/cornell-box.json at 1920x1080, 2 spp, with
 its features (render --aovs), cached in --work. NFOR's cost does not depend on the picture (every
 pixel runs the same windows), only on its size. Then `denoise` --repeats times, alternating the
-ISAs the binary offers (AVX2 where the CPU has it, the baseline by SWEEPTRACE_SIMD=scalar), each
-timed in wall seconds and in CPU seconds of the child (getrusage: user + system), so a busy
+ISAs the binary offers (--isas: `default` is AVX-512 or AVX2 where the CPU has them, `avx2` and
+`scalar` set SWEEPTRACE_SIMD to stop at AVX2 or force the baseline), each timed in wall seconds and in CPU seconds of the child (getrusage: user + system), so a busy
 machine shows as wall > CPU / threads. With --baseline BINARY the same runs of another build
 alternate with it (before/after ratios measured in one sitting).
 
 Usage: /usr/bin/python3 tools/denoise-bench.py [--binary build/sweeptrace] [--baseline OTHER]
-           [--threads 2] [--repeats 2] [--size 1920x1080] [--work /tmp/denoise-bench]
+           [--threads 2] [--repeats 2] [--size 1920x1080] [--isas default,avx2,scalar]
+           [--work /tmp/denoise-bench]
 """
 import argparse
 import os
@@ -41,6 +42,7 @@ def main():
     p.add_argument("--threads", type=int, default=2)
     p.add_argument("--repeats", type=int, default=2)
     p.add_argument("--size", default="1920x1080")
+    p.add_argument("--isas", default="default,avx2,scalar", help="this build's runs: default, avx2, scalar (comma-separated)")
     p.add_argument("--work", default="/tmp/denoise-bench")
     args = p.parse_args()
     width, height = (int(v) for v in args.size.split("x"))
@@ -51,7 +53,12 @@ def main():
                            "--height", str(height), "--spp", "2", "--aovs", "--threads", str(args.threads), "--quiet",
                            "-o", features])
         print(f"input: {features} rendered ({cpu:.1f} CPU s, {wall:.1f} s wall)")
-    runs = [("this build", args.binary, None), ("this build, SWEEPTRACE_SIMD=scalar", args.binary, "scalar")]
+    runs = []
+    for isa in args.isas.split(","):
+        if isa not in ("default", "avx2", "scalar"):
+            sys.exit(f"denoise-bench: --isas: unknown '{isa}' (default, avx2, scalar)")
+        runs.append(("this build" if isa == "default" else f"this build, SWEEPTRACE_SIMD={isa}", args.binary,
+                     None if isa == "default" else isa))
     if args.baseline:
         runs.append(("baseline build", args.baseline, None))
     print(f"denoise {width}x{height}, {args.threads} threads (wall s, CPU s):")

@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <cctype>
 #include <chrono>
+#include <cstdlib>
+#include <cstring>
 #include <optional>
 #include <string>
 #include <system_error>
@@ -40,6 +42,21 @@ void check_denoise_memory(const std::string& what, int width, int height, int th
     charge_load_memory(denoise::nfor_memory_bytes(width, height, int(features), workers), what, "NFOR's working buffers");
 }
 
+namespace {
+
+// The filters' loops in AVX-512 or AVX2 where the CPU has them (the same bits as the baseline's):
+// SWEEPTRACE_SIMD=scalar forces the baseline (simd_path.hpp), SWEEPTRACE_SIMD=avx2 stops at AVX2
+// (to measure one against the other).
+denoise::FilterIsa denoise_isa() {
+    if (default_simd_path() != SimdPath::Avx2) return denoise::FilterIsa::Baseline;
+    const char* forced = std::getenv("SWEEPTRACE_SIMD");
+    if (forced && std::strcmp(forced, "avx2") == 0) return denoise::FilterIsa::Avx2;
+    __builtin_cpu_init();
+    return __builtin_cpu_supports("avx512f") ? denoise::FilterIsa::Avx512 : denoise::FilterIsa::Avx2;
+}
+
+}  // namespace
+
 DenoiseReport denoise_file(const std::filesystem::path& in, const std::filesystem::path& out, int threads) {
     if (lowercase_extension(in) != ".exr")
         throw InputError("cannot denoise '" + in.string() + "': a feature image is an .exr file (render --aovs writes one)");
@@ -56,8 +73,7 @@ DenoiseReport denoise_file(const std::filesystem::path& in, const std::filesyste
     tbb::task_arena arena(threads > 0 ? threads : tbb::task_arena::automatic);
     const auto start = std::chrono::steady_clock::now();
     denoise::Planes result;
-    // The filters' loops in AVX2 where the CPU has it (the same bits as the baseline's).
-    const denoise::FilterIsa isa = default_simd_path() == SimdPath::Avx2 ? denoise::FilterIsa::Avx2 : denoise::FilterIsa::Baseline;
+    const denoise::FilterIsa isa = denoise_isa();
     arena.execute([&] { result = denoise::nfor(input, isa); });
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     Image image(result.width, result.height);

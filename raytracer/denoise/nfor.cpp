@@ -55,23 +55,28 @@ Planes nfor(const NforInput& in, FilterIsa isa) {
     const RegressionParams regression{3, kRegressionRadius, 2.0f};
     std::vector<Planes> candidate_even = collaborative_regression(color.even, color.odd, color_var, features_odd, regression, kCandidateK, isa);
     std::vector<Planes> candidate_odd = collaborative_regression(color.odd, color.even, color_var, features_even, regression, kCandidateK, isa);
-    Planes error[2];
-    for (int k = 0; k < 2; ++k) {
-        // The even half's filtered value against the odd half's noisy one: the squared difference
-        // overestimates the error by the odd half's variance (twice the full mean's), and the
-        // same the other way; the two filtered halves' own spread is taken out too.
-        Planes noisy_error(color.mean.width, color.mean.height, 3);
-        for (std::size_t i = 0; i < noisy_error.data.size(); ++i) {
-            const float v2 = 2.0f * color_var.data[i];
-            const float de = color.odd.data[i] - candidate_even[k].data[i], dodd = color.even.data[i] - candidate_odd[k].data[i];
-            const float spread = candidate_odd[k].data[i] - candidate_even[k].data[i];
-            noisy_error.data[i] = 0.5f * ((de * de - v2) + (dodd * dodd - v2)) - 0.25f * spread * spread;
-        }
-        error[k] = nl_means(noisy_error, color.mean, color_var, {1, 9, 1.0f, 1.0f}, isa);
+    // Both candidates' error maps in one image (channels 3k .. 3k + 2: candidate k), smoothed
+    // together: they share the guide, and so the weights.
+    Planes error(color.mean.width, color.mean.height, 6);
+    {
+        const std::size_t n = color.mean.data.size();
+        Planes noisy_error(color.mean.width, color.mean.height, 6);
+        for (int k = 0; k < 2; ++k)
+            for (std::size_t i = 0; i < n; ++i) {
+                // The even half's filtered value against the odd half's noisy one: the squared
+                // difference overestimates the error by the odd half's variance (twice the full
+                // mean's), and the same the other way; the two filtered halves' own spread is taken
+                // out too.
+                const float v2 = 2.0f * color_var.data[i];
+                const float de = color.odd.data[i] - candidate_even[k].data[i], dodd = color.even.data[i] - candidate_odd[k].data[i];
+                const float spread = candidate_odd[k].data[i] - candidate_even[k].data[i];
+                noisy_error.data[std::size_t(k) * n + i] = 0.5f * ((de * de - v2) + (dodd * dodd - v2)) - 0.25f * spread * spread;
+            }
+        error = nl_means(noisy_error, color.mean, color_var, {1, 9, 1.0f, 1.0f}, isa);
     }
     // Selection: 1 where the wider candidate's error is smaller, smoothed like the error maps.
     Planes select(color.mean.width, color.mean.height, 3);
-    for (std::size_t i = 0; i < select.data.size(); ++i) select.data[i] = error[0].data[i] < error[1].data[i] ? 0.0f : 1.0f;
+    for (std::size_t i = 0; i < select.data.size(); ++i) select.data[i] = error.data[i] < error.data[select.data.size() + i] ? 0.0f : 1.0f;
     select = nl_means(select, color.mean, color_var, {1, 9, 1.0f, 1.0f}, isa);
     Planes result_even(color.mean.width, color.mean.height, 3), result_odd = result_even;
     for (std::size_t i = 0; i < select.data.size(); ++i) {
@@ -81,7 +86,7 @@ Planes nfor(const NforInput& in, FilterIsa isa) {
     }
     candidate_even.clear();
     candidate_odd.clear();
-    error[0] = error[1] = Planes();
+    error = Planes();
 
     // 4. Second pass: the halves' mean, regressed on the halves' mean features (lightly
     // filtered), with the halves' spread as the variance of both.
@@ -101,22 +106,26 @@ Planes nfor(const NforInput& in, FilterIsa isa) {
 std::uint64_t nfor_memory_bytes(int width, int height, int feature_channels, int threads) {
     // Whole-image float channels alive at once, at the heaviest step (the odd half's candidate
     // regressions): the prefiltered features of both halves (2m), the even half's two candidates
-    // (6), and the regression's two results and its tiles' accumulation buffers (per bandwidth
-    // 4 channels over tiles grown by R = 9 on each side: (50/32)^2 < 2.5, so 2 x (3 + 10)); the
-    // error maps then hold 12 + 6 + 6, the second pass at most 4m + 12. 4m + 40 bounds them all,
-    // and the colour's variance at the halves' scale (3) is alive throughout. Before them, the
-    // features' (m) and halves_variance's five double sums (10) beside the prefilter's 2m.
+    // (6) and the regression's two results (6); the error maps then hold 12 + 6 + 6, the second
+    // pass at most 4m + 12. 4m + 20 bounds them all, and the colour's variance at the halves' scale
+    // (3) is alive throughout. Before them, the features' (m) and halves_variance's five double
+    // sums (10) beside the prefilter's 2m. Beside the channels, the regression's tiles'
+    // accumulation buffers, kept until all tiles are done: per bandwidth 4 channels (3 colours and
+    // the weights) over the tile grown by R = 9, (32 + 18)^2 pixels at most.
     const std::uint64_t pixels = std::uint64_t(width) * std::uint64_t(height);
-    const std::uint64_t channels = 4 * std::uint64_t(feature_channels) + 43;
+    const std::uint64_t channels = 4 * std::uint64_t(feature_channels) + 23;
+    const std::uint64_t tiles = std::uint64_t((width + kTileSize - 1) / kTileSize) * std::uint64_t((height + kTileSize - 1) / kTileSize);
+    const std::uint64_t grown = std::uint64_t(kTileSize + 2 * kRegressionRadius) * (kTileSize + 2 * kRegressionRadius);
+    const std::uint64_t tile_buffers = tiles * kCandidateK.size() * 4 * grown;
     // Per thread: a regression tile's distances and weights (2 x 19^2 offsets x 32^2 centres) and
     // its copy of the features and colour over the tile grown by 9 ((m + 3) x 50^2), or an
-    // NL-means tile's sums (2 x channels x 32^2), with the patch scratch and a row's normal
-    // equations (below 128 KiB).
-    const std::uint64_t tile = std::uint64_t(kTileSize) * kTileSize, grown = std::uint64_t(kTileSize + 18) * (kTileSize + 18);
+    // NL-means tile's sums (2 x channels x 32^2), with the patch scratch, a window row's terms and
+    // predictions and a row's normal equations (below 128 KiB).
+    const std::uint64_t tile = std::uint64_t(kTileSize) * kTileSize;
     const std::uint64_t channels_max = std::uint64_t(std::max(feature_channels, 3));
     const std::uint64_t per_thread =
         (2 * 19 * 19 * tile + (channels_max + 3) * grown + 2 * channels_max * tile) * sizeof(float) + (128u << 10);
-    return pixels * channels * sizeof(float) + std::uint64_t(std::max(threads, 1)) * per_thread;
+    return (pixels * channels + tile_buffers) * sizeof(float) + std::uint64_t(std::max(threads, 1)) * per_thread;
 }
 
 }  // namespace sweeptrace::denoise

@@ -1,14 +1,15 @@
 // NL-means over tiles (nl_means.hpp). For one offset (dx, dy) the distance of every pixel pair is
 // computed once over the tile grown by the patch radius, then summed over the patch by a row pass
 // and a column pass: 2 (2F + 1) additions per pixel instead of (2F + 1)^2, each sum taken afresh
-// (no running sum, so no rounding carried from one pixel to the next) over a buffer padded with
-// zeros, so every loop runs over a row of pixels without a branch and vectorizes.
+// (no running sum, so no rounding carried from one pixel to the next) in registers, over a buffer
+// padded with zeros, so every loop runs over a row of pixels without a branch and vectorizes.
 #include "raytracer/denoise/nl_means.hpp"
 
 #include <algorithm>
 #include <cmath>
 
 #include "raytracer/denoise/exp_weight.hpp"
+#include "raytracer/denoise/float_vector.hpp"
 #include "raytracer/denoise/tiles.hpp"
 
 namespace sweeptrace::denoise {
@@ -34,8 +35,27 @@ constexpr float kDistanceCap = 1e4f;
     return {std::max(a.x0, b.x0), std::max(a.y0, b.y0), std::min(a.x1, b.x1), std::min(a.y1, b.y1)};
 }
 
+// dst[i] = src[i] + src[i + step] + ... + src[i + (n - 1) step] for i < count, summed in that
+// order in registers, a vector of i at a time (the rest one at a time, the same operations).
+template <class V>
+[[gnu::always_inline]] inline void strided_sums(const float* src, std::size_t step, int n, float* dst, int count) {
+    constexpr int L = kVectorLanes<V>;
+    int i = 0;
+    for (; i + L <= count; i += L) {
+        V sum = load_floats<V>(src + i);
+        for (int t = 1; t < n; ++t) sum += load_floats<V>(src + std::size_t(t) * step + std::size_t(i));
+        store_floats(dst + i, sum);
+    }
+    for (; i < count; ++i) {
+        float sum = src[i];
+        for (int t = 1; t < n; ++t) sum += src[std::size_t(t) * step + std::size_t(i)];
+        dst[i] = sum;
+    }
+}
+
 // The loops, inlined into one function per instruction set (filter_isa.hpp) at the end of this
 // namespace.
+template <FilterIsa Isa>
 [[gnu::always_inline]] inline Rect distances(const Planes& guide, const Planes& variance, const NlMeansParams& params, const Rect& tile,
                                              int dx, int dy, PatchScratch& scratch, std::vector<float>& dist) {
     const int w = guide.width, h = guide.height, f = params.patch_radius;
@@ -50,7 +70,17 @@ constexpr float kDistanceCap = 1e4f;
     const Rect grown{out.x0 - f, out.y0 - f, out.x1 + f, out.y1 + f};
     const Rect pad = intersect(grown, valid);
     const int gw = grown.width(), gh = grown.height(), ow = out.width();
-    scratch.pixel.assign(std::size_t(gw) * std::size_t(gh), 0.0f);
+    // Only the part outside `pad` is zeroed: the rest is written for every channel below.
+    scratch.pixel.resize(std::size_t(gw) * std::size_t(gh));
+    for (int y = grown.y0; y < grown.y1; ++y) {
+        float* d = scratch.pixel.data() + std::size_t(y - grown.y0) * std::size_t(gw);
+        if (y < pad.y0 || y >= pad.y1) {
+            std::fill(d, d + gw, 0.0f);
+        } else {
+            std::fill(d, d + (pad.x0 - grown.x0), 0.0f);
+            std::fill(d + (pad.x1 - grown.x0), d + gw, 0.0f);
+        }
+    }
     scratch.row.resize(std::size_t(ow) * std::size_t(gh));
     scratch.column.resize(std::size_t(ow));
     scratch.count.resize(std::size_t(ow));
@@ -66,21 +96,15 @@ constexpr float kDistanceCap = 1e4f;
             for (int i = 0; i < pad.width(); ++i) d[i] = pixel_distance(up[i], uq[i], s * vp[i], s * vq[i], k2);
         }
         // Along rows: the 2F + 1 pixels around each of out's columns.
-        for (int y = 0; y < gh; ++y) {
-            const float* d = scratch.pixel.data() + std::size_t(y) * std::size_t(gw);
-            float* r = scratch.row.data() + std::size_t(y) * std::size_t(ow);
-            for (int i = 0; i < ow; ++i) r[i] = d[i];
-            for (int t = 1; t <= 2 * f; ++t)
-                for (int i = 0; i < ow; ++i) r[i] += d[i + t];
-        }
+        for (int y = 0; y < gh; ++y)
+            strided_sums<FloatVector<Isa>>(scratch.pixel.data() + std::size_t(y) * std::size_t(gw), 1, 2 * f + 1,
+                                           scratch.row.data() + std::size_t(y) * std::size_t(ow), ow);
         // Down columns, then the patch's mean distance.
         float* o = dist.data() + std::size_t(c) * tile_pixels;
         float* column = scratch.column.data();
         for (int y = out.y0; y < out.y1; ++y) {
             const float* r = scratch.row.data() + std::size_t(y - out.y0) * std::size_t(ow);  // grown row y - F
-            for (int i = 0; i < ow; ++i) column[i] = r[i];
-            for (int t = 1; t <= 2 * f; ++t)
-                for (int i = 0; i < ow; ++i) column[i] += r[std::size_t(t) * std::size_t(ow) + std::size_t(i)];
+            strided_sums<FloatVector<Isa>>(r, std::size_t(ow), 2 * f + 1, column, ow);
             const float rows = float(std::min(y + f + 1, pad.y1) - std::max(y - f, pad.y0));
             float* line = o + std::size_t(y - tile.y0) * std::size_t(tile.width()) + std::size_t(out.x0 - tile.x0);
             for (int i = 0; i < ow; ++i) line[i] = column[i] / (rows * scratch.count[std::size_t(i)]);
@@ -90,70 +114,85 @@ constexpr float kDistanceCap = 1e4f;
 }
 
 // One tile of nl_means: `result`'s pixels of `tile`.
+template <FilterIsa Isa>
 [[gnu::always_inline]] inline void filter_tile(const Planes& image, const Planes& guide, const Planes& variance, const NlMeansParams& params,
                                                const Rect& tile, Planes& result) {
-    const int w = image.width, channels = image.channels, r = params.search_radius;
+    // Image channel c is weighted by guide channel c mod (the guide's channels): one set of
+    // weights serves every image filtered with the same guide.
+    const int w = image.width, channels = image.channels, guides = guide.channels, r = params.search_radius;
     const std::size_t n = std::size_t(tile.width()) * std::size_t(tile.height()), tw = std::size_t(tile.width());
-    std::vector<float> sum(std::size_t(channels) * n, 0.0f), weight_sum(std::size_t(channels) * n, 0.0f);
+    std::vector<float> sum(std::size_t(channels) * n, 0.0f), weight_sum(std::size_t(guides) * n, 0.0f), weight(tw);
     std::vector<float> dist;
     PatchScratch scratch;
     for (int dy = -r; dy <= r; ++dy)
         for (int dx = -r; dx <= r; ++dx) {
-            const Rect out = distances(guide, variance, params, tile, dx, dy, scratch, dist);
-            for (int c = 0; c < channels; ++c) {
-                const float* src = image.channel(c);
+            const Rect out = distances<Isa>(guide, variance, params, tile, dx, dy, scratch, dist);
+            for (int g = 0; g < guides; ++g)
                 for (int y = out.y0; y < out.y1; ++y) {
-                    const std::size_t row = std::size_t(c) * n + std::size_t(y - tile.y0) * tw + std::size_t(out.x0 - tile.x0);
-                    const float* q = src + std::size_t(y + dy) * std::size_t(w) + std::size_t(out.x0 + dx);
-                    float *s = sum.data() + row, *ws = weight_sum.data() + row;
-                    const float* d = dist.data() + row;
+                    const std::size_t row = std::size_t(y - tile.y0) * tw + std::size_t(out.x0 - tile.x0);
+                    const float* d = dist.data() + std::size_t(g) * n + row;
+                    float* ws = weight_sum.data() + std::size_t(g) * n + row;
                     for (int i = 0; i < out.width(); ++i) {
-                        const float weight = exp_weight(d[i]);
-                        s[i] += weight * q[i];
-                        ws[i] += weight;
+                        weight[std::size_t(i)] = exp_weight(d[i]);
+                        ws[i] += weight[std::size_t(i)];
+                    }
+                    for (int c = g; c < channels; c += guides) {
+                        const float* q = image.channel(c) + std::size_t(y + dy) * std::size_t(w) + std::size_t(out.x0 + dx);
+                        float* s = sum.data() + std::size_t(c) * n + row;
+                        for (int i = 0; i < out.width(); ++i) s[i] += weight[std::size_t(i)] * q[i];
                     }
                 }
-            }
         }
     // The pixel itself has distance <= 0 (weight 1), so every sum of weights is at least 1.
     for (int c = 0; c < channels; ++c)
         for (int y = tile.y0; y < tile.y1; ++y)
             for (int x = tile.x0; x < tile.x1; ++x) {
-                const std::size_t i = std::size_t(c) * n + std::size_t(y - tile.y0) * tw + std::size_t(x - tile.x0);
-                result.at(c, x, y) = sum[i] / weight_sum[i];
+                const std::size_t i = std::size_t(y - tile.y0) * tw + std::size_t(x - tile.x0);
+                result.at(c, x, y) = sum[std::size_t(c) * n + i] / weight_sum[std::size_t(c % guides) * n + i];
             }
 }
 
 Rect distances_baseline(const Planes& guide, const Planes& variance, const NlMeansParams& params, const Rect& tile, int dx, int dy,
                         PatchScratch& scratch, std::vector<float>& dist) {
-    return distances(guide, variance, params, tile, dx, dy, scratch, dist);
+    return distances<FilterIsa::Baseline>(guide, variance, params, tile, dx, dy, scratch, dist);
 }
 
 [[gnu::target("avx2")]] Rect distances_avx2(const Planes& guide, const Planes& variance, const NlMeansParams& params, const Rect& tile,
                                             int dx, int dy, PatchScratch& scratch, std::vector<float>& dist) {
-    return distances(guide, variance, params, tile, dx, dy, scratch, dist);
+    return distances<FilterIsa::Avx2>(guide, variance, params, tile, dx, dy, scratch, dist);
+}
+
+[[gnu::target("avx512f")]] Rect distances_avx512(const Planes& guide, const Planes& variance, const NlMeansParams& params, const Rect& tile,
+                                               int dx, int dy, PatchScratch& scratch, std::vector<float>& dist) {
+    return distances<FilterIsa::Avx512>(guide, variance, params, tile, dx, dy, scratch, dist);
 }
 
 void filter_tile_baseline(const Planes& image, const Planes& guide, const Planes& variance, const NlMeansParams& params, const Rect& tile,
                           Planes& result) {
-    filter_tile(image, guide, variance, params, tile, result);
+    filter_tile<FilterIsa::Baseline>(image, guide, variance, params, tile, result);
 }
 
 [[gnu::target("avx2")]] void filter_tile_avx2(const Planes& image, const Planes& guide, const Planes& variance, const NlMeansParams& params,
                                               const Rect& tile, Planes& result) {
-    filter_tile(image, guide, variance, params, tile, result);
+    filter_tile<FilterIsa::Avx2>(image, guide, variance, params, tile, result);
+}
+
+[[gnu::target("avx512f")]] void filter_tile_avx512(const Planes& image, const Planes& guide, const Planes& variance, const NlMeansParams& params,
+                                                const Rect& tile, Planes& result) {
+    filter_tile<FilterIsa::Avx512>(image, guide, variance, params, tile, result);
 }
 
 }  // namespace
 
 Rect patch_distances(const Planes& guide, const Planes& variance, const NlMeansParams& params, const Rect& tile, int dx, int dy,
                      PatchScratch& scratch, std::vector<float>& dist, FilterIsa isa) {
-    return (isa == FilterIsa::Avx2 ? distances_avx2 : distances_baseline)(guide, variance, params, tile, dx, dy, scratch, dist);
+    const auto distances_of = isa == FilterIsa::Avx512 ? distances_avx512 : isa == FilterIsa::Avx2 ? distances_avx2 : distances_baseline;
+    return distances_of(guide, variance, params, tile, dx, dy, scratch, dist);
 }
 
 Planes nl_means(const Planes& image, const Planes& guide, const Planes& variance, const NlMeansParams& params, FilterIsa isa) {
     Planes result(image.width, image.height, image.channels);
-    const auto filter = isa == FilterIsa::Avx2 ? filter_tile_avx2 : filter_tile_baseline;
+    const auto filter = isa == FilterIsa::Avx512 ? filter_tile_avx512 : isa == FilterIsa::Avx2 ? filter_tile_avx2 : filter_tile_baseline;
     for_each_tile(image_tiles(image.width, image.height),
                   [&](std::size_t, const Rect& tile) { filter(image, guide, variance, params, tile, result); });
     return result;

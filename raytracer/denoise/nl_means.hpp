@@ -35,8 +35,10 @@ struct PatchScratch {
 Rect patch_distances(const Planes& guide, const Planes& variance, const NlMeansParams& params, const Rect& tile, int dx, int dy,
                      PatchScratch& scratch, std::vector<float>& dist, FilterIsa isa);
 
-// `image` filtered by NL-means weights computed on `guide` (same size and channels; `variance`
-// is the guide's variance of the mean): each channel averaged with its own weights. Parallel
+// `image` filtered by NL-means weights computed on `guide` (same size; `variance` is the guide's
+// variance of the mean): each channel averaged with its own weights, those of guide channel c mod
+// (guide channels). The image's channels are a multiple of the guide's: several images that
+// share a guide (NFOR's two error maps) are filtered at the cost of one set of weights. Parallel
 // over tiles, each pixel's sum taken in one fixed order: bit-identical at any thread count.
 Planes nl_means(const Planes& image, const Planes& guide, const Planes& variance, const NlMeansParams& params, FilterIsa isa);
 

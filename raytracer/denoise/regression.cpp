@@ -19,7 +19,10 @@
 #include <utility>
 #include <vector>
 
+#include <tbb/enumerable_thread_specific.h>
+
 #include "raytracer/denoise/exp_weight.hpp"
+#include "raytracer/denoise/float_vector.hpp"
 #include "raytracer/denoise/least_squares.hpp"
 #include "raytracer/denoise/tiles.hpp"
 
@@ -29,9 +32,16 @@ namespace {
 constexpr int kLanes = kTileSize;  // a row of centres; lanes past the tile's width have weight 0
 
 struct TileResult {
-    Rect area;                   // the tile grown by R, clipped to the image
-    std::vector<float> sum;      // 3 channels x area pixels: weighted predictions
-    std::vector<float> weights;  // area pixels
+    Rect area;                   // the rows of the tile grown by R, clipped to the image; columns below
+    int stride = 0;              // kLanes + 2R: columns tile.x0 - R .. tile.x0 + kLanes + R, unclipped
+    std::vector<float> sum;      // 3 channels x area rows x stride: weighted predictions
+    std::vector<float> weights;  // area rows x stride
+
+    // Column 0 of row y's buffer, channel c (3: the weights).
+    float* row(int c, int y) {
+        float* base = c < 3 ? sum.data() + std::size_t(c) * weights.size() : weights.data();
+        return base + std::size_t(y - area.y0) * std::size_t(stride);
+    }
 };
 
 // A tile's inputs and working buffers. The image and features are copied over the tile grown by R
@@ -44,65 +54,169 @@ struct TileWork {
     std::vector<float> local;      // [channel (features, then 3 colours)][row][stride]
     std::vector<float> weight;     // [offset][tile row][kLanes]
     std::vector<float> beta;       // [term][colour][kLanes] of the current row of centres
+    std::vector<float> terms;      // [feature][dx + R][kLanes]: one window row's feature terms
+    std::vector<float> products;   // [colour or weight][dx + R][2R + kLanes + 2R]: predict_row's
 
     const float* local_row(int channel, int y) const {
         return local.data() + (std::size_t(channel) * std::size_t(tile.height() + 2 * r) + std::size_t(y - tile.y0 + r)) * std::size_t(stride);
     }
 };
 
-// The terms of one window pixel for every centre of a row: x[t][lane], t = 1, dx, dy, then the
-// features relative to the centre's.
-template <int Terms>
-[[gnu::always_inline]] inline void fill_terms(const TileWork& work, int cy, int dx, int dy, float (&x)[Terms][kLanes]) {
-    const int r = work.r;
-    for (int i = 0; i < kLanes; ++i) {
-        x[0][i] = 1.0f;
-        x[1][i] = float(dx);
-        x[2][i] = float(dy);
+// Row dy of the windows of a row of centres cy, as the kernels read it. For lane i (centre
+// (tile.x0 + i, cy)) and offset dx: the weight at weight[(dx + R) * weight_stride + i], feature f's
+// term (the window pixel's value less the centre's) at terms[(f * side + dx + R) * kLanes + i], and
+// colour c at colour[c][dx + R + i].
+struct WindowRow {
+    int r = 0, side = 0;
+    float dy = 0.0f;
+    const float* weight = nullptr;
+    std::size_t weight_stride = 0;
+    const float* terms = nullptr;
+    const float* colour[3] = {};
+
+    const float* term(int f, int dx) const { return terms + (std::size_t(f) * std::size_t(side) + std::size_t(dx + r)) * kLanes; }
+};
+
+// Fills work.terms with row dy of the windows of centres cy, and returns its view.
+[[gnu::always_inline]] inline WindowRow window_row_of(TileWork& work, int features, int cy, int dy) {
+    const int r = work.r, side = 2 * r + 1;
+    const std::size_t offset_stride = std::size_t(kTileSize) * kLanes;
+    for (int f = 0; f < features; ++f) {
+        const float* centre = work.local_row(f, cy) + r;
+        const float* window = work.local_row(f, cy + dy);
+        for (int o = 0; o < side; ++o) {
+            float* t = work.terms.data() + (std::size_t(f) * std::size_t(side) + std::size_t(o)) * kLanes;
+            for (int i = 0; i < kLanes; ++i) t[i] = window[o + i] - centre[i];
+        }
     }
-    for (int t = 3; t < Terms; ++t) {
-        const float* window = work.local_row(t - 3, cy + dy) + r + dx;
-        const float* centre = work.local_row(t - 3, cy) + r;
-        for (int i = 0; i < kLanes; ++i) x[t][i] = window[i] - centre[i];
+    WindowRow row;
+    row.r = r;
+    row.side = side;
+    row.dy = float(dy);
+    row.weight = work.weight.data() + std::size_t((dy + r) * side) * offset_stride + std::size_t(cy - work.tile.y0) * kLanes;
+    row.weight_stride = offset_stride;
+    row.terms = work.terms.data();
+    for (int c = 0; c < 3; ++c) row.colour[c] = work.local_row(features + c, cy + dy);
+    return row;
+}
+
+// One block of the normal equations' sums over a window row: the entries of term J (J != 2, whose
+// entries come from the row's sums, below) with the terms k <= J (k != 2) and with the three
+// colours, summed over dx in registers, one vector of lanes at a time. The products are those of
+// a scalar loop, in the same order: w x_J first, then times x_k; the sum starts at 0 and runs over
+// dx = -R .. R.
+template <int Terms, class V, int J>
+[[gnu::always_inline]] inline void sum_block(const WindowRow& row, float (*window_row)[kLanes]) {
+    if constexpr (J != 2) {
+        constexpr int kPairs = Terms * (Terms + 1) / 2;
+        constexpr int kProducts = J < 2 ? J + 1 : J;  // k = 0, 1, 3 .. J
+        constexpr int L = kVectorLanes<V>;
+        const int r = row.r;
+        for (int lane = 0; lane < kLanes; lane += L) {
+            V acc[kProducts + 3];
+#pragma GCC unroll 32
+            for (V& a : acc) a = V{};
+            for (int dx = -r; dx <= r; ++dx) {
+                const V w = load_floats<V>(row.weight + std::size_t(dx + r) * row.weight_stride + std::size_t(lane));
+                const V x_dx = broadcast<V>(float(dx));
+                V wx;
+                if constexpr (J == 0)
+                    wx = w;  // w times the constant term 1
+                else if constexpr (J == 1)
+                    wx = w * x_dx;
+                else
+                    wx = w * load_floats<V>(row.term(J - 3, dx) + lane);
+                acc[0] += wx;
+                if constexpr (J >= 1) acc[1] += wx * x_dx;
+#pragma GCC unroll 16
+                for (int k = 3; k <= J; ++k) acc[k - 1] += wx * load_floats<V>(row.term(k - 3, dx) + lane);
+#pragma GCC unroll 3
+                for (int c = 0; c < 3; ++c) acc[kProducts + c] += wx * load_floats<V>(row.colour[c] + dx + r + lane);
+            }
+            constexpr int base = J * (J + 1) / 2;  // pair (J, 0)
+            store_floats(window_row[base] + lane, acc[0]);
+            if constexpr (J >= 1) store_floats(window_row[base + 1] + lane, acc[1]);
+#pragma GCC unroll 16
+            for (int k = 3; k <= J; ++k) store_floats(window_row[base + k] + lane, acc[k - 1]);
+#pragma GCC unroll 3
+            for (int c = 0; c < 3; ++c) store_floats(window_row[kPairs + 3 * J + c] + lane, acc[kProducts + c]);
+        }
+    }
+}
+
+template <int Terms, class V, int... J>
+[[gnu::always_inline]] inline void sum_blocks(const WindowRow& row, float (*window_row)[kLanes], std::integer_sequence<int, J...>) {
+    (sum_block<Terms, V, J>(row, window_row), ...);
+}
+
+// The predictions of a row of centres' fits for window row dy, added to the tile's buffers (sum:
+// column 0 of the window row's buffer row per colour, the weights' row at sum[3]). First every
+// lane's weighted prediction w (beta . x) at every dx, with the fit (beta, [term][colour][kLanes])
+// held in registers, into `products` ([colour or weight][dx + R][2R + kLanes + 2R], lane i at 2R + i,
+// zero around); then each buffer column, a vector of columns at a time, adds the products that
+// fall on it in the order of dx, in registers: the order of a scalar loop over dx and lanes, so
+// the same bits whatever the vector width (the lanes outside 0 .. kLanes add +0, which changes
+// no sum).
+template <int Terms, class V>
+[[gnu::always_inline]] inline void predict_row(const WindowRow& row, const float* beta, float* products, float* const (&sum)[4]) {
+    constexpr int L = kVectorLanes<V>;
+    const int r = row.r, side = row.side, padded = kLanes + 4 * r, columns = kLanes + 2 * r;
+    const V y_dy = broadcast<V>(row.dy);
+    auto product = [&](int c, int dx) { return products + std::size_t(c * side + dx + r) * std::size_t(padded) + std::size_t(2 * r); };
+    for (int lane = 0; lane < kLanes; lane += L) {
+#pragma GCC unroll 3
+        for (int c = 0; c < 3; ++c) {
+            V b[Terms];
+#pragma GCC unroll 16
+            for (int t = 0; t < Terms; ++t) b[t] = load_floats<V>(beta + std::size_t(3 * t + c) * kLanes + std::size_t(lane));
+            for (int dx = -r; dx <= r; ++dx) {
+                // 0 + 1 b_0 + dx b_1 + dy b_2 + the features' terms
+                V pred = V{} + b[0];
+                pred += broadcast<V>(float(dx)) * b[1];
+                pred += y_dy * b[2];
+#pragma GCC unroll 16
+                for (int t = 3; t < Terms; ++t) pred += load_floats<V>(row.term(t - 3, dx) + lane) * b[t];
+                const V w = load_floats<V>(row.weight + std::size_t(dx + r) * row.weight_stride + std::size_t(lane));
+                store_floats(product(c, dx) + lane, w * pred);
+            }
+        }
+        for (int dx = -r; dx <= r; ++dx)
+            store_floats(product(3, dx) + lane, load_floats<V>(row.weight + std::size_t(dx + r) * row.weight_stride + std::size_t(lane)));
+    }
+    // Column q of the buffer holds the window pixels of lane q - (dx + R) at offset dx.
+    for (int c = 0; c < 4; ++c) {
+        int q = 0;
+        for (; q + L <= columns; q += L) {
+            V acc = load_floats<V>(sum[c] + q);
+            for (int dx = -r; dx <= r; ++dx) acc += load_floats<V>(product(c, dx) + q - (dx + r));
+            store_floats(sum[c] + q, acc);
+        }
+        for (; q < columns; ++q) {
+            float acc = sum[c][q];
+            for (int dx = -r; dx <= r; ++dx) acc += product(c, dx)[q - (dx + r)];
+            sum[c][q] = acc;
+        }
     }
 }
 
 // Fits the windows of the tile's row of centres cy and adds their predictions to `res`.
-template <int Terms>
+template <int Terms, FilterIsa Isa>
 [[gnu::always_inline]] inline void fit_row(TileWork& work, int cy, TileResult& res) {
+    using V = FloatVector<Isa>;
+    static_assert(kLanes % kVectorLanes<V> == 0);
     constexpr int kPairs = Terms * (Terms + 1) / 2, kEntries = kPairs + 3 * Terms;
-    const int r = work.r, side = 2 * r + 1, width = work.tile.width();
+    const int r = work.r, width = work.tile.width();
     const int features = Terms - 3;
-    const std::size_t row_offset = std::size_t(cy - work.tile.y0) * kLanes, offset_stride = std::size_t(kTileSize) * kLanes;
     // The normal equations' lower triangle (pair j >= k at j (j + 1) / 2 + k) and right-hand
-    // sides (at kPairs + 3 j + c), per lane.
-    alignas(32) float window_row[kEntries][kLanes];
-    alignas(32) double total[kEntries][kLanes] = {};
-    alignas(32) float x[Terms][kLanes], wx[Terms][kLanes];
-    // Term 2 (dy) is constant along a window row, so its entries are taken from the row's sums of
-    // term 0 (1) once per row: sum w x_j dy = dy sum w x_j. Products with term 0 are additions.
+    // sides (at kPairs + 3 j + c), per lane: a window row's sums in float, their total in double.
+    // The entries with term 2 (dy) are not summed per row (they stay 0 there): dy is constant
+    // along a window row, so sum w x_j dy = dy sum w x_j is taken from the row's sums of term 0 (1).
+    alignas(64) float window_row[kEntries][kLanes] = {};
+    alignas(64) double total[kEntries][kLanes] = {};
     auto pair = [](int j, int k) { return j * (j + 1) / 2 + k; };  // j >= k
     for (int dy = -r; dy <= r; ++dy) {
-        for (auto& e : window_row) std::fill(e, e + kLanes, 0.0f);
-        for (int dx = -r; dx <= r; ++dx) {
-            const float* w = work.weight.data() + std::size_t((dy + r) * side + dx + r) * offset_stride + row_offset;
-            fill_terms<Terms>(work, cy, dx, dy, x);
-            for (int t = 0; t < Terms; ++t)
-                for (int i = 0; i < kLanes; ++i) wx[t][i] = w[i] * x[t][i];
-            for (int j = 0; j < Terms; ++j) {
-                if (j == 2) continue;
-                for (int i = 0; i < kLanes; ++i) window_row[pair(j, 0)][i] += wx[j][i];
-                for (int k = 1; k <= j; ++k)
-                    if (k != 2)
-                        for (int i = 0; i < kLanes; ++i) window_row[pair(j, k)][i] += wx[j][i] * x[k][i];
-            }
-            for (int c = 0; c < 3; ++c) {
-                const float* colour = work.local_row(features + c, cy + dy) + r + dx;
-                for (int j = 0; j < Terms; ++j)
-                    if (j != 2)
-                        for (int i = 0; i < kLanes; ++i) window_row[kPairs + 3 * j + c][i] += wx[j][i] * colour[i];
-            }
-        }
+        const WindowRow row = window_row_of(work, features, cy, dy);
+        sum_blocks<Terms, V>(row, window_row, std::make_integer_sequence<int, Terms>());
         const double ddy = dy;
         for (int e = 0; e < kEntries; ++e)
             for (int i = 0; i < kLanes; ++i) total[e][i] += double(window_row[e][i]);
@@ -123,49 +237,39 @@ template <int Terms>
         solve_normal_equations(a, b, Terms, beta, precision);
         for (int e = 0; e < 3 * Terms; ++e) work.beta[std::size_t(e) * kLanes + std::size_t(i)] = float(beta[e]);
     }
-    // The predictions: every window pixel gets its centre's fit, weighted.
-    const std::size_t area_w = std::size_t(res.area.width()), area_n = res.weights.size();
+    // The predictions: every window pixel gets its centre's fit, weighted. The lanes whose window
+    // pixel is outside the image, or past the tile's width, have weight 0 and land in the
+    // buffer's padding or add 0.
     for (int dy = -r; dy <= r; ++dy) {
         const int y = cy + dy;
         if (y < res.area.y0 || y >= res.area.y1) continue;
-        for (int dx = -r; dx <= r; ++dx) {
-            const float* w = work.weight.data() + std::size_t((dy + r) * side + dx + r) * offset_stride + row_offset;
-            fill_terms<Terms>(work, cy, dx, dy, x);
-            // The window pixels of lanes 0 .. width - 1, those outside the image (weight 0) included:
-            // columns tile.x0 + dx .. tile.x1 + dx - 1, clipped to the area.
-            const int lane0 = std::max(0, res.area.x0 - (work.tile.x0 + dx)), lane1 = std::min(width, res.area.x1 - (work.tile.x0 + dx));
-            const std::size_t q0 = std::size_t(y - res.area.y0) * area_w + std::size_t(work.tile.x0 + dx + lane0 - res.area.x0);
-            for (int c = 0; c < 3; ++c) {
-                float pred[kLanes];
-                for (int i = 0; i < kLanes; ++i) pred[i] = 0.0f;
-                for (int t = 0; t < Terms; ++t) {
-                    const float* bt = work.beta.data() + std::size_t(3 * t + c) * kLanes;
-                    for (int i = 0; i < kLanes; ++i) pred[i] += x[t][i] * bt[i];
-                }
-                float* sum = res.sum.data() + std::size_t(c) * area_n + q0;
-                for (int i = lane0; i < lane1; ++i) sum[i - lane0] += w[i] * pred[i];
-            }
-            float* weights = res.weights.data() + q0;
-            for (int i = lane0; i < lane1; ++i) weights[i - lane0] += w[i];
-        }
+        const WindowRow row = window_row_of(work, features, cy, dy);
+        float* const sum[4] = {res.row(0, y), res.row(1, y), res.row(2, y), res.row(3, y)};
+        predict_row<Terms, V>(row, work.beta.data(), work.products.data(), sum);
     }
 }
 
 // The loops, inlined into one function per instruction set (filter_isa.hpp).
 template <int Terms>
 void fit_row_baseline(TileWork& work, int cy, TileResult& res) {
-    fit_row<Terms>(work, cy, res);
+    fit_row<Terms, FilterIsa::Baseline>(work, cy, res);
 }
 
 template <int Terms>
 [[gnu::target("avx2")]] void fit_row_avx2(TileWork& work, int cy, TileResult& res) {
-    fit_row<Terms>(work, cy, res);
+    fit_row<Terms, FilterIsa::Avx2>(work, cy, res);
+}
+
+template <int Terms>
+[[gnu::target("avx512f")]] void fit_row_avx512(TileWork& work, int cy, TileResult& res) {
+    fit_row<Terms, FilterIsa::Avx512>(work, cy, res);
 }
 
 using FitRowFn = void (*)(TileWork&, int, TileResult&);
 
 template <int... T>
 constexpr std::array<FitRowFn, sizeof...(T)> fit_table(std::integer_sequence<int, T...>, FilterIsa isa) {
+    if (isa == FilterIsa::Avx512) return {&fit_row_avx512<T + 3>...};
     if (isa == FilterIsa::Avx2) return {&fit_row_avx2<T + 3>...};
     return {&fit_row_baseline<T + 3>...};
 }
@@ -173,6 +277,7 @@ constexpr std::array<FitRowFn, sizeof...(T)> fit_table(std::integer_sequence<int
 // fit_row for every number of terms from 3 (the offset terms alone) up, at index terms - 3.
 constexpr auto kFitsBaseline = fit_table(std::make_integer_sequence<int, kMaxRegressionTerms - 2>(), FilterIsa::Baseline);
 constexpr auto kFitsAvx2 = fit_table(std::make_integer_sequence<int, kMaxRegressionTerms - 2>(), FilterIsa::Avx2);
+constexpr auto kFitsAvx512 = fit_table(std::make_integer_sequence<int, kMaxRegressionTerms - 2>(), FilterIsa::Avx512);
 
 // The weights exp(-d / k^2) of a tile's distances.
 [[gnu::always_inline]] inline void weights_of(const std::vector<float>& distance, float scale, std::vector<float>& weight) {
@@ -182,6 +287,10 @@ constexpr auto kFitsAvx2 = fit_table(std::make_integer_sequence<int, kMaxRegress
 void weights_baseline(const std::vector<float>& distance, float scale, std::vector<float>& weight) { weights_of(distance, scale, weight); }
 
 [[gnu::target("avx2")]] void weights_avx2(const std::vector<float>& distance, float scale, std::vector<float>& weight) {
+    weights_of(distance, scale, weight);
+}
+
+[[gnu::target("avx512f")]] void weights_avx512(const std::vector<float>& distance, float scale, std::vector<float>& weight) {
     weights_of(distance, scale, weight);
 }
 
@@ -198,24 +307,41 @@ std::vector<Planes> collaborative_regression(const Planes& image, const Planes& 
     const NlMeansParams distance_params{params.patch_radius, r, 1.0f, params.variance_scale};
     const std::vector<Rect> tiles = image_tiles(w, h);
     std::vector<std::vector<TileResult>> results(bandwidths.size(), std::vector<TileResult>(tiles.size()));
+    // Each thread's working buffers, reused from tile to tile (each tile overwrites what it reads).
+    struct Buffers {
+        TileWork work;
+        std::vector<float> distance, dist;
+        PatchScratch scratch;
+    };
+    tbb::enumerable_thread_specific<Buffers> thread_buffers;
     for_each_tile(tiles, [&](std::size_t index, const Rect& tile) {
         const std::size_t n = std::size_t(tile.width()) * std::size_t(tile.height());
-        TileWork work;
+        Buffers& buffers = thread_buffers.local();
+        TileWork& work = buffers.work;
+        std::vector<float>& distance = buffers.distance;
         work.tile = tile;
         work.r = r;
         work.stride = kLanes + 2 * r;
         // distance[offset][row][lane]: the largest channel distance decides (a window pixel must
         // resemble the centre in every channel); infinite where the window pixel is outside the
-        // image (weight 0).
+        // image, or the lane or row outside the tile (weight 0).
         const std::size_t offset_stride = std::size_t(kTileSize) * kLanes, weights_size = std::size_t(side) * std::size_t(side) * offset_stride;
-        std::vector<float> distance(weights_size, std::numeric_limits<float>::infinity()), dist;
-        PatchScratch scratch;
+        constexpr float kFar = std::numeric_limits<float>::infinity();
+        distance.resize(weights_size);
         for (int dy = -r, o = 0; dy <= r; ++dy)
             for (int dx = -r; dx <= r; ++dx, ++o) {
-                const Rect out = patch_distances(guide, guide_variance, distance_params, tile, dx, dy, scratch, dist, isa);
-                for (int y = out.y0; y < out.y1; ++y) {
+                const Rect out = patch_distances(guide, guide_variance, distance_params, tile, dx, dy, buffers.scratch, buffers.dist, isa);
+                const std::vector<float>& dist = buffers.dist;
+                for (int y = tile.y0; y < tile.y0 + kTileSize; ++y) {
+                    float* to = distance.data() + std::size_t(o) * offset_stride + std::size_t(y - tile.y0) * kLanes;
+                    if (out.empty() || y < out.y0 || y >= out.y1) {
+                        std::fill(to, to + kLanes, kFar);
+                        continue;
+                    }
+                    std::fill(to, to + (out.x0 - tile.x0), kFar);
+                    std::fill(to + (out.x1 - tile.x0), to + kLanes, kFar);
+                    to += out.x0 - tile.x0;
                     const std::size_t from = std::size_t(y - tile.y0) * std::size_t(tile.width()) + std::size_t(out.x0 - tile.x0);
-                    float* to = distance.data() + std::size_t(o) * offset_stride + std::size_t(y - tile.y0) * kLanes + std::size_t(out.x0 - tile.x0);
                     for (int i = 0; i < out.width(); ++i) to[i] = dist[from + std::size_t(i)];
                     for (int c = 1; c < guide.channels; ++c)
                         for (int i = 0; i < out.width(); ++i) to[i] = std::max(to[i], dist[std::size_t(c) * n + from + std::size_t(i)]);
@@ -232,16 +358,20 @@ std::vector<Planes> collaborative_regression(const Planes& image, const Planes& 
             }
         }
         work.weight.resize(weights_size);
+        work.terms.resize(std::size_t(features.channels) * std::size_t(side) * kLanes);
+        work.products.assign(4 * std::size_t(side) * std::size_t(kLanes + 4 * r), 0.0f);
         for (std::size_t b = 0; b < bandwidths.size(); ++b) {
             const float scale = 1.0f / (bandwidths[b] * bandwidths[b]);
-            (isa == FilterIsa::Avx2 ? weights_avx2 : weights_baseline)(distance, scale, work.weight);
+            (isa == FilterIsa::Avx512 ? weights_avx512 : isa == FilterIsa::Avx2 ? weights_avx2 : weights_baseline)(distance, scale, work.weight);
             work.beta.assign(std::size_t(3 * terms) * kLanes, 0.0f);
             TileResult& res = results[b][index];
-            res.area = {std::max(tile.x0 - r, 0), std::max(tile.y0 - r, 0), std::min(tile.x1 + r, w), std::min(tile.y1 + r, h)};
-            const std::size_t area_w = std::size_t(res.area.width());
-            res.sum.assign(3 * area_w * std::size_t(res.area.height()), 0.0f);
-            res.weights.assign(area_w * std::size_t(res.area.height()), 0.0f);
-            const FitRowFn fit = (isa == FilterIsa::Avx2 ? kFitsAvx2 : kFitsBaseline)[std::size_t(terms - 3)];
+            res.area = {tile.x0 - r, std::max(tile.y0 - r, 0), tile.x0 + kLanes + r, std::min(tile.y1 + r, h)};
+            res.stride = res.area.width();
+            const std::size_t buffer = std::size_t(res.stride) * std::size_t(res.area.height());
+            res.sum.assign(3 * buffer, 0.0f);
+            res.weights.assign(buffer, 0.0f);
+            const auto& fits = isa == FilterIsa::Avx512 ? kFitsAvx512 : isa == FilterIsa::Avx2 ? kFitsAvx2 : kFitsBaseline;
+            const FitRowFn fit = fits[std::size_t(terms - 3)];
             for (int cy = tile.y0; cy < tile.y1; ++cy) fit(work, cy, res);
         }
     });
@@ -250,10 +380,11 @@ std::vector<Planes> collaborative_regression(const Planes& image, const Planes& 
         Planes sum(w, h, 3);
         std::vector<float> weights(std::size_t(w) * std::size_t(h), 0.0f);
         for (const TileResult& res : tile_results) {
-            const std::size_t area_w = std::size_t(res.area.width()), area_n = res.weights.size();
+            // The buffer's columns inside the image (the rest is padding of weight 0).
+            const std::size_t area_n = res.weights.size();
             for (int y = res.area.y0; y < res.area.y1; ++y)
-                for (int x = res.area.x0; x < res.area.x1; ++x) {
-                    const std::size_t q = std::size_t(y - res.area.y0) * area_w + std::size_t(x - res.area.x0);
+                for (int x = std::max(res.area.x0, 0); x < std::min(res.area.x1, w); ++x) {
+                    const std::size_t q = std::size_t(y - res.area.y0) * std::size_t(res.stride) + std::size_t(x - res.area.x0);
                     const std::size_t p = std::size_t(y) * std::size_t(w) + std::size_t(x);
                     for (int c = 0; c < 3; ++c) sum.channel(c)[p] += res.sum[std::size_t(c) * area_n + q];
                     weights[p] += res.weights[q];

@@ -12,7 +12,6 @@
 #include <tbb/task_arena.h>
 
 #include "denoise_test_images.hpp"
-#include "raytracer/accel/simd_path.hpp"
 #include "raytracer/denoise/exp_weight.hpp"
 #include "raytracer/denoise/least_squares.hpp"
 #include "raytracer/denoise/nfor.hpp"
@@ -112,16 +111,27 @@ TEST_CASE("nfor: 1 and 2 threads give the same bits", "[denoise]") {
     CHECK(std::memcmp(one.data.data(), two.data.data(), one.data.size() * sizeof(float)) == 0);
 }
 
-TEST_CASE("nfor: the AVX2 loops give the baseline's bits", "[denoise]") {
-    if (!cpu_has_avx2()) {
-        WARN("this CPU has no AVX2: only the baseline loops run here");
-        return;
-    }
+TEST_CASE("nfor: the AVX2 and AVX-512 loops give the baseline's bits", "[denoise]") {
     const SyntheticImage s = textured_image(70, 40, 5, 0.2f);  // 3x2 tiles, one partial
     const denoise::Planes baseline = run_nfor(s.input, 2, denoise::FilterIsa::Baseline);
-    const denoise::Planes avx2 = run_nfor(s.input, 2, denoise::FilterIsa::Avx2);
-    REQUIRE(baseline.data.size() == avx2.data.size());
-    CHECK(std::memcmp(baseline.data.data(), avx2.data.data(), baseline.data.size() * sizeof(float)) == 0);
+    __builtin_cpu_init();
+    struct Wide {
+        denoise::FilterIsa isa;
+        const char* name;
+        bool supported;
+    };
+    for (const Wide& wide_isa : {Wide{denoise::FilterIsa::Avx2, "AVX2", __builtin_cpu_supports("avx2") != 0},
+                                 Wide{denoise::FilterIsa::Avx512, "AVX-512", __builtin_cpu_supports("avx512f") != 0}}) {
+        const auto [isa, name, supported] = wide_isa;
+        if (!supported) {
+            WARN("this CPU has no " << name << ": its loops do not run here");
+            continue;
+        }
+        INFO(name);
+        const denoise::Planes wide = run_nfor(s.input, 2, isa);
+        REQUIRE(baseline.data.size() == wide.data.size());
+        CHECK(std::memcmp(baseline.data.data(), wide.data.data(), baseline.data.size() * sizeof(float)) == 0);
+    }
 }
 
 TEST_CASE("nfor: the window solve gives a constant feature coefficient 0 and still fits the rest", "[denoise]") {

@@ -1,0 +1,57 @@
+#pragma once
+// A vector of floats as wide as one register of the instruction set a loop is compiled for (GCC's
+// vector extension): 4 lanes for the baseline (SSE2), 8 for AVX2, 16 for AVX-512. The
+// register-blocked kernels (regression.cpp) keep their running sums in these, so the sums stay in
+// registers across a window's pixels instead of being loaded and stored for every product. Each
+// lane's + and * are the float operations of a scalar loop (the denoiser's files are built with
+// -ffp-contract=off: no multiply-add is fused), so every width gives the same bits. Functions on
+// these vectors are inlined into the loops of their own ISA (so the files that use them are built
+// with -Wno-psabi: GCC's note that such a vector is passed differently across a call without AVX
+// concerns calls that do not happen).
+#include <cstring>
+
+#include "raytracer/denoise/filter_isa.hpp"
+
+namespace sweeptrace::denoise {
+
+template <FilterIsa Isa>
+struct FloatVectorOf;
+template <>
+struct FloatVectorOf<FilterIsa::Baseline> {
+    typedef float type __attribute__((vector_size(16)));
+};
+template <>
+struct FloatVectorOf<FilterIsa::Avx2> {
+    typedef float type __attribute__((vector_size(32)));
+};
+template <>
+struct FloatVectorOf<FilterIsa::Avx512> {
+    typedef float type __attribute__((vector_size(64)));
+};
+
+template <FilterIsa Isa>
+using FloatVector = typename FloatVectorOf<Isa>::type;
+
+template <class V>
+inline constexpr int kVectorLanes = int(sizeof(V) / sizeof(float));
+
+// Loads and stores at any float address (the windows' slices are not aligned to a register).
+template <class V>
+[[gnu::always_inline]] inline V load_floats(const float* p) {
+    V v;
+    std::memcpy(&v, p, sizeof(V));
+    return v;
+}
+
+template <class V>
+[[gnu::always_inline]] inline void store_floats(float* p, const V& v) {
+    std::memcpy(p, &v, sizeof(V));
+}
+
+// Every lane `value` (x - 0 is x for every float, -0 included).
+template <class V>
+[[gnu::always_inline]] inline V broadcast(float value) {
+    return value - V{};
+}
+
+}  // namespace sweeptrace::denoise
