@@ -19,8 +19,10 @@
 #include <cstdint>
 #include <cstdio>
 #include <fstream>
+#include <algorithm>
 #include <optional>
 #include <string>
+#include <utility>
 
 #include "raytracer/input_error.hpp"
 
@@ -131,6 +133,36 @@ inline void charge_load_memory(std::uint64_t bytes, const std::string& file, con
                          (configured_limit ? " (--max-memory)" : " (the memory available; --max-memory sets it)"));
     budget.used += bytes;
 }
+
+// Gives back `bytes` the current load was charged for a buffer it has freed, so that the budget
+// bounds what a load holds at once, not all it ever held. No effect outside a load.
+inline void release_load_memory(std::uint64_t bytes) {
+    using namespace load_budget_detail;
+    if (budget.depth == 0) return;
+    budget.used -= std::min(bytes, budget.used);
+}
+
+// Charges for a buffer that lives only while a file is parsed (a .gz file's inflated bytes),
+// given back when this is destroyed. Lives inside the load's scope, as the buffer does.
+class TransientLoadCharge {
+public:
+    TransientLoadCharge() = default;
+    ~TransientLoadCharge() { release_load_memory(bytes_); }
+    TransientLoadCharge(TransientLoadCharge&& o) noexcept : bytes_(std::exchange(o.bytes_, 0)) {}
+    TransientLoadCharge& operator=(TransientLoadCharge&& o) noexcept {
+        release_load_memory(bytes_);
+        bytes_ = std::exchange(o.bytes_, 0);
+        return *this;
+    }
+    // charge_load_memory, and kept to be given back.
+    void add(std::uint64_t bytes, const std::string& file, const std::string& what) {
+        charge_load_memory(bytes, file, what);
+        bytes_ += bytes;
+    }
+
+private:
+    std::uint64_t bytes_ = 0;
+};
 
 // What the current load has been charged so far (0 outside a load): for tests.
 inline std::uint64_t load_memory_charged() {

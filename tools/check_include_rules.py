@@ -28,7 +28,8 @@ The rules (what the code is layered as; an include that breaks one is reported a
   libjpeg      <jpeglib.h> only in raytracer/image/jpeg_io.cpp.
   zlib         <zlib.h> only in raytracer/scene/gzip_file.cpp.
   openvdb      <openvdb/...> and <nanovdb/...> (the rule "nanovdb") only in
-               raytracer/scene/vdb_grid.cpp: the VDB readers' exceptions end there.
+               raytracer/scene/vdb_reader.cpp, the VDB reader module (sweeptrace-vdb.so, opened
+               on the first vdb medium): the VDB readers' exceptions end there.
   cli11        <CLI/...> only in raytracer/cli/.
   nlohmann     <nlohmann/...> only in raytracer/scene/ (scene files), and in the two .cpp files
                that read or write the JSON formats of their own: accuracy/exchange.cpp (the
@@ -67,8 +68,8 @@ LIBRARY_RULES = [
     ("openexr", "Imath/", ["raytracer/image/*_io.cpp"]),
     ("libjpeg", "jpeglib.h", ["raytracer/image/jpeg_io.cpp"]),
     ("zlib", "zlib.h", ["raytracer/scene/gzip_file.cpp"]),
-    ("openvdb", "openvdb/", ["raytracer/scene/vdb_grid.cpp"]),
-    ("nanovdb", "nanovdb/", ["raytracer/scene/vdb_grid.cpp"]),
+    ("openvdb", "openvdb/", ["raytracer/scene/vdb_reader.cpp"]),
+    ("nanovdb", "nanovdb/", ["raytracer/scene/vdb_reader.cpp"]),
     ("cli11", "CLI/", ["raytracer/cli/*"]),
     ("nlohmann", "nlohmann/", ["raytracer/scene/*", "raytracer/accuracy/exchange.cpp", "raytracer/cli/diff_reports.cpp"]),
     ("tinyobj", "tiny_obj_loader.h", ["raytracer/scene/*"]),

@@ -40,21 +40,30 @@ std::string content_extension(const std::filesystem::path& file) {
     return lowercase_extension(is_gzip_name(file) ? file.stem() : file);
 }
 
-std::string gunzip(std::string_view compressed, const std::string& name, const char* what, std::uintmax_t max_bytes) {
+std::string gunzip(std::string_view compressed, const std::string& name, const char* what, std::uintmax_t max_bytes,
+                   TransientLoadCharge* charge) {
     if (compressed.empty()) throw InputError(name + ": not a valid gzip file (empty file)");
     // One byte past the limit proves the output is over it; the buffer never grows beyond.
     const std::uintmax_t cap = max_bytes + 1;
     Inflater z;
     std::size_t fed = 0, used = 0;
+    // The buffer charged before each allocation, by what it grows.
+    const auto grow_charge = [&](std::size_t from, std::size_t to) {
+        if (charge) charge->add(to - from, name, std::string("the inflated ") + what + " (growing to " + byte_text(to) + ")");
+    };
     // Text and meshes compress 3-10x; the guess only saves a few doublings.
-    std::string out(static_cast<std::size_t>(std::min<std::uintmax_t>(cap, std::max<std::uintmax_t>(1 << 16, 4 * compressed.size()))), '\0');
+    const auto first = static_cast<std::size_t>(std::min<std::uintmax_t>(cap, std::max<std::uintmax_t>(1 << 16, 4 * compressed.size())));
+    grow_charge(0, first);
+    std::string out(first, '\0');
     const auto over_limit = [&] {
         return InputError(name + ": decompressed size exceeds the " + mib_text(max_bytes) + " limit for a " + what);
     };
     for (;;) {
         if (used == out.size()) {
             if (out.size() >= cap) throw over_limit();
-            out.resize(static_cast<std::size_t>(std::min<std::uintmax_t>(cap, 2 * std::uintmax_t{out.size()})));
+            const auto next = static_cast<std::size_t>(std::min<std::uintmax_t>(cap, 2 * std::uintmax_t{out.size()}));
+            grow_charge(out.size(), next);
+            out.resize(next);
         }
         if (z.s.avail_in == 0 && fed < compressed.size()) {
             const std::size_t step = std::min(kMaxStep, compressed.size() - fed);
@@ -85,10 +94,11 @@ std::string gunzip(std::string_view compressed, const std::string& name, const c
     return out;
 }
 
-std::string read_maybe_gzipped(const std::filesystem::path& file, const char* what, std::uintmax_t max_bytes) {
-    std::string bytes = read_text_file(file, what, max_bytes);
-    if (!is_gzip_name(file)) return bytes;
-    return gunzip(bytes, file.string(), what, max_bytes);
+FileBytes read_maybe_gzipped(const std::filesystem::path& file, const char* what, std::uintmax_t max_bytes) {
+    FileBytes f;
+    f.bytes = read_text_file(file, what, max_bytes);
+    if (is_gzip_name(file)) f.bytes = gunzip(f.bytes, file.string(), what, max_bytes, &f.charge);
+    return f;
 }
 
 }  // namespace sweeptrace

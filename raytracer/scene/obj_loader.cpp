@@ -81,7 +81,8 @@ std::string first_line(const std::string& s) {
 }  // namespace
 
 Mesh load_obj(const std::filesystem::path& file, ObjOutline* outline_out) {
-    const std::string text = read_maybe_gzipped(file, "mesh", kMaxMeshFileBytes);
+    const FileBytes file_bytes = read_maybe_gzipped(file, "mesh", kMaxMeshFileBytes);
+    const std::string& text = file_bytes.bytes;
     const std::string name = file.string();
     const ObjOutline outline = outline_obj(text, name);
 

@@ -517,7 +517,7 @@ Mesh parse_ply(std::string_view bytes, const std::string& name) {
 }
 
 Mesh load_ply(const std::filesystem::path& file) {
-    return parse_ply(read_maybe_gzipped(file, "mesh", kMaxMeshFileBytes), file.string());
+    return parse_ply(read_maybe_gzipped(file, "mesh", kMaxMeshFileBytes).bytes, file.string());
 }
 
 }  // namespace sweeptrace

@@ -7,14 +7,18 @@
 // only) is returned for the caller to compose with the medium's own. Which format a file is comes
 // from its first bytes, not its name.
 //
-// The only file that includes OpenVDB and NanoVDB (tools/check_include_rules.py): their
-// exceptions end here, as InputError "<file>: <what>". Before any voxel is read, the dense grid
-// (and, for OpenVDB, the sparse tree the file says it needs in memory) is charged to the load
-// budget (load_budget.hpp) from the file's metadata, so a small file claiming a huge box is
-// refused with its figures. Errors: not a file of either format, truncated or corrupt, no grid
-// of that name (the message lists the names there), a grid of another value type than float,
-// no active voxels, a non-affine (frustum) transform, a background value other than 0 (a density
-// outside the active voxels, which the dense box could not hold), a negative or non-finite voxel.
+// The libraries are not linked: the reading is done by the VDB reader module (vdb_reader.cpp,
+// the only file that includes OpenVDB and NanoVDB), opened on the first call (vdb_module.hpp);
+// its failures come back as InputError "<file>: <what>", and a module that cannot be loaded is
+// one too ("<file>: cannot be read: the VDB reader module <path> did not load: <dlerror>").
+// Before any voxel is read, the dense grid (and, for OpenVDB, the sparse tree the file says it
+// needs in memory) is charged to the load budget (load_budget.hpp) here, from the file's
+// metadata as the module reports it, and only then allocated here, so a small file claiming a
+// huge box is refused with its figures. Errors: not a file of either format, truncated or
+// corrupt, no grid of that name (the message lists the names there), a grid of another value
+// type than float, no active voxels, a non-affine (frustum) transform, a background value other
+// than 0 (a density outside the active voxels, which the dense box could not hold), a negative
+// or non-finite voxel.
 #include <filesystem>
 #include <string>
 #include <vector>

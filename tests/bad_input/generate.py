@@ -277,6 +277,11 @@ render_case("ply-gz-truncated", E + GZ_P + r"truncated gzip data", mesh_scene("m
             extra={"mesh.ply.gz": gz(PLY_HEAD + PLY_TRI + "3 0 1 2\n")[:40]})
 render_case("ply-gz-corrupt-ply", E + GZ_P + r"line 13: face 0 names vertex 3, the file has 3", mesh_scene("mesh.ply.gz"),
             extra={"mesh.ply.gz": gz(PLY_HEAD + PLY_TRI + "3 0 1 3\n")})
+# 24 MiB of zeros in a 24 kB .gz, under an 8 MiB budget: the inflated buffer is charged before
+# each time it grows, so the load stops at the growth that passes the budget (scene/gzip_file.hpp).
+render_case("ply-gz-inflated-over-budget", E + GZ_P + r"the inflated mesh \(growing to [\d.]+ MB\) needs [\d.]+ MB, "
+            r"which would bring the scene's data to [\d.]+ MB, over the load budget of 8\.4 MB \(--max-memory\)",
+            mesh_scene("mesh.ply.gz"), args="--max-memory 8M", extra={"mesh.ply.gz": gz(bytes(24 << 20))})
 render_case("ply-materials-from-obj", E + r"scene\.json: objects\[0\]\.materials: a PLY mesh has no materials",
             mesh_scene("mesh.ply", materials="from_obj").replace(', "material": "m"', ""),
             extra={"mesh.ply": PLY_HEAD + PLY_TRI + "3 0 1 2\n"})

@@ -9,14 +9,26 @@
 //   - a .nvdb with a "temperature" grid is imported with a warning naming what is lost.
 //   - a truncated .nvdb, and one whose dense box is over the budget, are refused at the
 //     MakeNamedMedium line (here: Python's openvdb writes no .nvdb for the corpus).
+// And the reader as a module (scene/vdb_module.hpp): the program does not link OpenVDB, so a
+// process that reads no `vdb` medium does not load it; a program without its module renders
+// every scene without one, and a scene with one fails with exit 2, one line naming the module's
+// path and the loader's reason, nothing written. (The tests above load their media through the
+// module beside the test binary, tests/CMakeLists.txt.)
 // The other bad files (missing, not a VDB, truncated .vdb, another grid name or value type, a
 // box over the budget) are the bad-input corpus's (tests/bad_input/, media-vdb-*, pbrt-nanovdb-*).
 #include <catch2/catch.hpp>
 
+#include <sys/wait.h>
+
 #include <cstdint>
+#include <cstdio>
+#include <cstdlib>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <glm/vec3.hpp>
@@ -140,6 +152,29 @@ RenderResult render_ball(const Medium& m, std::uint64_t seed) {
     return sweeptrace::testing::render_with(sweeptrace::testing::medium_ball_scene(m), AccelKind::Bvh, 96, 8, seed);
 }
 
+// What `ldd` lists for `file`: every shared library the loader maps for it at start.
+std::string linked_libraries(const std::filesystem::path& file) {
+    const std::string cmd = "ldd '" + file.string() + "'";
+    std::FILE* pipe = popen(cmd.c_str(), "r");
+    REQUIRE(pipe);
+    std::string out;
+    char buf[4096];
+    while (const std::size_t n = std::fread(buf, 1, sizeof buf, pipe)) out.append(buf, n);
+    pclose(pipe);
+    return out;
+}
+
+const std::filesystem::path kModuleTestBuild = SWEEPTRACE_BINARY_DIR;
+
+std::string vdb_module_scene(const std::string& media, const std::string& inside) {
+    return "{\"camera\": {\"position\": [0, 0, 5], \"look_at\": [0, 0, 0]},"
+           "\"film\": {\"width\": 8, \"height\": 8, \"spp\": 1},"
+           "\"materials\": {\"m\": {\"type\": \"interface\"}}, \"media\": {" + media + "},"
+           "\"objects\": [{\"type\": \"sphere\", \"radius\": 1, \"material\": \"m\"" + inside + "}]}";
+}
+
+const std::string kModuleTestMedium = "\"smoke\": {\"type\": \"vdb\", \"file\": \"smoke.vdb\", \"sigma_s\": [1, 1, 1]}";
+
 }  // namespace
 
 TEST_CASE("media vdb: a .vdb grid loads as the grid medium of its values over its transformed box", "[media][vdb]") {
@@ -196,4 +231,65 @@ TEST_CASE("media vdb: a truncated or oversized .nvdb is refused at its MakeNamed
                       Catch::Contains("scene.pbrt:6: MakeNamedMedium \"smoke\": ") &&
                           Catch::Contains("(its active box, 3001 x 3001 x 3001 voxels, dense) needs 108.11 GB"));
     set_load_memory_limit(std::nullopt);
+}
+
+TEST_CASE("vdb module: sweeptrace starts without OpenVDB, which only its module loads", "[vdb][module]") {
+    const std::string program = linked_libraries(kModuleTestBuild / "sweeptrace");
+    INFO(program);
+    CHECK(program.find("libtbb") != std::string::npos);  // ldd answered
+    CHECK(program.find("libopenvdb") == std::string::npos);
+    CHECK(program.find("libblosc") == std::string::npos);
+    const std::string module = linked_libraries(kModuleTestBuild / "sweeptrace-vdb.so");
+    INFO(module);
+    CHECK(module.find("libopenvdb") != std::string::npos);
+}
+
+TEST_CASE("vdb module: without its module sweeptrace renders scenes without vdb media and refuses one with", "[vdb][module]") {
+    const TempDir dir;
+    const std::filesystem::path program = dir.path() / "sweeptrace";
+    std::filesystem::copy_file(kModuleTestBuild / "sweeptrace", program);
+    write_vdb(dir.path() / "smoke.vdb", density_grid("density"));
+    dir.write("plain.json", vdb_module_scene("", ""));
+    dir.write("smoke.json", vdb_module_scene(kModuleTestMedium, ", \"inside\": \"smoke\""));
+    const auto run = [&](const std::string& args) {
+        const std::string cmd = "cd '" + dir.path().string() + "' && ./sweeptrace " + args + " 2> stderr.txt > /dev/null";
+        const int status = std::system(cmd.c_str());
+        std::ifstream in(dir.path() / "stderr.txt");
+        return std::make_pair(WIFEXITED(status) ? WEXITSTATUS(status) : -1,
+                              std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()));
+    };
+    const std::string module = (dir.path() / "sweeptrace-vdb.so").string();
+    SECTION("no module") {
+        // A scene with a vdb medium in its table but on no object loads it all the same.
+        dir.write("unused.json", vdb_module_scene(kModuleTestMedium, ""));
+        CHECK(run("render plain.json -o plain.png").first == 0);
+        CHECK(std::filesystem::exists(dir.path() / "plain.png"));
+        for (const char* s : {"smoke", "unused"}) {
+            const auto [code, err] = run(std::string("render ") + s + ".json -o out.png");
+            INFO(err);
+            CHECK(code == 2);
+            CHECK(err.rfind("sweeptrace: error: ", 0) == 0);
+            CHECK(err.find('\n') == err.size() - 1);
+            CHECK(err.find("media.smoke.file: ") != std::string::npos);
+            CHECK(err.find("the VDB reader module " + module + " did not load: ") != std::string::npos);
+            CHECK(err.find("cannot open shared object file") != std::string::npos);
+            CHECK_FALSE(std::filesystem::exists(dir.path() / "out.png"));
+        }
+    }
+    SECTION("a module that is not one") {
+        dir.write("sweeptrace-vdb.so", "not a shared object\n");
+        const auto [code, err] = run("render smoke.json -o out.png");
+        INFO(err);
+        CHECK(code == 2);
+        CHECK(err.find("the VDB reader module " + module + " did not load: ") != std::string::npos);
+        CHECK_FALSE(std::filesystem::exists(dir.path() / "out.png"));
+        CHECK(run("render plain.json -o plain.png").first == 0);
+    }
+    SECTION("the module beside it") {
+        std::filesystem::copy_file(kModuleTestBuild / "sweeptrace-vdb.so", module);
+        const auto [code, err] = run("render smoke.json -o out.png");
+        INFO(err);
+        CHECK(code == 0);
+        CHECK(std::filesystem::exists(dir.path() / "out.png"));
+    }
 }

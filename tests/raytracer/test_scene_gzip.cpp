@@ -10,12 +10,14 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <string_view>
 
 #include "cli_run.hpp"
 #include "raytracer/input_error.hpp"
+#include "raytracer/load_budget.hpp"
 #include "raytracer/scene/gzip_file.hpp"
 #include "raytracer/scene/load_scene.hpp"
 #include "raytracer/scene/obj_loader.hpp"
@@ -151,6 +153,28 @@ TEST_CASE("gzip: a .pbrt.gz Include, and a .pbrt.gz main file, are read inflated
     dir.write("binary.pbrt.gz", gz_member("Shape\x01\x02"));
     CHECK_THROWS_WITH(load_pbrt_scene(dir.write("inc.pbrt", "Include \"binary.pbrt.gz\"\n"), false, warnings),
                       Contains("binary.pbrt.gz:1: control byte 1"));
+}
+
+TEST_CASE("gzip: the inflated buffer is charged to the load budget while the mesh is read, and given back after", "[scene][gzip]") {
+    const TempDir dir;
+    const auto plain = dir.write("quad.ply", kGzQuadPly);
+    const auto gz = dir.write("quad.ply.gz", gz_member(kGzQuadPly));
+    const auto charged_by = [](const std::filesystem::path& file, std::optional<std::uint64_t> limit) {
+        struct Limit {  // reset however the load ends
+            explicit Limit(std::optional<std::uint64_t> l) { set_load_memory_limit(l); }
+            ~Limit() { set_load_memory_limit(std::nullopt); }
+        } set(limit);
+        const LoadBudgetScope scope;
+        load_ply(file);
+        return load_memory_charged();
+    };
+    // The mesh's own charges stay; the inflated bytes (a 64 kB buffer at least) are given back.
+    const std::uint64_t mesh = charged_by(plain, std::nullopt);
+    CHECK(mesh > 0);
+    CHECK(charged_by(gz, std::nullopt) == mesh);
+    // Under a budget smaller than that first buffer, the .gz is refused and the .ply is not.
+    CHECK(charged_by(plain, 60000) == mesh);
+    CHECK_THROWS_WITH(charged_by(gz, 60000), Contains("quad.ply.gz: the inflated mesh (growing to 66 kB) needs 66 kB"));
 }
 
 TEST_CASE("gzip: a bomb is refused once its output passes the uncompressed file's limit", "[scene][gzip]") {

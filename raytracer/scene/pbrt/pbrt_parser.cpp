@@ -57,13 +57,14 @@ private:
         if (depth > kMaxIncludeDepth)
             diag_.fail(from, "Include nested deeper than " + std::to_string(kMaxIncludeDepth) + " files (an Include cycle?)");
         if (++files_read_ > kMaxFiles) diag_.fail(from, "more than " + std::to_string(kMaxFiles) + " files included");
-        std::string text;
+        FileBytes read;
         try {
-            text = read_maybe_gzipped(file, "pbrt scene", kMaxSceneFileBytes);
+            read = read_maybe_gzipped(file, "pbrt scene", kMaxSceneFileBytes);
         } catch (const InputError& e) {
             if (depth == 0) throw;
             diag_.fail(from, std::string("Include: ") + e.what());
         }
+        const std::string& text = read.bytes;
         total_bytes_ += text.size();
         if (total_bytes_ > kMaxTotalBytes)
             diag_.fail(from, "the scene and its Includes hold more than " + std::to_string(kMaxTotalBytes >> 20) + " MiB of text");
