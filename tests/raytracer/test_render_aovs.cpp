@@ -116,7 +116,7 @@ TEST_CASE("aovs: variance of the mean from exact sums is 0 for equal samples and
     CHECK(variance_of_mean(0, big, 2) == Approx(2.0 * double(kSampleLimit) * double(kSampleLimit) / 2.0).epsilon(1e-15));
 }
 
-TEST_CASE("aovs: feature sums at the ends of their ranges stay exact; beyond them they are clamped", "[render][aovs]") {
+TEST_CASE("aovs: feature sums at the ends of their ranges stay exact, and beyond them are clamped", "[render][aovs]") {
     // Albedo 1 and normal -1 are 2^32 on the 2^-32 grid, their squares 2^64: the 64-bit sums and
     // 128-bit squares must hold them exactly (a square kept in 64 bits would wrap to 0).
     FeatureSums s;
