@@ -3,18 +3,53 @@
 one binary with and without `--aovs`, interleaved, --repeat times, to an .exr (so the cost of
 writing the 46-channel feature EXR against the plain one is counted); the least CPU time (user +
 system of the child: other engineers' load on a shared machine counts little) of each. With
---baseline OTHER_BINARY, that binary's plain render is timed in the same rounds too (the cost of
-the feature code when off). Prints a markdown table.
+--baseline OTHER_BINARY, that binary's renders with and without `--aovs` are timed in the same
+rounds too (before and after a change, in one sitting). Prints a markdown table.
+
+Identical runs on a shared virtual machine spread by +-15 %, so --perf N also profiles N rounds
+of each binary's plain and `--aovs` renders (`perf record`, 2000 Hz, pooled) and estimates on / off
+from the profiles: the samples of the whole run per sample of the path tracing itself (the
+symbols in CORE, the same work with and without features), with `--aovs` over without. The
+machine's load slows both alike, so the ratio holds better than the timings; the symbols whose
+samples grew most are listed with their share of the `--aovs` profile.
 Usage: /usr/bin/python3 tools/aov_cost.py BINARY [SCENE ...] [--baseline MAIN_BINARY] [--spp 16] [--size 320x180]
-       [--repeat 3] [--threads 1] [--integrator path]
+       [--repeat 3] [--threads 1] [--integrator path] [--perf 0]
 Default scenes: scenes/cornell-box.json and ../shared/bitterli/classroom/scene-v4.pbrt.
 """
 import argparse
+import collections
 import os
+import subprocess
 import sys
 import tempfile
 
 from bench_path_cpu import cpu_seconds  # tools/ is this script's folder, first on sys.path
+
+# The path tracer's own work, rendered alike with and without features.
+CORE = ["PathIntegrator::radiance", "collision::intersect", "PixelSampler::get2d", "sample_bsdf", "traverse_nearest",
+        "traverse_any", "LightSet::sample", "to_object_space", "spawn_ray_to", "offset_origin", "top_intersect", "top_any"]
+
+
+def profile(files):
+    """Samples per symbol of perf.data files, pooled; libraries and the kernel lumped by name."""
+    count = collections.Counter()
+    for f in files:
+        out = subprocess.run(["perf", "report", "-i", f, "-n", "--no-children", "--sort", "dso,symbol", "-g", "none",
+                              "--percent-limit", "0"], capture_output=True, text=True, check=True).stdout
+        for line in out.splitlines():
+            parts = line.split()
+            if line.startswith("#") or len(parts) < 5 or not parts[0].endswith("%"):
+                continue
+            dso, symbol = parts[2], " ".join(parts[4:]).replace(" - -", "").replace("sweeptrace::", "")
+            for lib in ("libz", "libOpenEXR", "[kernel", "ld-linux"):
+                if dso.startswith(lib):
+                    symbol = lib.strip("[") + " (all)"
+            count[symbol] += int(parts[1])
+    return count
+
+
+def core(count):
+    return sum(n for s, n in count.items() if any(c in s for c in CORE))
 
 
 def main():
@@ -27,34 +62,48 @@ def main():
     ap.add_argument("--repeat", type=int, default=3)
     ap.add_argument("--threads", type=int, default=1)
     ap.add_argument("--integrator", default="path")
+    ap.add_argument("--perf", type=int, default=0)
     ap.add_argument("scenes", nargs="*", default=[os.path.join(root, "scenes", "cornell-box.json"),
                                                   os.path.join(root, "..", "shared", "bitterli", "classroom", "scene-v4.pbrt")])
     a = ap.parse_args()
     w, h = a.size.split("x")
     out = tempfile.mkdtemp()
-    runs = [("plain", a.binary, []), ("aovs", a.binary, ["--aovs"])]
-    if a.baseline:
-        runs.insert(0, ("baseline", a.baseline, []))
+    binaries = [("baseline", a.baseline)] if a.baseline else []
+    binaries.append(("this", a.binary))
+    runs = [(b, exe, aovs) for b, exe in binaries for aovs in (False, True)]
     print("%s, %s spp, %sx%s, %d thread(s), least CPU s of %d runs each, interleaved\n" %
           (a.integrator, a.spp, w, h, a.threads, a.repeat))
-    print("| scene |%s aovs off | aovs on | on / off |%s\n|---|%s---|---|---|%s" %
-          (" baseline |" if a.baseline else "", " off / baseline |" if a.baseline else "",
-           "---|" if a.baseline else "", "---|" if a.baseline else ""))
+    print("| scene | binary | aovs off | aovs on | on / off |%s\n|---|---|---|---|---|%s" %
+          (" profile on / off (top symbols' share of on) |" if a.perf else "", "---|" if a.perf else ""))
+
+    def command(exe, aovs, scene, name):
+        return [exe, "render", scene, "--integrator", a.integrator, "--threads", str(a.threads), "--spp", str(a.spp),
+                "--width", w, "--height", h, "--quiet", "-o", os.path.join(out, name + ".exr")] + (["--aovs"] if aovs else [])
+
     for scene in a.scenes:
         best = {}
         for _ in range(a.repeat):
-            for name, exe, extra in runs:
-                cmd = [exe, "render", scene, "--integrator", a.integrator, "--threads", str(a.threads), "--spp",
-                       str(a.spp), "--width", w, "--height", h, "--quiet", "-o", os.path.join(out, name + ".exr")] + extra
-                t = cpu_seconds(cmd)
-                best[name] = min(best.get(name, t), t)
-        row = "| %s |" % os.path.basename(os.path.dirname(scene) if scene.endswith(".pbrt") else scene)
-        if a.baseline:
-            row += " %.2f |" % best["baseline"]
-        row += " %.2f | %.2f | %.3f |" % (best["plain"], best["aovs"], best["aovs"] / best["plain"])
-        if a.baseline:
-            row += " %.3f |" % (best["plain"] / best["baseline"])
-        print(row)
+            for b, exe, aovs in runs:
+                t = cpu_seconds(command(exe, aovs, scene, b))
+                best[b, aovs] = min(best.get((b, aovs), t), t)
+        profiles = collections.defaultdict(list)
+        for i in range(a.perf):
+            for b, exe, aovs in runs:
+                data = os.path.join(out, "%s-%s-%d.data" % (b, aovs, i))
+                subprocess.run(["perf", "record", "-q", "-F", "2000", "-o", data] + command(exe, aovs, scene, b),
+                               stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, check=True)
+                profiles[b, aovs].append(data)
+        name = os.path.basename(os.path.dirname(scene) if scene.endswith(".pbrt") else scene)
+        for b, exe in binaries:
+            row = "| %s | %s | %.2f | %.2f | %.3f |" % (name, b, best[b, False], best[b, True], best[b, True] / best[b, False])
+            if a.perf:
+                off, on = profile(profiles[b, False]), profile(profiles[b, True])
+                ratio = (sum(on.values()) / core(on)) / (sum(off.values()) / core(off))
+                scale = core(on) / core(off)
+                grown = sorted(((on[s] - off[s] * scale, s) for s in set(on) | set(off)), reverse=True)[:6]
+                row += " %.3f (%s) |" % (ratio, ", ".join("%s %.1f %%" % (s[:40], 100 * g / sum(on.values()))
+                                                          for g, s in grown))
+            print(row)
         sys.stdout.flush()
 
 

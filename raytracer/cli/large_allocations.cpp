@@ -3,7 +3,7 @@
 // the kernel as transparent huge pages (madvise MADV_HUGEPAGE).
 //
 // Why: Debian's kernels ship THP in "madvise" mode, so without the advice every big per-pixel
-// buffer (the film's sums, the AOVs' 712 B of exact sums per pixel, the denoiser's planes) is
+// buffer (the film's sums, the AOVs' exact sums of 528 B per pixel, the denoiser's planes) is
 // faulted in 4 KiB at a time, and in a virtual machine each fault is expensive: `render --aovs`
 // of 640x360 at 1 spp measured 0.68-0.85 s user + 0.41-0.56 s system with 4 KiB pages against
 // 0.39-0.42 s + 0.05-0.07 s with huge pages (glibc's tunable glibc.malloc.hugetlb=1, which does

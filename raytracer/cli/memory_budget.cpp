@@ -32,9 +32,13 @@ constexpr std::uint64_t kAdaptiveBytesPerPixel = sizeof(int) + sizeof(double) + 
 // colour-sized layers and the depth variance) or, for a farm part, the sums' copy and their
 // words; the larger of those two counted. Adaptive sampling adds its copies of the sums (the
 // pass in flight's, and a part's own pilot passes), as for the colour.
+constexpr std::uint64_t kAovLayerBytesPerPixel = 15 * sizeof(glm::vec3) + sizeof(float);
 constexpr std::uint64_t kAovBytesPerPixel =
-    sizeof(FeatureSums) + kAovPendingPasses * (sizeof(SampleFeatures) + sizeof(glm::vec3)) +
-    std::max<std::uint64_t>(15 * sizeof(glm::vec3) + sizeof(float), sizeof(FeatureSums) + kFeatureWords * sizeof(std::uint32_t));
+    sizeof(FeatureSums) + kAovPendingPasses * sizeof(FeatureSample) +
+    std::max<std::uint64_t>(kAovLayerBytesPerPixel, sizeof(FeatureSums) + kFeatureWords * sizeof(std::uint32_t));
+// merge with feature outputs: the whole's feature sums, the part's and its words, and the images.
+constexpr std::uint64_t kAovMergeBytesPerPixel =
+    2 * sizeof(FeatureSums) + kFeatureWords * sizeof(std::uint32_t) + kAovLayerBytesPerPixel;
 constexpr std::uint64_t kAovAdaptiveBytesPerPixel = 2 * sizeof(FeatureSums);
 // Per primitive of the acceleration structure (a triangle, or an analytic object at the top
 // level): BVH nodes (~2 per primitive at 32 bytes), the primitive's index and precomputed test
@@ -84,10 +88,11 @@ void check_render_memory(const Scene& scene, std::optional<std::uint64_t> limit,
     check_memory_estimate(e.total(), limit, scene.source.string() + ": the render", detail + ", scene: " + byte_text(e.scene));
 }
 
-void check_merge_memory(int width, int height, bool adaptive, const std::string& part) {
+void check_merge_memory(int width, int height, bool adaptive, bool aovs, const std::string& part) {
     const std::uint64_t pixels = std::uint64_t(width) * std::uint64_t(height);
     const std::uint64_t counts = adaptive ? 3 * sizeof(int) : 0;  // the whole's, the part's words and its ints
-    const std::uint64_t per_pixel = 2 * sizeof(PixelSum) + 12 * sizeof(std::uint32_t) + counts + 2 * sizeof(glm::vec3) + 3;
+    const std::uint64_t per_pixel = 2 * sizeof(PixelSum) + 12 * sizeof(std::uint32_t) + counts + 2 * sizeof(glm::vec3) + 3 +
+                                    (aovs ? kAovMergeBytesPerPixel : 0);
     const std::string size = std::to_string(width) + "x" + std::to_string(height);
     std::optional<std::uint64_t> none;
     check_memory_estimate(pixels * per_pixel, none, "'" + part + "': merging parts of " + size,

@@ -42,9 +42,10 @@ void check_render_memory(const Scene& scene, std::optional<std::uint64_t> limit,
                          bool forensics = false);
 
 // `merge`: the parts' sums and counts for the whole image, one part being read (its 32-bit words,
-// sums and counts), the mean image and its display copy, per pixel of the parts' WxH. Throws
-// InputError naming `part` (the file that declared the size) when over the available memory.
-void check_merge_memory(int width, int height, bool adaptive, const std::string& part);
+// sums and counts), the mean image and its display copy, per pixel of the parts' WxH; with
+// feature outputs (`aovs`) their sums likewise and the feature images. Throws InputError naming
+// `part` (the file that declared the size) when over the available memory.
+void check_merge_memory(int width, int height, bool adaptive, bool aovs, const std::string& part);
 
 // Throws InputError "<what> needs an estimated X (<detail>), more than the Y ..." when `bytes`
 // exceed `limit` or, without one, the available memory: the one refusal of the estimates above,

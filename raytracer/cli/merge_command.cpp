@@ -45,7 +45,7 @@ int run_merge(const MergeArgs& a) {
     for (const std::string& p : a.parts) headers.push_back(read_partial_header(p));
     const std::vector<std::size_t> order = check_partials(headers, a.parts);
     const RenderIdentity& id = headers[order[0]].id;
-    check_merge_memory(id.width, id.height, id.adaptive != "off", a.parts[order[0]]);
+    check_merge_memory(id.width, id.height, id.adaptive != "off", id.aovs == "on", a.parts[order[0]]);
     PartialImage whole;
     whole.id = headers[order[0]].id;
     if (whole.id.aovs == "on") {  // the feature side files join the output rule

@@ -2,51 +2,92 @@
 
 #include <cstddef>
 
+#include <glm/gtc/type_ptr.hpp>
+
 namespace sweeptrace {
 
 namespace {
 
-// The eight half sums in one order, for the loops below and the part's words.
+// The four 128-bit half sums and the four 64-bit ones in one order, for the loops below and the
+// part's words.
 template <class Sums>
-auto half_sums(Sums& s) {
-    return std::array{&s.color[0], &s.color[1], &s.albedo[0], &s.albedo[1],
-                      &s.normal[0], &s.normal[1], &s.position[0], &s.position[1]};
+auto wide_sums(Sums& s) {
+    return std::array{&s.color[0], &s.color[1], &s.position[0], &s.position[1]};
+}
+template <class Sums>
+auto bounded_sums(Sums& s) {
+    return std::array{&s.albedo[0], &s.albedo[1], &s.normal[0], &s.normal[1]};
 }
 
-glm::vec3 variance_of(const PixelSum& s, const SquareSum* q, std::int64_t n) {
-    return glm::vec3(static_cast<float>(variance_of_mean(s.rgb[0], q[0], n)),
-                     static_cast<float>(variance_of_mean(s.rgb[1], q[1], n)),
-                     static_cast<float>(variance_of_mean(s.rgb[2], q[2], n)));
+// A feature value on the 2^-32 grid, clamped to [-limit, limit] (the sums' widths rely on it;
+// NaN, which no integrator records, goes to the limit rather than to an undefined conversion).
+// The clamps are written so that they compile to minss and maxss, without branches, and so is
+// the rounding of a bounded feature (|v| 2^32 < 2^51: nearest_int64's first case always).
+float clamped_feature(float v, float limit) {
+    const float below = v < limit ? v : limit;
+    return below > -limit ? below : -limit;
+}
+std::int64_t unit_fixed(float v) {
+    const double r = static_cast<double>(clamped_feature(v, 1.0f)) * 0x1p32;
+    return static_cast<std::int64_t>((r + 0x1.8p52) - 0x1.8p52);
+}
+std::int64_t position_fixed(float v) { return nearest_int64(static_cast<double>(clamped_feature(v, kFeaturePositionLimit)) * 0x1p32); }
+
+// x^2 of a bounded feature's |x| <= 2^32: up to 2^64, one 64 x 64 -> 128-bit product.
+SumUInt bounded_square(std::int64_t x) { return static_cast<SumUInt>(static_cast<SumInt>(x) * x); }
+
+// The mean of `n` samples whose sums on the 2^-32 grid are s[3]: as mean_of (partial_sum.hpp),
+// one rounding to double, an exact scale, a division and the cast to float.
+template <class Int>
+glm::vec3 feature_mean(const Int (&s)[3], std::int64_t n) {
+    if (n <= 0) return glm::vec3(0.0f);
+    glm::dvec3 v;
+    for (int c = 0; c < 3; ++c) v[c] = static_cast<double>(s[c]) * 0x1p-32;
+    return glm::vec3(v / static_cast<double>(n));
 }
 
 }  // namespace
 
+static_assert(kFeatureFractionBits == 32, "unit_fixed, position_fixed and feature_mean scale by 2^32 literally");
+
 FeatureSums& FeatureSums::operator+=(const FeatureSums& o) {
-    const auto mine = half_sums(*this);
-    const auto theirs = half_sums(o);
+    const auto mine = wide_sums(*this);
+    const auto theirs = wide_sums(o);
     for (std::size_t k = 0; k < mine.size(); ++k) *mine[k] += *theirs[k];
+    const auto my_bounded = bounded_sums(*this);
+    const auto their_bounded = bounded_sums(o);
+    for (std::size_t k = 0; k < my_bounded.size(); ++k)
+        for (int c = 0; c < 3; ++c) my_bounded[k]->v[c] += their_bounded[k]->v[c];
     for (int h = 0; h < 2; ++h) count[h] += o.count[h];
-    for (int k = 0; k < kSquares; ++k) square[k] += o.square[k];
+    for (int c = 0; c < 3; ++c) color_square[c] += o.color_square[c];
+    depth_square += o.depth_square;
+    for (int k = 0; k < 6; ++k) bounded_square[k] += o.bounded_square[k];
     return *this;
 }
 
-void add_feature_sample(FeatureSums& sums, std::int64_t sample, const glm::vec3& color, const SampleFeatures& f,
-                        bool& clamped) {
+void add_feature_sample(FeatureSums& s, std::int64_t sample, const FeatureSample& fs) {
+    // Straight into `s`, channel by channel: a pixel's sums are in cache while its pending samples
+    // are added (a batch of them in locals measured slower: the locals spill).
     const int h = static_cast<int>(sample & 1);
-    ++sums.count[h];
-    clamped = false;
-    const glm::vec3* values[4] = {&color, &f.albedo, &f.normal, &f.position};
-    PixelSum* halves[4] = {&sums.color[h], &sums.albedo[h], &sums.normal[h], &sums.position[h]};
-    for (int v = 0; v < 4; ++v)
-        for (int c = 0; c < 3; ++c) {
-            bool k = false;
-            const SumInt x = to_fixed((*values[v])[c], k);
-            clamped = clamped || k;
-            halves[v]->rgb[c] += x;
-            // Squares: colour, albedo, normal whole; of the position only z, the depth.
-            if (v < 3) add_square(sums.square[3 * v + c], x);
-            else if (c == 2) add_square(sums.square[9], x);
-        }
+    ++s.count[h];
+    const float* color = glm::value_ptr(fs.color);
+    const float* albedo = glm::value_ptr(fs.features.albedo);
+    const float* normal = glm::value_ptr(fs.features.normal);
+    const float* position = glm::value_ptr(fs.features.position);
+    for (int c = 0; c < 3; ++c) {
+        bool clamped = false;  // counted where the same value joins the pixel's colour sum
+        const SumInt x = to_fixed(color[c], clamped);
+        s.color[h].rgb[c] += x;
+        add_square(s.color_square[c], x);
+        const std::int64_t a = unit_fixed(albedo[c]), n = unit_fixed(normal[c]);
+        s.albedo[h].v[c] += a;
+        s.normal[h].v[c] += n;
+        s.bounded_square[c] += bounded_square(a);
+        s.bounded_square[3 + c] += bounded_square(n);
+        const std::int64_t p = position_fixed(position[c]);
+        s.position[h].rgb[c] += p;
+        if (c == 2) add_square(s.depth_square, p);  // below 2^62: add_square's 64-bit path
+    }
 }
 
 FeatureLayers feature_layers(const std::vector<FeatureSums>& sums, int width, int height) {
@@ -59,25 +100,35 @@ FeatureLayers feature_layers(const std::vector<FeatureSums>& sums, int width, in
         for (Image* im : {&L.half_color[h], &L.half_albedo[h], &L.half_normal[h], &L.half_position[h]})
             *im = Image(width, height);
     L.depth_variance.assign(static_cast<std::size_t>(width) * height, 0.0f);
+    constexpr int F = kFeatureFractionBits;
     for (std::size_t i = 0; i < sums.size(); ++i) {
         const FeatureSums& s = sums[i];
-        const std::int64_t n = static_cast<std::int64_t>(s.count[0]) + s.count[1];
-        PixelSum whole[4];
-        const PixelSum* evens[4] = {&s.color[0], &s.albedo[0], &s.normal[0], &s.position[0]};
-        const PixelSum* odds[4] = {&s.color[1], &s.albedo[1], &s.normal[1], &s.position[1]};
-        Image* means[4] = {&L.color, &L.albedo, &L.normal, &L.position};
-        std::array<Image, 2>* halves[4] = {&L.half_color, &L.half_albedo, &L.half_normal, &L.half_position};
-        for (int v = 0; v < 4; ++v) {
-            whole[v] = *evens[v];
-            whole[v] += *odds[v];
-            means[v]->pixels[i] = mean_of(whole[v], n);
-            (*halves[v])[0].pixels[i] = mean_of(*evens[v], s.count[0]);
-            (*halves[v])[1].pixels[i] = mean_of(*odds[v], s.count[1]);
+        const std::int64_t n[2] = {s.count[0], s.count[1]};
+        const std::int64_t all = n[0] + n[1];
+        PixelSum color = s.color[0], position = s.position[0];
+        color += s.color[1];
+        position += s.position[1];
+        BoundedSum albedo = s.albedo[0], normal = s.normal[0];
+        for (int c = 0; c < 3; ++c) {
+            albedo.v[c] += s.albedo[1].v[c];
+            normal.v[c] += s.normal[1].v[c];
         }
-        L.color_variance.pixels[i] = variance_of(whole[0], &s.square[0], n);
-        L.albedo_variance.pixels[i] = variance_of(whole[1], &s.square[3], n);
-        L.normal_variance.pixels[i] = variance_of(whole[2], &s.square[6], n);
-        L.depth_variance[i] = static_cast<float>(variance_of_mean(whole[3].rgb[2], s.square[9], n));
+        L.color.pixels[i] = mean_of(color, all);
+        L.albedo.pixels[i] = feature_mean(albedo.v, all);
+        L.normal.pixels[i] = feature_mean(normal.v, all);
+        L.position.pixels[i] = feature_mean(position.rgb, all);
+        for (int h = 0; h < 2; ++h) {
+            L.half_color[h].pixels[i] = mean_of(s.color[h], n[h]);
+            L.half_albedo[h].pixels[i] = feature_mean(s.albedo[h].v, n[h]);
+            L.half_normal[h].pixels[i] = feature_mean(s.normal[h].v, n[h]);
+            L.half_position[h].pixels[i] = feature_mean(s.position[h].rgb, n[h]);
+        }
+        for (int c = 0; c < 3; ++c) {
+            L.color_variance.pixels[i][c] = static_cast<float>(variance_of_mean(color.rgb[c], s.color_square[c], all));
+            L.albedo_variance.pixels[i][c] = static_cast<float>(variance_of_mean(albedo.v[c], s.bounded_square[c], all, F));
+            L.normal_variance.pixels[i][c] = static_cast<float>(variance_of_mean(normal.v[c], s.bounded_square[3 + c], all, F));
+        }
+        L.depth_variance[i] = static_cast<float>(variance_of_mean(position.rgb[2], s.depth_square, all, F));
     }
     return L;
 }
@@ -85,50 +136,63 @@ FeatureLayers feature_layers(const std::vector<FeatureSums>& sums, int width, in
 const std::vector<std::string>& feature_word_names() {
     static const std::vector<std::string> names = [] {
         std::vector<std::string> v;
-        const char* sums[8] = {"colorEven", "colorOdd", "albedoEven", "albedoOdd",
-                               "normalEven", "normalOdd", "positionEven", "positionOdd"};
-        for (const char* s : sums)
-            for (int c = 0; c < 3; ++c)
-                for (int k = 0; k < 4; ++k) v.push_back(std::string("aov.") + s + "." + std::to_string(c) + "." + std::to_string(k));
+        auto add = [&v](const std::string& name, int channels, int words) {
+            for (int c = 0; c < channels; ++c)
+                for (int k = 0; k < words; ++k) {
+                    std::string n = "aov." + name;
+                    if (channels > 1) n.append(".").append(std::to_string(c));
+                    v.push_back(n.append(".").append(std::to_string(k)));
+                }
+        };
+        for (const char* s : {"colorEven", "colorOdd", "positionEven", "positionOdd"}) add(s, 3, 4);
+        for (const char* s : {"albedoEven", "albedoOdd", "normalEven", "normalOdd"}) add(s, 3, 2);
         v.push_back("aov.countEven");
         v.push_back("aov.countOdd");
-        for (int q = 0; q < FeatureSums::kSquares; ++q)
-            for (int k = 0; k < 8; ++k) v.push_back("aov.square." + std::to_string(q) + "." + std::to_string(k));
+        add("colorSquare", 3, 8);
+        add("depthSquare", 1, 8);
+        add("albedoSquare", 3, 4);
+        add("normalSquare", 3, 4);
         return v;
     }();
     return names;
 }
 
-// Words in feature_word_names() order; each 128-bit sum least significant word first, each
-// 256-bit square likewise.
+namespace {
+
+// An unsigned integer of `words` 32-bit words, least significant first.
+void put_words(SumUInt u, int words, std::uint32_t*& w) {
+    for (int k = 0; k < words; ++k) *w++ = static_cast<std::uint32_t>(u >> (32 * k));
+}
+SumUInt get_words(int words, const std::uint32_t*& w) {
+    SumUInt u = 0;
+    for (int k = 0; k < words; ++k) u |= static_cast<SumUInt>(*w++) << (32 * k);
+    return u;
+}
+
+}  // namespace
+
+// Words in feature_word_names() order; each sum two's complement, least significant word first.
 void feature_to_words(const FeatureSums& s, std::uint32_t* w) {
-    for (const PixelSum* p : half_sums(s))
-        for (int c = 0; c < 3; ++c) {
-            const auto u = static_cast<SumUInt>(p->rgb[c]);
-            for (int k = 0; k < 4; ++k) *w++ = static_cast<std::uint32_t>(u >> (32 * k));
-        }
+    for (const PixelSum* p : wide_sums(s))
+        for (int c = 0; c < 3; ++c) put_words(static_cast<SumUInt>(p->rgb[c]), 4, w);
+    for (const BoundedSum* p : bounded_sums(s))
+        for (int c = 0; c < 3; ++c) put_words(static_cast<std::uint64_t>(p->v[c]), 2, w);
     for (int h = 0; h < 2; ++h) *w++ = static_cast<std::uint32_t>(s.count[h]);
-    for (const SquareSum& q : s.square)
-        for (int l = 0; l < 4; ++l) {
-            *w++ = static_cast<std::uint32_t>(q.limb[l]);
-            *w++ = static_cast<std::uint32_t>(q.limb[l] >> 32);
-        }
+    for (const SquareSum* q : {&s.color_square[0], &s.color_square[1], &s.color_square[2], &s.depth_square})
+        for (int l = 0; l < 4; ++l) put_words(q->limb[l], 2, w);
+    for (const SumUInt q : s.bounded_square) put_words(q, 4, w);
 }
 
 FeatureSums feature_from_words(const std::uint32_t* w) {
     FeatureSums s;
-    for (PixelSum* p : half_sums(s))
-        for (int c = 0; c < 3; ++c) {
-            SumUInt u = 0;
-            for (int k = 0; k < 4; ++k) u |= static_cast<SumUInt>(*w++) << (32 * k);
-            p->rgb[c] = static_cast<SumInt>(u);
-        }
+    for (PixelSum* p : wide_sums(s))
+        for (int c = 0; c < 3; ++c) p->rgb[c] = static_cast<SumInt>(get_words(4, w));
+    for (BoundedSum* p : bounded_sums(s))
+        for (int c = 0; c < 3; ++c) p->v[c] = static_cast<std::int64_t>(static_cast<std::uint64_t>(get_words(2, w)));
     for (int h = 0; h < 2; ++h) s.count[h] = static_cast<std::int32_t>(*w++);
-    for (SquareSum& q : s.square)
-        for (int l = 0; l < 4; ++l) {
-            const std::uint64_t lo = *w++;
-            q.limb[l] = lo | (static_cast<std::uint64_t>(*w++) << 32);
-        }
+    for (SquareSum* q : {&s.color_square[0], &s.color_square[1], &s.color_square[2], &s.depth_square})
+        for (int l = 0; l < 4; ++l) q->limb[l] = static_cast<std::uint64_t>(get_words(2, w));
+    for (SumUInt& q : s.bounded_square) q = get_words(4, w);
     return s;
 }
 

@@ -19,7 +19,9 @@
 namespace sweeptrace {
 namespace {
 
-constexpr const char* kFormatVersion = "3";  // 2: sweeptrace.adaptive and the count channel; 3: sweeptrace.aovs and aov.*
+// 2: sweeptrace.adaptive and the count channel; 3: sweeptrace.aovs and aov.*; 4: the features'
+// sums on the 2^-32 grid, 64 bits for albedo and normal (image/feature_sums.hpp).
+constexpr const char* kFormatVersion = "4";
 constexpr int kWords = 4;                    // 32-bit words per 128-bit sum
 constexpr int kSumChannels = 3 * kWords;     // sum.R.0 .. sum.B.3
 const char* const kColor[3] = {"R", "G", "B"};

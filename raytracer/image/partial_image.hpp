@@ -12,9 +12,9 @@
 // (render --aovs) also has the kFeatureWords UINT channels `aov.*` of each pixel's FeatureSums
 // (image/feature_sums.hpp: the colour and features of its even and odd samples, and the exact
 // sums of squares). String attributes:
-//   sweeptrace.part         format version, "3" (formats 1 and 2, before adaptive parts and
-//                           feature outputs, are refused: their parts came from an older
-//                           program, which merge refuses anyway)
+//   sweeptrace.part         format version, "4" (formats 1 to 3, before adaptive parts, feature
+//                           outputs and the features' narrower sums, are refused: their parts
+//                           came from an older program, which merge refuses anyway)
 //   sweeptrace.sceneHash    hash of the scene file and the mesh files it loads
 //   sweeptrace.seed, sweeptrace.maxDepth, sweeptrace.accel, sweeptrace.version (the program's)
 //   sweeptrace.adaptive     "off", "on" or "relative": render --adaptive

@@ -34,22 +34,27 @@ struct PixelSum {
     bool operator==(const PixelSum&) const = default;
 };
 
+// A float times a power of two (`scaled`, exact in double) as the nearest integer, ties to even
+// (the integer nearbyint gives in the default rounding mode), for |scaled| < 2^63, without
+// nearbyint's library call or a 128-bit conversion's (feature outputs convert 12 values a
+// sample). A float is m 2^e with |m| < 2^24, so `scaled`, m 2^(e + k), is an integer once its
+// magnitude reaches 2^24; below 2^51, adding and subtracting 1.5 * 2^52 rounds to the nearest
+// integer, ties to even, because the sum lies in [2^52, 2^53), where doubles are the integers,
+// and 1.5 * 2^52 is even.
+inline std::int64_t nearest_int64(double scaled) {
+    if (std::fabs(scaled) < 0x1p51) scaled = (scaled + 0x1.8p52) - 0x1.8p52;
+    return static_cast<std::int64_t>(scaled);
+}
+
 // One sample in fixed point. `v` must be finite (the renderer replaces non-finite samples by 0
 // first); |v| above kSampleLimit is clamped, and `clamped` says so.
 inline SumInt to_fixed(float v, bool& clamped) {
     clamped = std::fabs(v) > kSampleLimit;
     const float c = clamped ? std::copysign(kSampleLimit, v) : v;
-    // Exact: a power-of-two scale of a float in double. Magnitudes of 2^33 and more are integers
-    // already (a float of magnitude >= 2^-33 is a multiple of 2^-56); below 2^51, adding and
-    // subtracting 1.5 * 2^52 rounds to the nearest integer, ties to even, because the sum lies in
-    // [2^52, 2^53), where doubles are the integers, and 1.5 * 2^52 is even: the very integer
-    // nearbyint gives in the default rounding mode, without its library call (feature outputs
-    // convert 12 values a sample). The result is an integer below 2^96, exact in SumInt.
-    double r = static_cast<double>(c) * 0x1p56;
-    if (std::fabs(r) < 0x1p51) r = (r + 0x1.8p52) - 0x1.8p52;
-    // Below 2^62 (|v| < 64, nearly every sample) through int64: the same integer, without the
-    // library call a double -> 128-bit conversion is (feature outputs convert 12 values a sample).
-    if (std::fabs(r) < 0x1p62) return static_cast<std::int64_t>(r);
+    // Below 2^62 (|v| < 64, nearly every sample) through int64; above, the integer it already is
+    // (nearest_int64), below 2^96, exact in SumInt.
+    const double r = static_cast<double>(c) * 0x1p56;
+    if (std::fabs(r) < 0x1p62) return nearest_int64(r);
     return static_cast<SumInt>(r);
 }
 

@@ -49,6 +49,10 @@ inline SquareSum wide_product(SumUInt a, SumUInt b) {
     return r;
 }
 
+// 2^(-2 bits), the unit of a square of fixed-point values with `bits` fraction bits (bits <= 63):
+// exact, and a constant wherever `bits` is one (the callers').
+constexpr double square_unit(int bits) { return 1.0 / static_cast<double>(static_cast<SumUInt>(1) << (2 * bits)); }
+
 inline SumUInt magnitude(SumInt x) { return x < 0 ? static_cast<SumUInt>(0) - static_cast<SumUInt>(x) : static_cast<SumUInt>(x); }
 
 // x^2 added to q, x a fixed-point sample (to_fixed).
@@ -66,10 +70,23 @@ inline void add_square(SquareSum& q, SumInt x) {
     q += wide_product(m, m);
 }
 
-// The variance of the mean of n samples whose fixed-point sum is s and sum of squares q: the
-// unbiased sample variance over n; 0 below 2 samples.
-inline double variance_of_mean(SumInt s, const SquareSum& q, std::int64_t n) {
+// The variance of the mean of n samples whose fixed-point sum (2^-fraction_bits) is s and sum of
+// squares q: the unbiased sample variance over n; 0 below 2 samples.
+inline double variance_of_mean(SumInt s, const SquareSum& q, std::int64_t n, int fraction_bits = kSumFractionBits) {
     if (n < 2) return 0.0;
+    const double nd = static_cast<double>(n);
+    const double unit = square_unit(fraction_bits), over = nd * nd * (nd - 1.0);  // d unit exact, then / over
+    const SumUInt m = magnitude(s);
+    // Nearly every pixel (samples below 256, few enough of them): n q and s^2 fit 128 bits, and
+    // their difference is converted to double once, rounded to nearest, as the general case
+    // below converts any difference below 2^128, so the result depends on the sums only.
+    if (q.limb[2] == 0 && q.limb[3] == 0 && (m >> 64) == 0) {
+        SumUInt nq = 0;
+        if (!__builtin_mul_overflow(static_cast<SumUInt>(q.limb[1]) << 64 | q.limb[0], static_cast<SumUInt>(n), &nq)) {
+            const SumUInt s2 = m * m;
+            return nq < s2 ? 0.0 : static_cast<double>(nq - s2) * unit / over;  // nq < s2: as `borrow` below
+        }
+    }
     // n q: 256 x 63 bits, exact because n q < 2^254.
     SquareSum nq;
     for (int i = 0; i < 4; ++i) {
@@ -79,10 +96,8 @@ inline double variance_of_mean(SumInt s, const SquareSum& q, std::int64_t n) {
         if (i + 1 < 4) t.limb[i + 1] = static_cast<std::uint64_t>(p >> 64);
         nq += t;
     }
-    const SumUInt m = magnitude(s);
     const SquareSum s2 = wide_product(m, m);
     // d = nq - s2 >= 0: two's complement subtraction, limb by limb.
-    double d = 0.0;
     std::uint64_t borrow = 0;
     std::uint64_t diff[4];
     for (int i = 0; i < 4; ++i) {
@@ -91,9 +106,23 @@ inline double variance_of_mean(SumInt s, const SquareSum& q, std::int64_t n) {
         borrow = static_cast<SumUInt>(nq.limb[i]) < sub ? 1 : 0;
     }
     if (borrow != 0) return 0.0;  // cannot happen for sums of the same samples; a damaged part reads as no variance
+    if (diff[2] == 0 && diff[3] == 0) return static_cast<double>(static_cast<SumUInt>(diff[1]) << 64 | diff[0]) * unit / over;
+    double d = 0.0;
     for (int i = 3; i >= 0; --i) d = d * 0x1p64 + static_cast<double>(diff[i]);
+    return d * unit / over;
+}
+
+// The same for samples whose sum and sum of squares fit 64 and 128 bits (the bounded features,
+// image/feature_sums.hpp: n < 2^31 samples of magnitude <= 2^32), so that n q < 2^126 and
+// s^2 <= 2^126: n q - s^2 exact in 128 bits, converted to double once.
+inline double variance_of_mean(std::int64_t s, SumUInt q, std::int64_t n, int fraction_bits) {
+    if (n < 2) return 0.0;
+    const SumUInt nq = q * static_cast<std::uint64_t>(n);
+    const SumUInt m = static_cast<SumUInt>(s < 0 ? -static_cast<SumInt>(s) : static_cast<SumInt>(s));
+    const SumUInt s2 = m * m;
+    if (nq < s2) return 0.0;  // cannot happen for sums of the same samples; a damaged part reads as no variance
     const double nd = static_cast<double>(n);
-    return d * 0x1p-112 / (nd * nd * (nd - 1.0));
+    return static_cast<double>(nq - s2) * square_unit(fraction_bits) / (nd * nd * (nd - 1.0));
 }
 
 }  // namespace sweeptrace

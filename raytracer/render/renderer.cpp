@@ -80,8 +80,7 @@ public:
         if (opt.forensics != nullptr) opt.forensics->start(width_, height_, kRenderTileSize, lights_);
         if (opt.aovs) {
             feature_sums_.resize(sum_.size());
-            pending_features_.resize(sum_.size() * kAovPendingPasses);
-            pending_colors_.resize(pending_features_.size());
+            pending_.resize(sum_.size() * kAovPendingPasses);
         }
     }
 
@@ -283,7 +282,7 @@ private:
                                       kept_sq_[i] += v * v;
                                   }
                                   if (!feature_sums_.empty())
-                                      pending_colors_[i * kAovPendingPasses + pending_passes_.size()] = pass_[i];
+                                      pending_[i * kAovPendingPasses + pending_passes_.size()].color = pass_[i];
                               }
                               if (clamped != 0) clamped_.fetch_add(clamped, std::memory_order_relaxed);
                           });
@@ -293,22 +292,19 @@ private:
     }
 
     // The pending passes' colours and features added to the exact feature sums, each pixel's in
-    // pass order. Touching a pixel's 712 bytes of sums once per kAovPendingPasses passes instead
-    // of every pass is what made AOVs cheap on a fast scene: the sums are integers, so the result
-    // is the same whenever they are added (cornell-box 320x180, 64 spp: see docs/aovs.md).
+    // pass order. A pixel's sums (sizeof(FeatureSums) bytes) are streamed through memory once per
+    // kAovPendingPasses passes instead of every pass, and its pending samples once: what made
+    // AOVs cheap on a fast scene (cornell-box 320x180, 64 spp: see docs/aovs.md). The sums are
+    // integers, so the result is the same whenever they are added.
     void add_pending_features() {
         if (pending_passes_.empty()) return;
         tbb::parallel_for(tbb::blocked_range<std::size_t>(0, feature_sums_.size(), 1024),
                           [&](const tbb::blocked_range<std::size_t>& r) {
                               for (std::size_t i = r.begin(); i < r.end(); ++i)
                                   for (std::size_t k = 0; k < pending_passes_.size(); ++k) {
-                                      const std::size_t slot = i * kAovPendingPasses + k;
-                                      bool clamped = false;  // the colour's clamp is counted with its sum
-                                      add_feature_sample(feature_sums_[i], pending_passes_[k].sample, pending_colors_[slot],
-                                                         pending_features_[slot], clamped);
-                                      if (pending_passes_[k].kept)
-                                          add_feature_sample(kept_features_[i], pending_passes_[k].sample,
-                                                             pending_colors_[slot], pending_features_[slot], clamped);
+                                      const FeatureSample& fs = pending_[i * kAovPendingPasses + k];
+                                      add_feature_sample(feature_sums_[i], pending_passes_[k].sample, fs);
+                                      if (pending_passes_[k].kept) add_feature_sample(kept_features_[i], pending_passes_[k].sample, fs);
                                   }
                           });
         pending_passes_.clear();
@@ -458,7 +454,7 @@ private:
                 const std::size_t pixel = static_cast<std::size_t>(y) * width_ + x;
                 if (tally != nullptr) tally->begin();
                 SampleFeatures* features =
-                    feature_sums_.empty() ? nullptr : &pending_features_[pixel * kAovPendingPasses + pending_passes_.size()];
+                    feature_sums_.empty() ? nullptr : &pending_[pixel * kAovPendingPasses + pending_passes_.size()].features;
                 const glm::vec3 l = sample_pixel(x, y, sample, rays, nonfinite, records, splats, tally, features);
                 if (tally != nullptr) opt_.forensics->finish_sample(tile, pixel, *tally, l);
                 pass_[pixel] = l;
@@ -509,16 +505,17 @@ private:
             glm::dvec3 sq = sum_sq_[pixel];
             const bool aovs = !feature_sums_.empty();
             FeatureSums fs = aovs ? feature_sums_[pixel] : FeatureSums{};
-            SampleFeatures f;
+            FeatureSample f;
             for (std::int64_t k = lo; k < hi; ++k) {
                 if (cancelled()) {
                     whole = false;
                     break;
                 }
                 const glm::vec3 l = sample_pixel(x, y, static_cast<int>(kAdaptivePilotSpp + k), rays, nonfinite, nullptr,
-                                                 nullptr, nullptr, aovs ? &f : nullptr);
+                                                 nullptr, nullptr, aovs ? &f.features : nullptr);
+                f.color = l;
+                if (aovs) add_feature_sample(fs, kAdaptivePilotSpp + k, f);
                 bool c = false;
-                if (aovs) add_feature_sample(fs, kAdaptivePilotSpp + k, l, f, c);
                 add_sample(sum, l, c);
                 clamped += c ? 1 : 0;
                 const glm::dvec3 v(l);
@@ -570,15 +567,15 @@ private:
     std::vector<glm::dvec3> kept_sq_;
     // AOVs (opt.aovs; else empty): per pixel, the exact colour and feature sums by half; the
     // colours and features of up to kAovPendingPasses finished passes not yet added to them and
-    // of the pass in flight (pixel-major: slot k of pixel i at i * kAovPendingPasses + k),
-    // add_pending_features; and the adaptive copies as for the colour above.
+    // of the pass in flight (pixel-major: slot k of pixel i at i * kAovPendingPasses + k, so that
+    // add_pending_features reads them as one stream); and the adaptive copies as for the colour
+    // above.
     struct PendingPass {
         int sample;
         bool kept;
     };
     std::vector<FeatureSums> feature_sums_;
-    std::vector<SampleFeatures> pending_features_;
-    std::vector<glm::vec3> pending_colors_;
+    std::vector<FeatureSample> pending_;
     std::vector<PendingPass> pending_passes_;
     std::vector<FeatureSums> round_features_;
     std::vector<FeatureSums> kept_features_;

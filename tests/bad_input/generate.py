@@ -794,7 +794,7 @@ def part_header(w, h):
     names = [b"B", b"G", b"R"] + [f"sum.{c}.{k}".encode() for c in "BGR" for k in range(4)]
     channels = b"".join(n + b"\0" + struct.pack("<iB3xii", 2 if len(n) == 1 else 0, 0, 1, 1) for n in sorted(names)) + b"\0"
     box = struct.pack("<iiii", 0, 0, w - 1, h - 1)
-    strings = {"sweeptrace.part": "3", "sweeptrace.aovs": "off", "sweeptrace.fractionBits": "56", "sweeptrace.sceneHash": "0", "sweeptrace.seed": "1",
+    strings = {"sweeptrace.part": "4", "sweeptrace.aovs": "off", "sweeptrace.fractionBits": "56", "sweeptrace.sceneHash": "0", "sweeptrace.seed": "1",
                "sweeptrace.maxDepth": "8", "sweeptrace.accel": "bvh", "sweeptrace.integrator": "path",
                "sweeptrace.adaptive": "off", "sweeptrace.version": "0", "sweeptrace.spp": "4", "sweeptrace.samples": "0:4",
                "sweeptrace.checksum": "0"}

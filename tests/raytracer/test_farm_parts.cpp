@@ -193,8 +193,8 @@ TEST_CASE("farm: a part file keeps every bit of its sums and its identity, and r
     write_image(p.mean(), dir / "plain.exr");
     CHECK_THROWS_WITH(read_partial(dir / "plain.exr"), Catch::Contains("not a sweeptrace part"));
 
-    // A part of format 2 (before feature outputs; its header's version string patched back, the
-    // header being uncompressed) is refused by its version, saying what to do.
+    // A part of format 3 (before the features' narrower sums; its header's version string patched
+    // back, the header being uncompressed) is refused by its version, saying what to do.
     const std::string key = std::string("sweeptrace.part") + '\0' + "string" + '\0';
     std::string old_format;
     {
@@ -203,11 +203,11 @@ TEST_CASE("farm: a part file keeps every bit of its sums and its identity, and r
     }
     const std::size_t at = old_format.find(key);
     REQUIRE(at != std::string::npos);
-    REQUIRE(old_format[at + key.size() + 4] == '3');  // after the 4-byte length
-    old_format[at + key.size() + 4] = '2';
-    std::ofstream(dir / "format2.exr", std::ios::binary) << old_format;
-    CHECK_THROWS_WITH(read_partial_header(dir / "format2.exr"),
-                      Catch::Contains("part format 2, this program reads 3 (render the part again with this program)"));
+    REQUIRE(old_format[at + key.size() + 4] == '4');  // after the 4-byte length
+    old_format[at + key.size() + 4] = '3';
+    std::ofstream(dir / "format3.exr", std::ios::binary) << old_format;
+    CHECK_THROWS_WITH(read_partial_header(dir / "format3.exr"),
+                      Catch::Contains("part format 3, this program reads 4 (render the part again with this program)"));
 
     // An adaptive part keeps each pixel's count, and its mean is over that count.
     PartialImage a = part(3, 7);

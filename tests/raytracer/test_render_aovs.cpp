@@ -116,6 +116,46 @@ TEST_CASE("aovs: variance of the mean from exact sums is 0 for equal samples and
     CHECK(variance_of_mean(0, big, 2) == Approx(2.0 * double(kSampleLimit) * double(kSampleLimit) / 2.0).epsilon(1e-15));
 }
 
+TEST_CASE("aovs: feature sums at the ends of their ranges stay exact, and beyond them are clamped", "[render][aovs]") {
+    // Albedo 1 and normal -1 are 2^32 on the 2^-32 grid, their squares 2^64: the 64-bit sums and
+    // 128-bit squares must hold them exactly (a square kept in 64 bits would wrap to 0).
+    FeatureSums s;
+    FeatureSample f;
+    f.color = glm::vec3(0.5f, 3.0f, 1000.0f);
+    f.features.albedo = glm::vec3(1.0f, 0.25f, 1.5f);   // 1.5: clamped to 1
+    f.features.normal = glm::vec3(-1.0f, 0.0f, 1.0f);
+    f.features.position = glm::vec3(-3.0f, 0x1p31f, 1.0e9f);  // y beyond kFeaturePositionLimit
+    constexpr int n = 1001;
+    for (int i = 0; i < n; ++i) add_feature_sample(s, i, f);
+    CHECK(s.count[0] == 501);
+    CHECK(s.count[1] == 500);
+    CHECK(s.albedo[0].v[0] == std::int64_t{501} << 32);
+    CHECK(s.bounded_square[0] == static_cast<SumUInt>(n) << 64);
+    const FeatureLayers L = feature_layers({s}, 1, 1);
+    CHECK(L.color.pixels[0] == f.color);
+    CHECK(L.albedo.pixels[0] == glm::vec3(1.0f, 0.25f, 1.0f));
+    CHECK(L.normal.pixels[0] == f.features.normal);
+    CHECK(L.position.pixels[0] == glm::vec3(-3.0f, kFeaturePositionLimit, 1.0e9f));
+    for (int h = 0; h < 2; ++h) CHECK(L.half_normal[h].pixels[0] == f.features.normal);
+    // Equal samples: every variance exactly 0.
+    CHECK(L.color_variance.pixels[0] == glm::vec3(0.0f));
+    CHECK(L.albedo_variance.pixels[0] == glm::vec3(0.0f));
+    CHECK(L.normal_variance.pixels[0] == glm::vec3(0.0f));
+    CHECK(L.depth_variance[0] == 0.0f);
+    // Two values of the bounded features and of depth: the unbiased variance of the mean.
+    FeatureSums t;
+    FeatureSample g = f;
+    for (int i = 0; i < 4; ++i) {
+        g.features.normal.x = i % 2 == 0 ? -1.0f : 1.0f;    // mean 0, sample variance 4/3
+        g.features.position.z = i % 2 == 0 ? 1.0e9f : 0.0f;  // sample variance 1e18/3
+        add_feature_sample(t, i, g);
+    }
+    const FeatureLayers T = feature_layers({t}, 1, 1);
+    CHECK(T.normal.pixels[0].x == 0.0f);
+    CHECK(T.normal_variance.pixels[0].x == Approx(1.0 / 3.0).epsilon(1e-7));
+    CHECK(T.depth_variance[0] == Approx(1.0e18 / 12.0).epsilon(1e-7));
+}
+
 TEST_CASE("aovs: a checker-textured quad's albedo, normal and depth against the closed form, misses zero", "[render][aovs]") {
     constexpr int size = 32, sub = 8;
     Scene scene = plane_test_scene(size);

@@ -18,7 +18,7 @@ glm::vec3 conductor_f0(const MaterialParameters& m) {
 
 glm::vec3 feature_albedo(const MaterialParameters& m, const SurfaceHit& hit, const glm::vec3& wo) {
     switch (m.type) {
-        case MaterialParameters::Type::Emissive: return glm::clamp(emitted_radiance(m, hit.normal, wo), 0.0f, 1.0f);
+        case MaterialParameters::Type::Emissive: return emitted_radiance(m, hit.normal, wo);  // clamped by features_at
         case MaterialParameters::Type::Conductor: return m.albedo * conductor_f0(m);
         case MaterialParameters::Type::Diffuse:
         case MaterialParameters::Type::Metal:
@@ -37,7 +37,9 @@ bool records_features(const MaterialParameters& m) { return !scatters(m) || !is_
 
 SampleFeatures features_at(const MaterialParameters& m, const SurfaceHit& hit, const glm::vec3& wo, const CameraModel& camera) {
     SampleFeatures f;
-    f.albedo = feature_albedo(m, hit, wo);
+    // In [0, 1] per channel, as OpenImageDenoise's albedo guide is (a texture's HDR texel or an
+    // emitter's radiance would be above): the feature sums are sized for that range.
+    f.albedo = glm::clamp(feature_albedo(m, hit, wo), 0.0f, 1.0f);
     // Turned to the arriving ray's side of the surface as make_shading_context turns it (by the
     // geometric normal), so the feature is the normal the BSDF shades with.
     f.normal = glm::dot(wo, hit.normal) >= 0.0f ? hit.shading_normal : -hit.shading_normal;

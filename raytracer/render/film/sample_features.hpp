@@ -12,8 +12,9 @@
 //             diffuse (and coated diffuse: its base) albedo; metal albedo (its tint); conductor
 //             albedo x the Fresnel reflectance at normal incidence of its eta + i k; rough
 //             dielectric albedo (its transmission tint); a surface that only emits (an
-//             emissive material) its emitted radiance toward the ray, clamped to [0, 1] per
-//             channel (OpenImageDenoise's suggestion for lights);
+//             emissive material) its emitted radiance toward the ray (OpenImageDenoise's
+//             suggestion for lights); all clamped to [0, 1] per channel, as OpenImageDenoise's
+//             albedo guide is;
 //   normal    the world-space shading normal (after normal and bump maps), on the arriving
 //             ray's side of the surface (the frame the BSDF shades in);
 //   position  the point in camera space (CameraModel::camera_space): z is the depth.
