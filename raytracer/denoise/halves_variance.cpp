@@ -3,28 +3,33 @@
 #include <algorithm>
 #include <vector>
 
+#include "raytracer/denoise/tiles.hpp"
+
 namespace sweeptrace::denoise {
 namespace {
 
-// Sums of `values` (one channel, width x height) over the clipped (2r + 1)^2 window of every
-// pixel: along each row, then along each column, each sum taken afresh (no running sum whose
-// subtractions would leave rounding behind beside large values: a window of zeros sums to 0).
-std::vector<double> window_sums(const std::vector<double>& values, int width, int height, int r) {
-    std::vector<double> rows(values.size()), out(values.size());
-    const auto at = [width](int x, int y) { return std::size_t(y) * std::size_t(width) + std::size_t(x); };
-    for (int y = 0; y < height; ++y)
-        for (int x = 0; x < width; ++x) {
-            double sum = 0.0;
-            for (int xx = std::max(0, x - r); xx <= std::min(width - 1, x + r); ++xx) sum += values[at(xx, y)];
-            rows[at(x, y)] = sum;
-        }
-    for (int y = 0; y < height; ++y)
-        for (int x = 0; x < width; ++x) {
-            double sum = 0.0;
-            for (int yy = std::max(0, y - r); yy <= std::min(height - 1, y + r); ++yy) sum += rows[at(x, yy)];
-            out[at(x, y)] = sum;
-        }
+// Sums of `in` (one channel, width x height) over the clipped 2r + 1 pixels around every pixel
+// along its row (dx = 1, dy = 0) or its column (dx = 0, dy = 1), each sum taken afresh (no running
+// sum whose subtractions would leave rounding behind beside large values: a window of zeros sums
+// to 0). Rows in parallel, each sum alone: the same bits at any thread count.
+std::vector<double> line_sums(const std::vector<double>& in, int width, int height, int r, int dx, int dy) {
+    std::vector<double> out(in.size());
+    for_each_chunk(std::size_t(height), 8, [&](std::size_t y0, std::size_t y1) {
+        for (int y = int(y0); y < int(y1); ++y)
+            for (int x = 0; x < width; ++x) {
+                // t runs over the pixels (x + t dx, y + t dy) inside the image
+                const int lo = std::max(-r, dx ? -x : -y), hi = std::min(r, dx ? width - 1 - x : height - 1 - y);
+                double sum = 0.0;
+                for (int t = lo; t <= hi; ++t) sum += in[std::size_t(y + t * dy) * std::size_t(width) + std::size_t(x + t * dx)];
+                out[std::size_t(y) * std::size_t(width) + std::size_t(x)] = sum;
+            }
+    });
     return out;
+}
+
+// The sums over the clipped (2r + 1)^2 window of every pixel: along rows, then along columns.
+std::vector<double> window_sums(const std::vector<double>& values, int width, int height, int r) {
+    return line_sums(line_sums(values, width, height, r, 1, 0), width, height, r, 0, 1);
 }
 
 }  // namespace
@@ -37,16 +42,20 @@ Planes halves_variance(const Buffers& buffers, int radius) {
         const float* even = buffers.even.channel(c);
         const float* odd = buffers.odd.channel(c);
         const float* var = buffers.variance.channel(c);
-        for (std::size_t i = 0; i < n; ++i) {
-            const double d = double(even[i]) - double(odd[i]);
-            spread[i] = 0.25 * d * d;
-            variance[i] = var[i];
-        }
+        for_each_chunk(n, 4096, [&](std::size_t i0, std::size_t i1) {
+            for (std::size_t i = i0; i < i1; ++i) {
+                const double d = double(even[i]) - double(odd[i]);
+                spread[i] = 0.25 * d * d;
+                variance[i] = var[i];
+            }
+        });
         const std::vector<double> spread_sum = window_sums(spread, out.width, out.height, radius);
         const std::vector<double> variance_sum = window_sums(variance, out.width, out.height, radius);
         float* dst = out.channel(c);
-        for (std::size_t i = 0; i < n; ++i)
-            if (variance_sum[i] > 0.0) dst[i] = float(double(var[i]) * spread_sum[i] / variance_sum[i]);
+        for_each_chunk(n, 4096, [&](std::size_t i0, std::size_t i1) {
+            for (std::size_t i = i0; i < i1; ++i)
+                if (variance_sum[i] > 0.0) dst[i] = float(double(var[i]) * spread_sum[i] / variance_sum[i]);
+        });
     }
     return out;
 }

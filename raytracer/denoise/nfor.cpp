@@ -19,16 +19,19 @@ namespace {
 
 const std::vector<float> kCandidateK{0.5f, 1.0f};
 constexpr int kRegressionRadius = 9;  // windows of 19x19 pixels
+constexpr std::size_t kChunk = 16384;  // the pixels of a parallel chunk of the per-pixel loops
 
 // The mean of two buffers and, as its variance of the mean, a quarter of their squared
 // difference: the two-sample estimate for two independent estimates of the same value.
 std::pair<Planes, Planes> mean_and_variance(const Planes& a, const Planes& b) {
     Planes mean(a.width, a.height, a.channels), variance(a.width, a.height, a.channels);
-    for (std::size_t i = 0; i < a.data.size(); ++i) {
-        const float d = b.data[i] - a.data[i];
-        mean.data[i] = 0.5f * (a.data[i] + b.data[i]);
-        variance.data[i] = 0.25f * d * d;
-    }
+    for_each_chunk(a.data.size(), kChunk, [&](std::size_t i0, std::size_t i1) {
+        for (std::size_t i = i0; i < i1; ++i) {
+            const float d = b.data[i] - a.data[i];
+            mean.data[i] = 0.5f * (a.data[i] + b.data[i]);
+            variance.data[i] = 0.25f * d * d;
+        }
+    });
     return {std::move(mean), std::move(variance)};
 }
 
@@ -61,29 +64,35 @@ Planes nfor(const NforInput& in, FilterIsa isa) {
     {
         const std::size_t n = color.mean.data.size();
         Planes noisy_error(color.mean.width, color.mean.height, 6);
-        for (int k = 0; k < 2; ++k)
-            for (std::size_t i = 0; i < n; ++i) {
-                // The even half's filtered value against the odd half's noisy one: the squared
-                // difference overestimates the error by the odd half's variance (twice the full
-                // mean's), and the same the other way; the two filtered halves' own spread is taken
-                // out too.
-                const float v2 = 2.0f * color_var.data[i];
-                const float de = color.odd.data[i] - candidate_even[k].data[i], dodd = color.even.data[i] - candidate_odd[k].data[i];
-                const float spread = candidate_odd[k].data[i] - candidate_even[k].data[i];
-                noisy_error.data[std::size_t(k) * n + i] = 0.5f * ((de * de - v2) + (dodd * dodd - v2)) - 0.25f * spread * spread;
-            }
+        for_each_chunk(n, kChunk, [&](std::size_t i0, std::size_t i1) {
+            for (int k = 0; k < 2; ++k)
+                for (std::size_t i = i0; i < i1; ++i) {
+                    // The even half's filtered value against the odd half's noisy one: the squared
+                    // difference overestimates the error by the odd half's variance (twice the
+                    // full mean's), and the same the other way; the two filtered halves' own
+                    // spread is taken out too.
+                    const float v2 = 2.0f * color_var.data[i];
+                    const float de = color.odd.data[i] - candidate_even[k].data[i], dodd = color.even.data[i] - candidate_odd[k].data[i];
+                    const float spread = candidate_odd[k].data[i] - candidate_even[k].data[i];
+                    noisy_error.data[std::size_t(k) * n + i] = 0.5f * ((de * de - v2) + (dodd * dodd - v2)) - 0.25f * spread * spread;
+                }
+        });
         error = nl_means(noisy_error, color.mean, color_var, {1, 9, 1.0f, 1.0f}, isa);
     }
     // Selection: 1 where the wider candidate's error is smaller, smoothed like the error maps.
     Planes select(color.mean.width, color.mean.height, 3);
-    for (std::size_t i = 0; i < select.data.size(); ++i) select.data[i] = error.data[i] < error.data[select.data.size() + i] ? 0.0f : 1.0f;
+    for_each_chunk(select.data.size(), kChunk, [&](std::size_t i0, std::size_t i1) {
+        for (std::size_t i = i0; i < i1; ++i) select.data[i] = error.data[i] < error.data[select.data.size() + i] ? 0.0f : 1.0f;
+    });
     select = nl_means(select, color.mean, color_var, {1, 9, 1.0f, 1.0f}, isa);
     Planes result_even(color.mean.width, color.mean.height, 3), result_odd = result_even;
-    for (std::size_t i = 0; i < select.data.size(); ++i) {
-        const float s = select.data[i];
-        result_even.data[i] = candidate_even[0].data[i] + s * (candidate_even[1].data[i] - candidate_even[0].data[i]);
-        result_odd.data[i] = candidate_odd[0].data[i] + s * (candidate_odd[1].data[i] - candidate_odd[0].data[i]);
-    }
+    for_each_chunk(select.data.size(), kChunk, [&](std::size_t i0, std::size_t i1) {
+        for (std::size_t i = i0; i < i1; ++i) {
+            const float s = select.data[i];
+            result_even.data[i] = candidate_even[0].data[i] + s * (candidate_even[1].data[i] - candidate_even[0].data[i]);
+            result_odd.data[i] = candidate_odd[0].data[i] + s * (candidate_odd[1].data[i] - candidate_odd[0].data[i]);
+        }
+    });
     candidate_even.clear();
     candidate_odd.clear();
     error = Planes();
@@ -99,7 +108,9 @@ Planes nfor(const NforInput& in, FilterIsa isa) {
     // Radiance is never negative, but a first-order fit across a bright edge overshoots below 0
     // beside it (the dark surround of an emitter line, measured in docs/denoising.md). Moving a
     // negative value to 0 brings it closer to any non-negative truth, so it only lowers the error.
-    for (float& v : result.data) v = std::max(v, 0.0f);
+    for_each_chunk(result.data.size(), kChunk, [&](std::size_t i0, std::size_t i1) {
+        for (std::size_t i = i0; i < i1; ++i) result.data[i] = std::max(result.data[i], 0.0f);
+    });
     return result;
 }
 

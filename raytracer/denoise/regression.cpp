@@ -375,24 +375,29 @@ std::vector<Planes> collaborative_regression(const Planes& image, const Planes& 
             for (int cy = tile.y0; cy < tile.y1; ++cy) fit(work, cy, res);
         }
     });
+    // The tiles' buffers added into the image in tile order, in parallel over bands of rows: a band
+    // adds the tiles over it in that order, so every pixel's sum is the same at any thread count.
     std::vector<Planes> out;
     for (const std::vector<TileResult>& tile_results : results) {
         Planes sum(w, h, 3);
         std::vector<float> weights(std::size_t(w) * std::size_t(h), 0.0f);
-        for (const TileResult& res : tile_results) {
-            // The buffer's columns inside the image (the rest is padding of weight 0).
-            const std::size_t area_n = res.weights.size();
-            for (int y = res.area.y0; y < res.area.y1; ++y)
-                for (int x = std::max(res.area.x0, 0); x < std::min(res.area.x1, w); ++x) {
-                    const std::size_t q = std::size_t(y - res.area.y0) * std::size_t(res.stride) + std::size_t(x - res.area.x0);
-                    const std::size_t p = std::size_t(y) * std::size_t(w) + std::size_t(x);
-                    for (int c = 0; c < 3; ++c) sum.channel(c)[p] += res.sum[std::size_t(c) * area_n + q];
-                    weights[p] += res.weights[q];
-                }
-        }
-        // Every pixel is its own window's centre with weight 1 (distance <= 0 to itself).
-        for (int c = 0; c < 3; ++c)
-            for (std::size_t p = 0; p < weights.size(); ++p) sum.channel(c)[p] /= weights[p];
+        for_each_chunk(std::size_t(h), kTileSize, [&](std::size_t band0, std::size_t band1) {
+            for (const TileResult& res : tile_results) {
+                // The buffer's columns inside the image (the rest is padding of weight 0).
+                const std::size_t area_n = res.weights.size();
+                for (int y = std::max(res.area.y0, int(band0)); y < std::min(res.area.y1, int(band1)); ++y)
+                    for (int x = std::max(res.area.x0, 0); x < std::min(res.area.x1, w); ++x) {
+                        const std::size_t q = std::size_t(y - res.area.y0) * std::size_t(res.stride) + std::size_t(x - res.area.x0);
+                        const std::size_t p = std::size_t(y) * std::size_t(w) + std::size_t(x);
+                        for (int c = 0; c < 3; ++c) sum.channel(c)[p] += res.sum[std::size_t(c) * area_n + q];
+                        weights[p] += res.weights[q];
+                    }
+            }
+            // Every pixel is its own window's centre with weight 1 (distance <= 0 to itself).
+            const std::size_t p0 = band0 * std::size_t(w), p1 = band1 * std::size_t(w);
+            for (int c = 0; c < 3; ++c)
+                for (std::size_t p = p0; p < p1; ++p) sum.channel(c)[p] /= weights[p];
+        });
         out.push_back(std::move(sum));
     }
     return out;

@@ -23,6 +23,14 @@ inline std::vector<Rect> image_tiles(int width, int height) {
     return tiles;
 }
 
+// Calls work(begin, end) on chunks of [0, n) in parallel: for whole-image loops whose every element
+// (a pixel, or a row) is computed from the inputs alone, so the result does not depend on the
+// chunks (serial, such a loop over a 1920x1080 image kept one of two cores idle).
+template <class Work>
+void for_each_chunk(std::size_t n, std::size_t grain, const Work& work) {
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, grain), [&](const tbb::blocked_range<std::size_t>& r) { work(r.begin(), r.end()); });
+}
+
 // Calls work(tile_index, tile) for every tile, in parallel (the caller's tbb::task_arena sets the
 // threads); `work` must write only what belongs to its tile.
 template <class Work>
