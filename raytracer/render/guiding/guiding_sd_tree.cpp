@@ -73,7 +73,15 @@ void GuidingSdTree::rebuild_grid() {
 }
 
 void GuidingSdTree::add(const std::vector<std::vector<GuideRecord>>& batches) {
-    if (!has_box_) set_box(batches);
+    if (!has_box_) {
+        set_box(batches);
+        // The sky guide's first structure: cells of a 256th of the sphere, not a quadrant, so
+        // that what the first pass teaches (from the few BSDF rays that escaped) already aims
+        // next event estimation at the window rather than at a quarter of the sphere.
+        DirectionalQuadtree even;
+        for (int q = 0; q < 4; ++q) even.record_square(glm::vec2(0.25f + 0.5f * float(q & 1), 0.25f + 0.5f * float(q >> 1)), 1.0f);
+        leaves_[0].sky_building = even.refined(kSkyQuadtreeThreshold, kSkyQuadtreeMaxDepth);
+    }
     if (!has_box_) return;
     for (const std::vector<GuideRecord>& records : batches)
         for (const GuideRecord& r : records) {
@@ -85,6 +93,7 @@ void GuidingSdTree::add(const std::vector<std::vector<GuideRecord>>& batches) {
             }
             if (r.value > 0.0f && leaf.learning) leaf.building.record(r.dir, r.value);
             if (r.light_value > 0.0f && leaf.learning) leaf.light_building.record_square(r.light_uv, r.light_value);
+            if (r.sky_value > 0.0f && leaf.learning) leaf.sky_building.record(r.dir, r.sky_value);
         }
 }
 
@@ -140,7 +149,7 @@ void GuidingSdTree::end_iteration(int iteration) {
     if (nodes_.size() > 1) rebuild_grid();
     if (iteration == kDecisionIteration && guided_record_share() < kMinGuidedShare) {
         off_ = true;
-        for (Leaf& leaf : leaves_) leaf.usable = leaf.light_usable = false;
+        for (Leaf& leaf : leaves_) leaf.usable = leaf.light_usable = leaf.sky_usable = false;
         return;
     }
     for (Leaf& leaf : leaves_) {
@@ -152,6 +161,10 @@ void GuidingSdTree::end_iteration(int iteration) {
         leaf.light_sampling.freeze();
         leaf.light_usable = leaf.usable && leaf.light_sampling.total() > 0.0;
         leaf.light_building = leaf.light_sampling.refined(kLightQuadtreeThreshold, kLightQuadtreeMaxDepth);
+        leaf.sky_sampling = std::move(leaf.sky_building);
+        leaf.sky_sampling.freeze();
+        leaf.sky_usable = leaf.usable && leaf.sky_sampling.total() > 0.0;
+        leaf.sky_building = leaf.sky_sampling.refined(kSkyQuadtreeThreshold, kSkyQuadtreeMaxDepth);
         leaf.light_samples = leaf.light_misses = 0;
         leaf.building = leaf.sampling.refined(kQuadtreeThreshold, kQuadtreeMaxDepth);
         leaf.records = 0;
