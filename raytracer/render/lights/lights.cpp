@@ -259,10 +259,10 @@ float LightSet::sample_area(const Light& l, float u_part, float u1, float u2, Su
 
 bool LightSet::sample(const glm::vec3& p, std::uint32_t p_object, float u_select, float u_part, float u1, float u2,
                       LightSample& out, const DirectionalQuadtree* square_guide,
-                      const DirectionalQuadtree* sky_guide) const {
+                      const SkyGuide* sky_guide) const {
     if (sky_guide == nullptr || !sky_) return sample_lights(p, p_object, u_select, u_part, u1, u2, out, square_guide);
     const float ps = sky_probability_;
-    if (u_select < ps) return sample_guided_sky(*sky_guide, u1, u2, out);
+    if (u_select < ps) return sample_guided_sky(*sky_guide, p, u1, u2, out);
     if (!sample_lights(p, p_object, std::min((u_select - ps) / (1.0f - ps), kBelowOne), u_part, u1, u2, out, square_guide))
         return false;
     out.pdf *= 1.0f - ps;
@@ -313,7 +313,7 @@ bool LightSet::sample_lights(const glm::vec3& p, std::uint32_t p_object, float u
 }
 
 float LightSet::pdf(const glm::vec3& p, std::uint32_t p_object, const SurfaceHit& hit,
-                    const DirectionalQuadtree* square_guide, const DirectionalQuadtree* sky_guide) const {
+                    const DirectionalQuadtree* square_guide, const SkyGuide* sky_guide) const {
     const float pdf = lights_pdf(p, p_object, hit, square_guide);
     return sky_guide != nullptr && sky_ ? pdf * (1.0f - sky_probability_) : pdf;
 }

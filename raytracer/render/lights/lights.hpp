@@ -93,6 +93,7 @@ struct LightSample {
 };
 
 class DirectionalQuadtree;
+struct SkyGuide;
 
 // A light's emission sampled for light tracing and bidirectional methods
 // (LightSet::sample_emission): a point and the direction light leaves it in.
@@ -149,13 +150,13 @@ public:
     // (sky_guide.hpp); u_select picks it or the others, stretched back over [0, 1).
     bool sample(const glm::vec3& p, std::uint32_t p_object, float u_select, float u_part, float u1, float u2,
                 LightSample& out, const DirectionalQuadtree* square_guide = nullptr,
-                const DirectionalQuadtree* sky_guide = nullptr) const;
+                const SkyGuide* sky_guide = nullptr) const;
 
     // Solid-angle density (selection included) with which sample(p, p_object, ...) produces the
     // light point `hit`, reached from `p` by a ray. Zero when hit.object is not a light.
     // `square_guide` and `sky_guide` as given to sample() from p.
     float pdf(const glm::vec3& p, std::uint32_t p_object, const SurfaceHit& hit,
-              const DirectionalQuadtree* square_guide = nullptr, const DirectionalQuadtree* sky_guide = nullptr) const;
+              const DirectionalQuadtree* square_guide = nullptr, const SkyGuide* sky_guide = nullptr) const;
 
     // True when some light sits at infinity with a disc of directions (a sun): rays that escape
     // the scene must then ask escaped_radiance.
@@ -170,7 +171,7 @@ public:
     // BSDF-only sampling).
     // `sky_guide` as given to sample() from `from` (the other lights' selection then shrinks).
     glm::vec3 escaped_radiance(const glm::vec3& from, const glm::vec3& dir, float bsdf_pdf,
-                               const DirectionalQuadtree* sky_guide = nullptr) const;
+                               const SkyGuide* sky_guide = nullptr) const;
 
     // The background emits, has no portal and is no map: no light, but one that a learned sky
     // guide turns into one at the vertices where it was learned (sky_guide.hpp).
@@ -178,9 +179,10 @@ public:
     // The guided sky's selection probability where it is a light.
     float sky_probability() const { return sky_probability_; }
     // The MIS weight of the guidable sky's radiance found along `dir` by a ray drawn with density
-    // `bsdf_pdf` from a vertex with `sky_guide` (power heuristic against next event estimation's
-    // density of the sky there); 1 without a guide or for bsdf_pdf <= 0, as escaped_radiance.
-    float guided_sky_weight(const glm::vec3& dir, float bsdf_pdf, const DirectionalQuadtree* sky_guide) const;
+    // `bsdf_pdf` from `from`, a vertex with `sky_guide` (power heuristic against next event
+    // estimation's density of the sky there); 1 without a guide or for bsdf_pdf <= 0, as
+    // escaped_radiance.
+    float guided_sky_weight(const glm::vec3& from, const glm::vec3& dir, float bsdf_pdf, const SkyGuide* sky_guide) const;
 
     // --- Emission sampling, for light tracing and bidirectional path tracing
     // (render/lights/light_emission.cpp). The light is chosen with the probabilities sample() uses.
@@ -254,7 +256,7 @@ private:
     void add_scene_lights(const Scene& scene, std::vector<float>& weights);
     bool sample_scene_light(const NonSurfaceLight& l, const glm::vec3& p, float u1, float u2, LightSample& out) const;
     bool sample_background(const glm::vec3& p, float u1, float u2, LightSample& out) const;
-    bool sample_guided_sky(const DirectionalQuadtree& sky_guide, float u1, float u2, LightSample& out) const;
+    bool sample_guided_sky(const SkyGuide& sky_guide, const glm::vec3& p, float u1, float u2, LightSample& out) const;
     // The regular selection without the guided sky, as sample() scales it by the sky's presence.
     bool sample_lights(const glm::vec3& p, std::uint32_t p_object, float u_select, float u_part, float u1, float u2,
                        LightSample& out, const DirectionalQuadtree* square_guide) const;

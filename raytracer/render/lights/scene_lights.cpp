@@ -95,9 +95,9 @@ void LightSet::add_scene_lights(const Scene& scene, std::vector<float>& weights)
     }
 }
 
-bool LightSet::sample_guided_sky(const DirectionalQuadtree& sky_guide, float u1, float u2, LightSample& out) const {
+bool LightSet::sample_guided_sky(const SkyGuide& sky_guide, const glm::vec3& p, float u1, float u2, LightSample& out) const {
     float density = 0.0f;
-    out.wi = sample_sky_mixture(sky_guide, glm::vec2(u1, u2), density);
+    if (!sample_sky_mixture(sky_guide, p, glm::vec2(u1, u2), out.wi, density)) return false;
     out.pdf = sky_probability_ * density;
     out.radiance = sky_->radiance(out.wi);
     out.guided_sky = true;
@@ -109,9 +109,10 @@ bool LightSet::sample_guided_sky(const DirectionalQuadtree& sky_guide, float u1,
     return out.pdf > 0.0f && std::isfinite(out.pdf) && luminance(out.radiance) > 0.0f;
 }
 
-float LightSet::guided_sky_weight(const glm::vec3& dir, float bsdf_pdf, const DirectionalQuadtree* sky_guide) const {
+float LightSet::guided_sky_weight(const glm::vec3& from, const glm::vec3& dir, float bsdf_pdf,
+                                  const SkyGuide* sky_guide) const {
     if (sky_guide == nullptr || !sky_ || !(bsdf_pdf > 0.0f)) return 1.0f;
-    return power_heuristic(bsdf_pdf, sky_probability_ * sky_mixture_density(*sky_guide, dir));
+    return power_heuristic(bsdf_pdf, sky_probability_ * sky_mixture_density(*sky_guide, from, dir));
 }
 
 bool LightSet::sample_background(const glm::vec3& p, float u1, float u2, LightSample& out) const {
@@ -161,7 +162,7 @@ bool LightSet::sample_scene_light(const NonSurfaceLight& l, const glm::vec3& p, 
 }
 
 glm::vec3 LightSet::escaped_radiance(const glm::vec3& from, const glm::vec3& dir, float bsdf_pdf,
-                                     const DirectionalQuadtree* sky_guide) const {
+                                     const SkyGuide* sky_guide) const {
     // Where the guided sky is a light, the others are chosen with what it leaves them.
     const float others = sky_guide != nullptr && sky_ ? 1.0f - sky_probability_ : 1.0f;
     glm::vec3 sum(0.0f);
