@@ -85,12 +85,6 @@ RenderOptions guided(int spp, std::uint64_t seed, int threads = 0) {
     return o;
 }
 
-double mean_variance(const Image& variance) {
-    double sum = 0.0;
-    for (const glm::vec3& v : variance.pixels) sum += luminance(v);
-    return sum / static_cast<double>(variance.pixels.size());
-}
-
 }  // namespace
 
 TEST_CASE("guided sky: the learned exits' density integrates to 1 over the sphere and aims at the window",
@@ -237,8 +231,8 @@ TEST_CASE("guided sky: the window room without its portal converges to BSDF samp
     // the command line on the same room (32x24, depth 5, 64 spp, seed 3, --variance): 0.25x with
     // the sky guided; path guiding alone (the main before it) 1.14x, its first passes guided by
     // a guide learned from one or two.
-    const double bsdf_64 = mean_variance(reference.variance) * (1024.0 / 64.0);
-    const double v_sky = mean_variance(sky.variance);
+    const double bsdf_64 = mean_pixel_variance(reference.variance) * (1024.0 / 64.0);
+    const double v_sky = mean_pixel_variance(sky.variance);
     INFO("mean pixel variance at 64 spp: BSDF only " << bsdf_64 << ", guided sky " << v_sky);
     CHECK(v_sky < 0.5 * bsdf_64);
 }
