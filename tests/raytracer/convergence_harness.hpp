@@ -89,6 +89,13 @@ inline BlockTestResult test_against_truth(const Image& truth, const RenderResult
     return block_test(truth, r.image, r.variance, options);
 }
 
+// The mean over pixels of a render's per-pixel variance (luminance): its noise in one number.
+inline double mean_pixel_variance(const Image& variance) {
+    double sum = 0.0;
+    for (const glm::vec3& v : variance.pixels) sum += luminance(v);
+    return sum / static_cast<double>(variance.pixels.size());
+}
+
 // Same size and the same pixels bit for bit (NaNs and signed zeros included).
 inline bool same_bits(const Image& a, const Image& b) {
     return a.width == b.width && a.height == b.height &&

@@ -52,12 +52,6 @@ PortalCheck check_portal_against_bsdf_only(const Scene& portalled, int spp, std:
     return c;
 }
 
-double sky_window_mean_variance(const Image& variance) {
-    double sum = 0.0;
-    for (const glm::vec3& v : variance.pixels) sum += luminance(v);
-    return sum / static_cast<double>(variance.pixels.size());
-}
-
 }  // namespace
 
 TEST_CASE("sky through a window: sampled through its portal, the same image as BSDF sampling alone, far less noisy",
@@ -69,8 +63,8 @@ TEST_CASE("sky through a window: sampled through its portal, the same image as B
     const auto [reference, portal] = check_portal_against_bsdf_only(portalled, 64, 3);
     // Noise at equal samples per pixel: the portal's directions all reach the sky (but for the
     // room's own occluders), BSDF directions seldom do.
-    const double bsdf_variance_64 = sky_window_mean_variance(reference.variance) * (1024.0 / 64.0);
-    const double v_portal = sky_window_mean_variance(portal.variance);
+    const double bsdf_variance_64 = mean_pixel_variance(reference.variance) * (1024.0 / 64.0);
+    const double v_portal = mean_pixel_variance(portal.variance);
     INFO("mean pixel variance at 64 spp: BSDF only " << bsdf_variance_64 << ", through the portal " << v_portal);
     CHECK(v_portal < 0.25 * bsdf_variance_64);
 }

@@ -19,6 +19,10 @@ void GuidingSdTree::set_box(const std::vector<std::vector<GuideRecord>>& batches
     // A cube, so that splitting x, y, z in turn keeps leaves near cubes; 1% margin so that the
     // extreme records are not on the boundary.
     const float side = std::max(1e-3f, 1.01f * std::max(hi.x - lo.x, std::max(hi.y - lo.y, hi.z - lo.z)));
+    // The sky's exits are learned on the records' own box, not the cube: a window in a wall at
+    // the scene's edge is then where the rays leave, the same place seen from every point.
+    records_lo_ = lo;
+    records_hi_ = hi;
     lo_ = 0.5f * (lo + hi) - glm::vec3(0.5f * side);
     coord_scale_ = std::ldexp(1.0f, kCoordBits) / side;
     has_box_ = true;
@@ -73,8 +77,18 @@ void GuidingSdTree::rebuild_grid() {
 }
 
 void GuidingSdTree::add(const std::vector<std::vector<GuideRecord>>& batches) {
-    if (!has_box_) set_box(batches);
-    if (!has_box_) return;
+    if (!has_box_) {
+        set_box(batches);
+        if (!has_box_) return;
+        // The sky guides' first structures: even cells (a 256th of the sphere, a 32nd of a face),
+        // not quadrants, so that what the first pass teaches from the few BSDF rays that escaped
+        // already aims next event estimation at the opening rather than at a quarter of the sphere.
+        DirectionalQuadtree even;
+        for (int q = 0; q < 4; ++q) even.record_square(glm::vec2(0.25f + 0.5f * float(q & 1), 0.25f + 0.5f * float(q >> 1)), 1.0f);
+        const DirectionalQuadtree structure = even.refined(0.01, kSkyQuadtreeMaxDepth);
+        leaves_[0].sky_building = structure;
+        exit_building_.start(records_lo_, records_hi_, structure);
+    }
     for (const std::vector<GuideRecord>& records : batches)
         for (const GuideRecord& r : records) {
             Leaf& leaf = leaves_[r.leaf];
@@ -85,6 +99,8 @@ void GuidingSdTree::add(const std::vector<std::vector<GuideRecord>>& batches) {
             }
             if (r.value > 0.0f && leaf.learning) leaf.building.record(r.dir, r.value);
             if (r.light_value > 0.0f && leaf.learning) leaf.light_building.record_square(r.light_uv, r.light_value);
+            if (r.sky_value > 0.0f && leaf.learning) leaf.sky_building.record(r.dir, r.sky_value);
+            if (r.sky_value > 0.0f) exit_building_.record(r.point, r.dir, r.sky_value);
         }
 }
 
@@ -140,9 +156,13 @@ void GuidingSdTree::end_iteration(int iteration) {
     if (nodes_.size() > 1) rebuild_grid();
     if (iteration == kDecisionIteration && guided_record_share() < kMinGuidedShare) {
         off_ = true;
-        for (Leaf& leaf : leaves_) leaf.usable = leaf.light_usable = false;
+        for (Leaf& leaf : leaves_) leaf.usable = leaf.light_usable = leaf.sky_usable = false;
         return;
     }
+    exit_sampling_ = std::move(exit_building_);
+    exit_sampling_.freeze();
+    exit_usable_ = exit_sampling_.total() > 0.0;
+    exit_building_ = exit_sampling_.refined(kSkyExitThreshold, kSkyExitMaxDepth);
     for (Leaf& leaf : leaves_) {
         leaf.sampling = std::move(leaf.building);
         leaf.sampling.freeze();
@@ -152,6 +172,10 @@ void GuidingSdTree::end_iteration(int iteration) {
         leaf.light_sampling.freeze();
         leaf.light_usable = leaf.usable && leaf.light_sampling.total() > 0.0;
         leaf.light_building = leaf.light_sampling.refined(kLightQuadtreeThreshold, kLightQuadtreeMaxDepth);
+        leaf.sky_sampling = std::move(leaf.sky_building);
+        leaf.sky_sampling.freeze();
+        leaf.sky_usable = leaf.usable && leaf.sky_sampling.total() > 0.0;
+        leaf.sky_building = leaf.sky_sampling.refined(kSkyQuadtreeThreshold, kSkyQuadtreeMaxDepth);
         leaf.light_samples = leaf.light_misses = 0;
         leaf.building = leaf.sampling.refined(kQuadtreeThreshold, kQuadtreeMaxDepth);
         leaf.records = 0;

@@ -33,6 +33,7 @@
 #include <glm/vec3.hpp>
 
 #include "raytracer/render/guiding/guiding_quadtree.hpp"
+#include "raytracer/render/guiding/sky_guide.hpp"
 
 namespace sweeptrace {
 
@@ -49,6 +50,10 @@ struct GuideRecord {
     // and its unweighted estimate, radiance x cos / density: what the light guide learns.
     glm::vec2 light_uv{0.0f};
     float light_value = 0.0f;
+    // The part of `value` that came from a sky without a portal along `dir` (a next-event sample
+    // of the guided sky, or a BSDF-sampled ray that escaped to it): what the sky guide learns
+    // (sky_guide.hpp).
+    float sky_value = 0.0f;
 };
 
 class GuidingSdTree {
@@ -61,6 +66,16 @@ public:
     // descent 20 cache misses (a guided 1024x768 smallpt render 5x slower).
     static constexpr int kLightQuadtreeMaxDepth = 8;
     static constexpr double kLightQuadtreeThreshold = 0.05;
+    // The sky guide's (sky_guide.hpp), per leaf: a window seen from a region covers a few percent
+    // of the sphere, and a cell of depth 10 is a millionth of it. Cells are split above 3% of the
+    // energy rather than 1%: measured on the window room without its portal (160 spp, seeds 7
+    // and 8), 0.95x the RMSE in 0.9x the CPU time (the finer tree follows the records' noise).
+    static constexpr int kSkyQuadtreeMaxDepth = 10;
+    static constexpr double kSkyQuadtreeThreshold = 0.03;
+    // The scene's learned exits (SkyExitGuide): learned from every leaf's records at once, so
+    // finer (a window is a percent or two of the six faces' square).
+    static constexpr int kSkyExitMaxDepth = 12;
+    static constexpr double kSkyExitThreshold = 0.01;
     // Training ends after this many iterations (2^k - 1 = 255 passes): recording and merging cost
     // about as much as the guide saves on scenes next event estimation already handles, and the
     // guide gains little from more records once its cells are fine.
@@ -111,6 +126,14 @@ public:
     const DirectionalQuadtree* light_guide_at(std::uint32_t leaf) const {
         return leaves_[leaf].light_usable ? &leaves_[leaf].light_sampling : nullptr;
     }
+    // The learned distribution of a sky without a portal seen from a guiding leaf, or nullptr
+    // (sky_guide.hpp).
+    const DirectionalQuadtree* sky_guide_at(std::uint32_t leaf) const {
+        return leaves_[leaf].sky_usable ? &leaves_[leaf].sky_sampling : nullptr;
+    }
+    // Where the rays that reach that sky leave the box of the first pass's records, for the whole
+    // scene, or nullptr (sky_guide.hpp).
+    const SkyExitGuide* sky_exit() const { return exit_usable_ ? &exit_sampling_ : nullptr; }
 
     bool training() const { return !off_ && iterations_done_ < kTrainingIterations; }
     // False once guiding switched itself off (kMinGuidedShare): no leaf guides any more.
@@ -149,20 +172,28 @@ private:
         // directional one is, from the NEE samples' unweighted estimates.
         DirectionalQuadtree light_sampling, light_building;
         bool light_usable = false;  // usable, and light_sampling has energy
+        // Where the sky without a portal is seen from here, learned wherever the directional
+        // guide is, from the sky's MIS-weighted estimates.
+        DirectionalQuadtree sky_sampling, sky_building;
+        bool sky_usable = false;  // usable, and sky_sampling has energy
     };
     void set_box(const std::vector<std::vector<GuideRecord>>& batches);
     void end_iteration(int iteration);
     void split(std::uint32_t node, double threshold);
     // NEE missed in more than kNeeMissShare of the leaf's light samples (or took none): it learns.
-    // A leaf that guided NEE last iteration keeps guiding: its NEE now finds the light because it
-    // is guided, and judging it by that would switch the guide off and on in turn.
+    // A leaf that guided NEE last iteration (a light's square or the sky) keeps guiding: its NEE
+    // now finds the light because it is guided, and judging it by that would switch the guide
+    // off and on in turn.
     static bool misses_nee(const Leaf& leaf) {
-        return leaf.light_usable || leaf.light_samples == 0 ||
+        return leaf.light_usable || leaf.sky_usable || leaf.light_samples == 0 ||
                double(leaf.light_misses) > kNeeMissShare * double(leaf.light_samples);
     }
     // The share of this iteration's records in leaves that learn.
     double guided_record_share() const;
 
+    SkyExitGuide exit_sampling_, exit_building_;
+    bool exit_usable_ = false;
+    glm::vec3 records_lo_{0.0f}, records_hi_{0.0f};  // the first merged pass's records' box
     glm::vec3 lo_{0.0f};
     float coord_scale_ = 0.0f;  // 2^kCoordBits / side of the box
     bool has_box_ = false;

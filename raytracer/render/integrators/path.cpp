@@ -69,7 +69,8 @@ glm::vec3 PathIntegrator::medium_shadow(const SurfaceHit& from, const LightSampl
 glm::vec3 PathIntegrator::radiance(collision::Ray ray, PixelSampler& sampler, std::uint64_t& rays,
                                    std::vector<GuideRecord>* records, float time, PathTally* tally,
                                    FeatureRecord* features) const {
-    const bool nee = sampling_ == Sampling::NeeMis && !lights_.empty();
+    // A sky without a portal is a light only where the guide learned it (sky_guide.hpp).
+    const bool nee = sampling_ == Sampling::NeeMis && (!lights_.empty() || (guide_ != nullptr && lights_.sky_is_guidable()));
     GuidePathRecorder recorder(records);
     // Russian roulette judges a path by the throughput BSDF sampling would have given it: a
     // guided sample aimed at a bright light has a small weight (its density is high), and
@@ -81,6 +82,9 @@ glm::vec3 PathIntegrator::radiance(collision::Ray ray, PixelSampler& sampler, st
     float eta_scale = 1.0f;     // undoes the 1/eta^2 of refractions, for the roulette
     bool full_weight = true;    // the ray that found this vertex gets MIS weight 1
     const DirectionalQuadtree* prev_light_guide = nullptr;  // NEE's guide there (light_guide.hpp)
+    SkyGuide prev_sky;                                      // and its sky guide (sky_guide.hpp)
+    const SkyGuide* prev_sky_guide = nullptr;               // &prev_sky when it had one
+    bool prev_recorded = false;  // that vertex's continuation went to the recorder (add_vertex)
     float prev_pdf = 0.0f;      // BSDF density of that ray (non-delta only)
     glm::vec3 prev_point(0.0f); // where it left
     std::uint32_t prev_object = LightSet::kNoObject;  // and from which object's surface
@@ -136,6 +140,8 @@ glm::vec3 PathIntegrator::radiance(collision::Ray ray, PixelSampler& sampler, st
                 if (tally) tally->scatter(PathTally::Medium, PathTally::kNoMaterial, 1.0f);
                 full_weight = false;
                 prev_light_guide = nullptr;
+                prev_sky_guide = nullptr;
+                prev_recorded = false;
                 prev_pdf = pdf;
                 prev_point = p;
                 prev_object = LightSet::kNoObject;
@@ -148,11 +154,16 @@ glm::vec3 PathIntegrator::radiance(collision::Ray ray, PixelSampler& sampler, st
             }
         }
         if (!found) {
-            if (!lights_.background_is_light())
-                result += tally_found(tally, limit.found(beta * background_radiance(scene_.background, ray.dir), depth),
-                                      PathKey::kBackground);
+            const float mis_pdf = nee && !full_weight ? prev_pdf : 0.0f;
+            if (!lights_.background_is_light()) {
+                // MIS weighted only where the guided sky was a light at the previous vertex.
+                const glm::vec3 le = background_radiance(scene_.background, ray.dir) *
+                                     lights_.guided_sky_weight(prev_point, ray.dir, mis_pdf, prev_sky_guide);
+                if (prev_recorded && lights_.sky_is_guidable()) recorder.add_sky_found(le);
+                result += tally_found(tally, limit.found(beta * le, depth), PathKey::kBackground);
+            }
             if (lights_.has_distant())
-                result += tally_found(tally, limit.found(beta * lights_.escaped_radiance(prev_point, ray.dir, nee && !full_weight ? prev_pdf : 0.0f), depth),
+                result += tally_found(tally, limit.found(beta * lights_.escaped_radiance(prev_point, ray.dir, mis_pdf, prev_sky_guide), depth),
                                       tally ? lights_.escaped_light(ray.dir) : -1);
             break;
         }
@@ -177,7 +188,8 @@ glm::vec3 PathIntegrator::radiance(collision::Ray ray, PixelSampler& sampler, st
         const glm::vec3 le = emitted_radiance(mat, hit.normal, wo);
         if (le != glm::vec3(0.0f)) {
             float w = 1.0f;
-            if (nee && !full_weight) w = power_heuristic(prev_pdf, lights_.pdf(prev_point, prev_object, hit, prev_light_guide));
+            if (nee && !full_weight)
+                w = power_heuristic(prev_pdf, lights_.pdf(prev_point, prev_object, hit, prev_light_guide, prev_sky_guide));
             result += tally_found(tally, limit.found(beta * le * w, depth), tally ? lights_.light_of_object(hit.object) : -1);
         }
         if (depth >= max_depth_ || !scatters(mat)) break;
@@ -188,12 +200,25 @@ glm::vec3 PathIntegrator::radiance(collision::Ray ray, PixelSampler& sampler, st
         const bool learn = recorder.on() && is_guided(mat);
         const DirectionalQuadtree* guide = nullptr;
         const DirectionalQuadtree* light_guide = nullptr;
+        SkyGuide sky;
+        const SkyGuide* sky_guide = nullptr;  // &sky where the leaf learned the sky
         if (guide_ != nullptr && guide_->active() && is_guided(mat)) {
             const std::uint32_t leaf = guide_->leaf_of(hit.point);
             guide = guide_->guide_at(leaf);
             if (nee) light_guide = guide_->light_guide_at(leaf);
+            if (nee && lights_.sky_is_guidable()) sky.leaf = guide_->sky_guide_at(leaf);
+            if (sky.leaf != nullptr) {
+                // The sky's direct light is next event estimation's here, the path guide's main
+                // catch: the continuation is the BSDF's own. Measured on the window room without
+                // its portal (160 spp, seeds 7 and 8): the same RMSE in 0.7x the CPU time.
+                sky.exit = guide_->sky_exit();
+                sky_guide = &sky;
+                guide = nullptr;
+            }
             if (guide != nullptr) guide->prefetch();
             if (light_guide != nullptr) light_guide->prefetch();
+            if (sky.leaf != nullptr) sky.leaf->prefetch();
+            if (sky.exit != nullptr) sky.exit->prefetch();
             recorder.at_leaf(leaf);
         }
 
@@ -201,7 +226,7 @@ glm::vec3 PathIntegrator::radiance(collision::Ray ray, PixelSampler& sampler, st
             const glm::vec2 uc = sampler.get2d(sample_dim::bounce(bounce, sample_dim::kLightChoice));  // and part
             const glm::vec2 u = sampler.get2d(sample_dim::bounce(bounce, sample_dim::kLightPoint));
             LightSample ls;
-            if (lights_.sample(hit.point, hit.object, uc.x, uc.y, u.x, u.y, ls, light_guide)) {
+            if (lights_.sample(hit.point, hit.object, uc.x, uc.y, u.x, u.y, ls, light_guide, sky_guide)) {
                 const BsdfEval e = eval_bsdf(mat, ctx, ls.wi);
                 if (e.pdf > 0.0f) {
                     ++rays;
@@ -227,7 +252,7 @@ glm::vec3 PathIntegrator::radiance(collision::Ray ray, PixelSampler& sampler, st
                         if (learn) {
                             const glm::vec3 unweighted = ls.radiance / ls.pdf;
                             recorder.add_light_sample(hit.point, ctx.frame.n, ls.wi, unweighted * w, ls.square,
-                                                      ls.on_square ? unweighted : glm::vec3(0.0f));
+                                                      ls.on_square ? unweighted : glm::vec3(0.0f), ls.guided_sky);
                         }
                     } else if (learn) {
                         recorder.add_light_sample(hit.point, ctx.frame.n, ls.wi, glm::vec3(0.0f), ls.square, glm::vec3(0.0f));
@@ -250,6 +275,9 @@ glm::vec3 PathIntegrator::radiance(collision::Ray ray, PixelSampler& sampler, st
         if (learn && !bs.delta) recorder.add_vertex(hit.point, ctx.frame.n, bs.wi, bs.pdf, beta, result);
         full_weight = bs.delta;
         prev_light_guide = light_guide;
+        prev_sky = sky;
+        prev_sky_guide = sky_guide != nullptr ? &prev_sky : nullptr;
+        prev_recorded = learn && !bs.delta;
         prev_pdf = bs.pdf;
         prev_point = hit.point;
         prev_object = hit.object;

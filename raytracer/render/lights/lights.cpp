@@ -134,6 +134,14 @@ LightSet::LightSet(const Scene& scene, PlantedDefect defect)
         cdf_.push_back(static_cast<float>(running));
     }
     if (!cdf_.empty()) cdf_.back() = 1.0f;
+    // The guidable sky's probability where a guide makes it a light: the share the rule above
+    // would give it as one more light at infinity (1 when it is the only light); the other
+    // lights keep their proportions in the rest.
+    if (sky_) {
+        const double with_sky = double(n_infinite + 1) / double(n_infinite + 1 + (finite_total > 0.0 ? 1 : 0));
+        sky_probability_ = static_cast<float>(with_sky * double(sky_weight_) / (infinite_total + double(sky_weight_)));
+        if (cdf_.empty()) sky_probability_ = 1.0f;
+    }
 }
 
 // The light's emission toward -out.wi at out.point: its material's constant, or its emission
@@ -250,7 +258,19 @@ float LightSet::sample_area(const Light& l, float u_part, float u1, float u2, Su
 }
 
 bool LightSet::sample(const glm::vec3& p, std::uint32_t p_object, float u_select, float u_part, float u1, float u2,
-                      LightSample& out, const DirectionalQuadtree* square_guide) const {
+                      LightSample& out, const DirectionalQuadtree* square_guide,
+                      const SkyGuide* sky_guide) const {
+    if (sky_guide == nullptr || !sky_) return sample_lights(p, p_object, u_select, u_part, u1, u2, out, square_guide);
+    const float ps = sky_probability_;
+    if (u_select < ps) return sample_guided_sky(*sky_guide, p, u1, u2, out);
+    if (!sample_lights(p, p_object, std::min((u_select - ps) / (1.0f - ps), kBelowOne), u_part, u1, u2, out, square_guide))
+        return false;
+    out.pdf *= 1.0f - ps;
+    return true;
+}
+
+bool LightSet::sample_lights(const glm::vec3& p, std::uint32_t p_object, float u_select, float u_part, float u1,
+                             float u2, LightSample& out, const DirectionalQuadtree* square_guide) const {
     if (cdf_.empty()) return false;
     const auto it = std::upper_bound(cdf_.begin(), cdf_.end(), u_select);
     const auto index = static_cast<std::size_t>(std::min<std::ptrdiff_t>(it - cdf_.begin(), cdf_.size() - 1));
@@ -293,7 +313,13 @@ bool LightSet::sample(const glm::vec3& p, std::uint32_t p_object, float u_select
 }
 
 float LightSet::pdf(const glm::vec3& p, std::uint32_t p_object, const SurfaceHit& hit,
-                    const DirectionalQuadtree* square_guide) const {
+                    const DirectionalQuadtree* square_guide, const SkyGuide* sky_guide) const {
+    const float pdf = lights_pdf(p, p_object, hit, square_guide);
+    return sky_guide != nullptr && sky_ ? pdf * (1.0f - sky_probability_) : pdf;
+}
+
+float LightSet::lights_pdf(const glm::vec3& p, std::uint32_t p_object, const SurfaceHit& hit,
+                           const DirectionalQuadtree* square_guide) const {
     if (!is_light(hit.object)) return 0.0f;
     const Light& l = lights_[static_cast<std::size_t>(light_of_object_[hit.object])];
     float area_pdf = l.shape.area_pdf;

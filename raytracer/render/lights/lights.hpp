@@ -44,6 +44,12 @@
 // - An emitting background (render/lights/background_light.hpp: an environment map, or a colour or the
 //   sky with a portal) is one more light at infinity, last (scene_lights.cpp says why not without);
 //   sampled as BackgroundLight draws it from the shading point, found by escaped rays, MIS weighted.
+// - A colour or the sky without a portal is a light only at path vertices where path guiding
+//   learned where it is seen (render/guiding/sky_guide.hpp): sample(), pdf(), escaped_radiance()
+//   and guided_sky_weight() take that vertex's `sky_guide`. There the sky is chosen with
+//   probability sky_probability() (what the selection above would give it as a light at infinity;
+//   1 in a scene without other lights) and every other light's probability is scaled by
+//   1 - sky_probability(); without a guide nothing changes. bdpt and vcm pass no guide.
 #include <cstdint>
 #include <memory>
 #include <string>
@@ -79,11 +85,15 @@ struct LightSample {
     // square the two uniforms became (warped when NEE was guided: light_guide.hpp).
     bool on_square = false;
     glm::vec2 square{0.0f};
-    // Which light was chosen (LightSet::light_name): noise forensics name the light with it.
+    // Which light was chosen (LightSet::light_name): noise forensics name the light with it
+    // (-1 for the guided sky, which has no place in the selection order).
     std::int32_t light = -1;
+    // The sky without a portal, drawn from a vertex's learned sky guide (sky_guide.hpp).
+    bool guided_sky = false;
 };
 
 class DirectionalQuadtree;
+struct SkyGuide;
 
 // A light's emission sampled for light tracing and bidirectional methods
 // (LightSet::sample_emission): a point and the direction light leaves it in.
@@ -135,15 +145,18 @@ public:
     // by area from its own surface. Returns false when the sample carries no light (back side of
     // a one-sided emitter, degenerate).
     // With `square_guide`, a cone-sampled light draws its square point from the guide's
-    // defensive mixture (light_guide.hpp) and `pdf` includes that mixture's density.
+    // defensive mixture (light_guide.hpp) and `pdf` includes that mixture's density. With
+    // `sky_guide` (only when sky_is_guidable()), the sky without a portal is one more light
+    // (sky_guide.hpp); u_select picks it or the others, stretched back over [0, 1).
     bool sample(const glm::vec3& p, std::uint32_t p_object, float u_select, float u_part, float u1, float u2,
-                LightSample& out, const DirectionalQuadtree* square_guide = nullptr) const;
+                LightSample& out, const DirectionalQuadtree* square_guide = nullptr,
+                const SkyGuide* sky_guide = nullptr) const;
 
     // Solid-angle density (selection included) with which sample(p, p_object, ...) produces the
     // light point `hit`, reached from `p` by a ray. Zero when hit.object is not a light.
-    // `square_guide` as given to sample() from p.
+    // `square_guide` and `sky_guide` as given to sample() from p.
     float pdf(const glm::vec3& p, std::uint32_t p_object, const SurfaceHit& hit,
-              const DirectionalQuadtree* square_guide = nullptr) const;
+              const DirectionalQuadtree* square_guide = nullptr, const SkyGuide* sky_guide = nullptr) const;
 
     // True when some light sits at infinity with a disc of directions (a sun): rays that escape
     // the scene must then ask escaped_radiance.
@@ -156,7 +169,20 @@ public:
     // estimation's density from `from` when `bsdf_pdf` > 0 (the solid-angle density the BSDF
     // sampled `dir` with); `bsdf_pdf` <= 0 gives full weight (camera rays, delta bounces,
     // BSDF-only sampling).
-    glm::vec3 escaped_radiance(const glm::vec3& from, const glm::vec3& dir, float bsdf_pdf) const;
+    // `sky_guide` as given to sample() from `from` (the other lights' selection then shrinks).
+    glm::vec3 escaped_radiance(const glm::vec3& from, const glm::vec3& dir, float bsdf_pdf,
+                               const SkyGuide* sky_guide = nullptr) const;
+
+    // The background emits, has no portal and is no map: no light, but one that a learned sky
+    // guide turns into one at the vertices where it was learned (sky_guide.hpp).
+    bool sky_is_guidable() const { return sky_ != nullptr; }
+    // The guided sky's selection probability where it is a light.
+    float sky_probability() const { return sky_probability_; }
+    // The MIS weight of the guidable sky's radiance found along `dir` by a ray drawn with density
+    // `bsdf_pdf` from `from`, a vertex with `sky_guide` (power heuristic against next event
+    // estimation's density of the sky there); 1 without a guide or for bsdf_pdf <= 0, as
+    // escaped_radiance.
+    float guided_sky_weight(const glm::vec3& from, const glm::vec3& dir, float bsdf_pdf, const SkyGuide* sky_guide) const;
 
     // --- Emission sampling, for light tracing and bidirectional path tracing
     // (render/lights/light_emission.cpp). The light is chosen with the probabilities sample() uses.
@@ -230,6 +256,12 @@ private:
     void add_scene_lights(const Scene& scene, std::vector<float>& weights);
     bool sample_scene_light(const NonSurfaceLight& l, const glm::vec3& p, float u1, float u2, LightSample& out) const;
     bool sample_background(const glm::vec3& p, float u1, float u2, LightSample& out) const;
+    bool sample_guided_sky(const SkyGuide& sky_guide, const glm::vec3& p, float u1, float u2, LightSample& out) const;
+    // The regular selection without the guided sky, as sample() scales it by the sky's presence.
+    bool sample_lights(const glm::vec3& p, std::uint32_t p_object, float u_select, float u_part, float u1, float u2,
+                       LightSample& out, const DirectionalQuadtree* square_guide) const;
+    float lights_pdf(const glm::vec3& p, std::uint32_t p_object, const SurfaceHit& hit,
+                     const DirectionalQuadtree* square_guide) const;
 
     const Scene* scene_ = nullptr;
     float normal_sign_ = 1.0f;                  // -1 under PlantedDefect::FlippedNormals
@@ -244,6 +276,11 @@ private:
     float bounds_radius_ = 1.0f;
     bool emit_scene_light(const NonSurfaceLight& l, float u1, float u2, float u3, float u4, LightEmission& out) const;
     float background_probability_ = 0.0f;          // it is the last entry of cdf_
+    // The background that only a learned guide makes a light (sky_is_guidable), its weight (E, as
+    // the lights at infinity are weighed) and its selection probability where it is one.
+    std::shared_ptr<const BackgroundLight> sky_;
+    float sky_weight_ = 0.0f;
+    float sky_probability_ = 0.0f;
 };
 
 // Every object's world box together (object_world_bounds; empty for a scene without objects): the

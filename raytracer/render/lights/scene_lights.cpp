@@ -7,6 +7,7 @@
 
 #include "collision/finite.hpp"
 #include "raytracer/geometry/object_world_bounds.hpp"
+#include "raytracer/render/guiding/sky_guide.hpp"
 #include "raytracer/render/lights/lights.hpp"
 #include "raytracer/render/sampling/sampling.hpp"
 
@@ -78,7 +79,8 @@ void LightSet::add_scene_lights(const Scene& scene, std::vector<float>& weights)
     // CPU time in scenes/sky-window.json without its portal; 1.25x the mean pixel variance at
     // equal spp on scenes/default.json, where it also takes half of the bulb's samples:
     // docs/sky-and-portals.md). pbrt-v4 comes to the same: its UniformInfiniteLight draws nothing
-    // when MIS compensation is allowed. With a portal it is a light.
+    // when MIS compensation is allowed. With a portal it is a light. Without one it is kept as
+    // sky_, a light only where path guiding learned where it is seen (sky_guide.hpp).
     const Background& bg = scene.background;
     const bool sampled = bg.kind == Background::Kind::Environment || bg.has_portal;
     auto background = std::make_shared<const BackgroundLight>(bg);
@@ -87,7 +89,30 @@ void LightSet::add_scene_lights(const Scene& scene, std::vector<float>& weights)
         if (radius < 0.0f) radius = bounds_radius_ = scene_radius(scene, bounds_centre_);
         background_ = std::move(background);
         weights.push_back(weight);
+    } else if (!sampled && background->emits() && weight > 0.0f && std::isfinite(weight)) {
+        sky_ = std::move(background);
+        sky_weight_ = weight;
     }
+}
+
+bool LightSet::sample_guided_sky(const SkyGuide& sky_guide, const glm::vec3& p, float u1, float u2, LightSample& out) const {
+    float density = 0.0f;
+    if (!sample_sky_mixture(sky_guide, p, glm::vec2(u1, u2), out.wi, density)) return false;
+    out.pdf = sky_probability_ * density;
+    out.radiance = sky_->radiance(out.wi);
+    out.guided_sky = true;
+    out.light = -1;
+    out.at_infinity = true;
+    out.distance = std::numeric_limits<float>::infinity();
+    out.normal = -out.wi;
+    out.point = glm::vec3(0.0f);  // unused: the shadow ray is unbounded
+    return out.pdf > 0.0f && std::isfinite(out.pdf) && luminance(out.radiance) > 0.0f;
+}
+
+float LightSet::guided_sky_weight(const glm::vec3& from, const glm::vec3& dir, float bsdf_pdf,
+                                  const SkyGuide* sky_guide) const {
+    if (sky_guide == nullptr || !sky_ || !(bsdf_pdf > 0.0f)) return 1.0f;
+    return power_heuristic(bsdf_pdf, sky_probability_ * sky_mixture_density(*sky_guide, from, dir));
 }
 
 bool LightSet::sample_background(const glm::vec3& p, float u1, float u2, LightSample& out) const {
@@ -136,17 +161,22 @@ bool LightSet::sample_scene_light(const NonSurfaceLight& l, const glm::vec3& p, 
     return luminance(out.radiance) > 0.0f && std::isfinite(luminance(out.radiance));
 }
 
-glm::vec3 LightSet::escaped_radiance(const glm::vec3& from, const glm::vec3& dir, float bsdf_pdf) const {
+glm::vec3 LightSet::escaped_radiance(const glm::vec3& from, const glm::vec3& dir, float bsdf_pdf,
+                                     const SkyGuide* sky_guide) const {
+    // Where the guided sky is a light, the others are chosen with what it leaves them.
+    const float others = sky_guide != nullptr && sky_ ? 1.0f - sky_probability_ : 1.0f;
     glm::vec3 sum(0.0f);
     for (const Sun& sun : suns_) {
         if (!(glm::dot(dir, sun.to_light) >= sun.cos_max)) continue;
-        const float w = bsdf_pdf > 0.0f ? power_heuristic(bsdf_pdf, sun.probability * uniform_cone_pdf(sun.omc)) : 1.0f;
+        const float w =
+            bsdf_pdf > 0.0f ? power_heuristic(bsdf_pdf, others * sun.probability * uniform_cone_pdf(sun.omc)) : 1.0f;
         sum += sun.radiance * w;
     }
     if (background_) {
         const glm::vec3 le = background_->radiance(dir);
-        const float w =
-            bsdf_pdf > 0.0f ? power_heuristic(bsdf_pdf, background_probability_ * background_->pdf(from, dir)) : 1.0f;
+        const float w = bsdf_pdf > 0.0f
+                            ? power_heuristic(bsdf_pdf, others * background_probability_ * background_->pdf(from, dir))
+                            : 1.0f;
         sum += le * w;
     }
     return sum;
