@@ -22,12 +22,13 @@ void add_aov_outputs(std::vector<NamedFile>& outputs, const std::filesystem::pat
     for (const std::filesystem::path& side : aov_side_files(out)) outputs.push_back({"--aovs side file", side});
 }
 
-void write_image_with_aovs(const Image& image, const FeatureLayers& layers, int spp, const std::filesystem::path& out) {
+void write_image_with_aovs(const Image& image, const std::vector<FeatureSums>& sums, int spp, const std::filesystem::path& out) {
     if (lowercase_extension(out) == ".exr") {
-        write_feature_exr(layers, spp, out);
+        write_feature_exr(sums, image.width, image.height, spp, out);
         return;
     }
     write_image(image, out);
+    const FeatureLayers layers = feature_layers(sums, image.width, image.height);
     const std::vector<std::filesystem::path> sides = aov_side_files(out);
     Image depth(layers.width, layers.height);
     for (std::size_t i = 0; i < depth.pixels.size(); ++i) depth.pixels[i] = glm::vec3(layers.position.pixels[i].z);

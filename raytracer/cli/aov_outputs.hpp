@@ -26,7 +26,7 @@ std::vector<std::filesystem::path> aov_side_files(const std::filesystem::path& o
 void add_aov_outputs(std::vector<NamedFile>& outputs, const std::filesystem::path& out);
 
 // Writes `image` (as OUT's format wants it: display-mapped for PNG) to OUT with the features of
-// `layers` as above; `spp` goes into the EXR's sweeptrace:spp.
-void write_image_with_aovs(const Image& image, const FeatureLayers& layers, int spp, const std::filesystem::path& out);
+// `sums` (image.width x image.height, row-major) as above; `spp` goes into the EXR's sweeptrace:spp.
+void write_image_with_aovs(const Image& image, const std::vector<FeatureSums>& sums, int spp, const std::filesystem::path& out);
 
 }  // namespace sweeptrace

@@ -28,15 +28,18 @@ constexpr std::uint64_t kVcmBytesPerLightVertex = LightVertices::kBytesPerVertex
 // part whose range starts inside the pilot (its own pilot passes beside the whole pilot's).
 constexpr std::uint64_t kAdaptiveBytesPerPixel = sizeof(int) + sizeof(double) + 2 * (sizeof(PixelSum) + sizeof(glm::dvec3));
 // Feature outputs (film.aovs, render --aovs; image/feature_sums.hpp): per pixel the renderer's
-// exact sums by half and the colours and features of the passes not yet added to them, then either the output's images (15
-// colour-sized layers and the depth variance) or, for a farm part, the sums' copy and their
-// words; the larger of those two counted. Adaptive sampling adds its copies of the sums (the
-// pass in flight's, and a part's own pilot passes), as for the colour.
+// exact sums by half and the colours and features of the passes not yet added to them, then either
+// the output's images (15 colour-sized layers and the depth variance: a PNG or PFM output's side
+// files are made from them; an EXR is written from the sums a block of rows at a time, which holds
+// none of them) or, for a farm part, the sums' copy and their words; the larger of those two
+// counted. Adaptive sampling adds its copies of the sums (the pass in flight's, and a part's own
+// pilot passes), as for the colour.
 constexpr std::uint64_t kAovLayerBytesPerPixel = 15 * sizeof(glm::vec3) + sizeof(float);
 constexpr std::uint64_t kAovBytesPerPixel =
     sizeof(FeatureSums) + kAovPendingPasses * sizeof(FeatureSample) +
     std::max<std::uint64_t>(kAovLayerBytesPerPixel, sizeof(FeatureSums) + kFeatureWords * sizeof(std::uint32_t));
-// merge with feature outputs: the whole's feature sums, the part's and its words, and the images.
+// merge with feature outputs: the whole's feature sums, the part's and its words, and the images
+// (a PNG or PFM output's; counted for any).
 constexpr std::uint64_t kAovMergeBytesPerPixel =
     2 * sizeof(FeatureSums) + kFeatureWords * sizeof(std::uint32_t) + kAovLayerBytesPerPixel;
 constexpr std::uint64_t kAovAdaptiveBytesPerPixel = 2 * sizeof(FeatureSums);

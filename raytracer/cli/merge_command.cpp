@@ -64,7 +64,7 @@ int run_merge(const MergeArgs& a) {
     const Image image = whole.mean();
     const Image written = is_display_format(a.output) ? to_display(image) : image;
     // Parts rendered with feature outputs: the merged features too, as render writes them.
-    if (whole.id.aovs == "on") write_image_with_aovs(written, feature_layers(whole.features, whole.id.width, whole.id.height), whole.id.spp, a.output);
+    if (whole.id.aovs == "on") write_image_with_aovs(written, whole.features, whole.id.spp, a.output);
     else write_image(written, a.output);
     if (!a.quiet)
         std::fprintf(stderr, "merge: %zu parts, %dx%d, %d spp%s -> %s\n", headers.size(), whole.id.width, whole.id.height,

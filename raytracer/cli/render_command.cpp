@@ -313,7 +313,7 @@ int run_render(const RenderArgs& a) {
     if (part) write_part(result, identity, range.begin, out);
     else {
         const Image image = is_display_format(out) ? to_display(result.image, scene.film.exposure, scene.film.tone_curve) : result.image;
-        if (opt.aovs) write_image_with_aovs(image, feature_layers(result.features, scene.film.width, scene.film.height), st.completed_spp, out);
+        if (opt.aovs) write_image_with_aovs(image, result.features, st.completed_spp, out);
         else write_image(image, out);
     }
     if (!a.variance.empty()) write_image(result.variance, a.variance);

@@ -50,6 +50,7 @@ RenderIdentity render_identity(const Scene& scene, const std::filesystem::path& 
     id.max_depth = scene.film.max_depth;
     id.accel = accel;
     id.integrator = integrator_name(scene.film.integrator);
+    id.sampler = sampler_name(scene.film.sampler);
     id.adaptive = adaptive;
     id.aovs = scene.film.aovs ? "on" : "off";
     id.version = program_version();

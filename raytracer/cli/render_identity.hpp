@@ -1,6 +1,6 @@
 #pragma once
 // What identifies a render for the farm (image/partial_image.hpp): the scene's content hash,
-// the film size, seed, depth, integrator and spp after the command line's overrides, the accelerator,
+// the film size, seed, depth, integrator, sampler and spp after the command line's overrides, the accelerator,
 // the adaptive sampling mode, whether feature outputs are on (film.aovs after render --aovs) and the
 // program version.
 #include <filesystem>
@@ -18,7 +18,7 @@ namespace sweeptrace {
 // Throws InputError when a file cannot be read.
 std::string scene_content_hash(const Scene& scene, const std::filesystem::path& scene_file);
 
-// `scene` with its overrides applied (film size, spp, max_depth, seed); `adaptive` is render
+// `scene` with its overrides applied (film size, spp, max_depth, seed, integrator, sampler); `adaptive` is render
 // --adaptive's value ("off", "on", "relative"), since parts of different allocations never merge.
 RenderIdentity render_identity(const Scene& scene, const std::filesystem::path& scene_file, const std::string& accel,
                                const std::string& adaptive);

@@ -24,8 +24,9 @@ namespace sweeptrace {
 // Every channel name write_feature_exr writes, in its order.
 std::vector<std::string> feature_exr_channel_names();
 
-// Atomic (temporary file + rename). Throws InputError naming `path`.
-void write_feature_exr(const FeatureLayers& layers, int spp, const std::filesystem::path& path);
+// The layers of `sums` (row-major, width x height; feature_layers' values), computed and written a
+// block of rows at a time. Atomic (temporary file + rename). Throws InputError naming `path`.
+void write_feature_exr(const std::vector<FeatureSums>& sums, int width, int height, int spp, const std::filesystem::path& path);
 
 // It is read back, as every EXR's named channels are, by read_exr_channels (exr_channels.hpp).
 

@@ -91,6 +91,11 @@ struct FeatureLayers {
 
 // `sums` row-major, width * height.
 FeatureLayers feature_layers(const std::vector<FeatureSums>& sums, int width, int height);
+// The same for `rows` rows of `width` pixels whose sums start at `sums`, into `layers`, whose
+// images become width x rows (their storage kept when they are that size already): the feature
+// EXR is written from the sums a block of rows at a time (feature_exr.hpp), so a render never
+// holds its whole layers.
+void fill_feature_layers(const FeatureSums* sums, int width, int rows, FeatureLayers& layers);
 
 // Farm parts (partial_image.hpp) store a pixel's FeatureSums as kFeatureWords 32-bit words, each
 // in a UINT channel named feature_word_names()[k]: the four 128-bit half sums of three channels,

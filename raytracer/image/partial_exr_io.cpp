@@ -20,8 +20,9 @@ namespace sweeptrace {
 namespace {
 
 // 2: sweeptrace.adaptive and the count channel; 3: sweeptrace.aovs and aov.*; 4: the features'
-// sums on the 2^-32 grid, 64 bits for albedo and normal (image/feature_sums.hpp).
-constexpr const char* kFormatVersion = "4";
+// sums on the 2^-32 grid, 64 bits for albedo and normal (image/feature_sums.hpp); 5:
+// sweeptrace.sampler (a format 4 part does not say which sampler drew its samples).
+constexpr const char* kFormatVersion = "5";
 constexpr int kWords = 4;                    // 32-bit words per 128-bit sum
 constexpr int kSumChannels = 3 * kWords;     // sum.R.0 .. sum.B.3
 const char* const kColor[3] = {"R", "G", "B"};
@@ -38,6 +39,7 @@ std::map<std::string, std::string> attributes_of(const PartialImage& p) {
             {"sweeptrace.maxDepth", std::to_string(p.id.max_depth)},
             {"sweeptrace.accel", p.id.accel},
             {"sweeptrace.integrator", p.id.integrator},
+            {"sweeptrace.sampler", p.id.sampler},
             {"sweeptrace.adaptive", p.id.adaptive},
             {"sweeptrace.aovs", p.id.aovs},
             {"sweeptrace.version", p.id.version},
@@ -186,6 +188,9 @@ PartialImage header_part(const Imf::Header& hd, const std::string& file) {
     p.id.max_depth = static_cast<int>(number(attribute(hd, "sweeptrace.maxDepth", file), "sweeptrace.maxDepth", file));
     p.id.accel = attribute(hd, "sweeptrace.accel", file);
     p.id.integrator = attribute(hd, "sweeptrace.integrator", file);
+    p.id.sampler = attribute(hd, "sweeptrace.sampler", file);
+    if (p.id.sampler != "sobol" && p.id.sampler != "sobol-halves" && p.id.sampler != "independent")
+        throw InputError("'" + file + "': sweeptrace.sampler is '" + p.id.sampler + "', not sobol, sobol-halves or independent");
     p.id.adaptive = attribute(hd, "sweeptrace.adaptive", file);
     if (p.id.adaptive != "off" && p.id.adaptive != "on" && p.id.adaptive != "relative")
         throw InputError("'" + file + "': sweeptrace.adaptive is '" + p.id.adaptive + "', not off, on or relative");

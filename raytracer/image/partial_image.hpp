@@ -12,11 +12,14 @@
 // (render --aovs) also has the kFeatureWords UINT channels `aov.*` of each pixel's FeatureSums
 // (image/feature_sums.hpp: the colour and features of its even and odd samples, and the exact
 // sums of squares). String attributes:
-//   sweeptrace.part         format version, "4" (formats 1 to 3, before adaptive parts, feature
-//                           outputs and the features' narrower sums, are refused: their parts
-//                           came from an older program, which merge refuses anyway)
+//   sweeptrace.part         format version, "5" (formats 1 to 4, before adaptive parts, feature
+//                           outputs, the features' narrower sums and the sampler, are refused:
+//                           their parts came from an older program, which merge refuses anyway)
 //   sweeptrace.sceneHash    hash of the scene file and the mesh files it loads
 //   sweeptrace.seed, sweeptrace.maxDepth, sweeptrace.accel, sweeptrace.version (the program's)
+//   sweeptrace.integrator   "path", "bdpt" or "vcm"
+//   sweeptrace.sampler      "sobol", "sobol-halves" or "independent": which numbers a sample
+//                           index draws, so parts of different samplers never merge
 //   sweeptrace.adaptive     "off", "on" or "relative": render --adaptive
 //   sweeptrace.aovs         "off" or "on": render --aovs (or the scene's film.aovs)
 //   sweeptrace.spp          samples per pixel of the whole render the part belongs to
@@ -44,6 +47,7 @@ struct RenderIdentity {
     int max_depth = 0;
     std::string accel;
     std::string integrator;  // film.integrator after --integrator ("path", "bdpt", "vcm")
+    std::string sampler;     // film.sampler after --sampler and --aovs ("sobol", "sobol-halves", "independent")
     std::string adaptive = "off";  // render --adaptive: "off", "on" or "relative"
     std::string aovs = "off";      // feature outputs (render --aovs): "off" or "on"
     std::string version;

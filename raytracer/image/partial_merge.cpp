@@ -53,7 +53,10 @@ std::string identity_difference(const RenderIdentity& a, const RenderIdentity& b
          {differs("scene hash", a.scene_hash, b.scene_hash), differs("width", a.width, b.width),
           differs("height", a.height, b.height), differs("seed", a.seed, b.seed),
           differs("max depth", a.max_depth, b.max_depth), differs("accel", a.accel, b.accel),
-          differs("integrator", a.integrator, b.integrator), differs("adaptive sampling", a.adaptive, b.adaptive), differs("feature outputs (--aovs)", a.aovs, b.aovs),
+          differs("integrator", a.integrator, b.integrator),
+          differs("adaptive sampling", a.adaptive, b.adaptive), differs("feature outputs (--aovs)", a.aovs, b.aovs),
+          // after --aovs, which changes the scene's sobol to sobol-halves: the cause named first
+          differs("sampler", a.sampler, b.sampler),
           differs("program version", a.version, b.version), differs("spp", a.spp, b.spp)})
         if (!d.empty()) return d;
     return {};

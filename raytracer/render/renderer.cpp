@@ -266,7 +266,8 @@ private:
     // Adds the finished pass to the sums. Fixed point (partial_sum.hpp), so the sum of any split
     // into sample ranges is the same integer, and so the same image.
     // `kept`: also to kept_sum_ (an adaptive part's own passes of the pilot, run_adaptive).
-    // With AOVs, the pass's colours and features to the half of its sample index too.
+    // With AOVs, the pass's colours and features (already in pending_: pending_sample) to the half
+    // of its sample index too.
     void accumulate_pass(int sample, bool kept) {
         tbb::parallel_for(tbb::blocked_range<std::size_t>(0, sum_.size(), 4096),
                           [&](const tbb::blocked_range<std::size_t>& r) {
@@ -281,8 +282,6 @@ private:
                                       add_sample(kept_sum_[i], pass_[i], c);
                                       kept_sq_[i] += v * v;
                                   }
-                                  if (!feature_sums_.empty())
-                                      pending_[i * kAovPendingPasses + pending_passes_.size()].color = pass_[i];
                               }
                               if (clamped != 0) clamped_.fetch_add(clamped, std::memory_order_relaxed);
                           });
@@ -321,7 +320,10 @@ private:
     }
     void add_splat_sums() {
         tbb::parallel_for(tbb::blocked_range<std::size_t>(0, pass_.size(), 4096), [&](const tbb::blocked_range<std::size_t>& r) {
-            for (std::size_t i = r.begin(); i < r.end(); ++i) pass_[i] += splat_sum_[i];
+            for (std::size_t i = r.begin(); i < r.end(); ++i) {
+                pass_[i] += splat_sum_[i];
+                if (!feature_sums_.empty()) pending_sample(i).color = pass_[i];
+            }
         });
     }
     std::vector<Splat>& splat_slot(int tile) { return tile_splats_[static_cast<std::size_t>(tile % kSplatWaveTiles)]; }
@@ -453,11 +455,14 @@ private:
                 }
                 const std::size_t pixel = static_cast<std::size_t>(y) * width_ + x;
                 if (tally != nullptr) tally->begin();
-                SampleFeatures* features =
-                    feature_sums_.empty() ? nullptr : &pending_[pixel * kAovPendingPasses + pending_passes_.size()].features;
-                const glm::vec3 l = sample_pixel(x, y, sample, rays, nonfinite, records, splats, tally, features);
+                FeatureSample* pending = feature_sums_.empty() ? nullptr : &pending_sample(pixel);
+                const glm::vec3 l = sample_pixel(x, y, sample, rays, nonfinite, records, splats, tally,
+                                                 pending != nullptr ? &pending->features : nullptr);
                 if (tally != nullptr) opt_.forensics->finish_sample(tile, pixel, *tally, l);
                 pass_[pixel] = l;
+                // The pass value is final here but for bdpt's and vcm's splats (add_splat_sums):
+                // written while the features' line is in cache, not by another sweep of pending_.
+                if (pending != nullptr && !bdpt) pending->color = l;
             }
         }
         rays_.fetch_add(rays, std::memory_order_relaxed);
@@ -576,6 +581,8 @@ private:
     };
     std::vector<FeatureSums> feature_sums_;
     std::vector<FeatureSample> pending_;
+    // Pixel i's slot in pending_ for the pass in flight.
+    FeatureSample& pending_sample(std::size_t i) { return pending_[i * kAovPendingPasses + pending_passes_.size()]; }
     std::vector<PendingPass> pending_passes_;
     std::vector<FeatureSums> round_features_;
     std::vector<FeatureSums> kept_features_;

@@ -48,6 +48,10 @@ struct Camera {
 // odd sample indices, so that the two half buffers of render --aovs are independent estimates
 // (docs/aovs.md, "Independent halves").
 enum class SamplerKind { Independent, Sobol, SobolHalves };
+// Its name in the scene file and on the command line.
+inline const char* sampler_name(SamplerKind k) {
+    return k == SamplerKind::Independent ? "independent" : k == SamplerKind::SobolHalves ? "sobol-halves" : "sobol";
+}
 
 // Which light transport method renders the film (render/integrators/): the unidirectional path
 // tracer (the default), bidirectional path tracing (Veach 1997, ch. 10), or vertex connection and

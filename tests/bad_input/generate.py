@@ -786,18 +786,19 @@ pbrt_case("pbrt-sppm-radius-tiny", E + SPPM + r".*got 1e-300", 'Integrator "sppm
 cli_case("part-samples-empty", E + r"--samples '': expected A:B", "render scene.json -o part.exr --samples ''")
 
 
-def part_header(w, h):
+def part_header(w, h, **changes):
     """The header of a farm part (image/partial_image.hpp) declaring w x h, and its ZIP offset table
-    of zeros: the sums are not there."""
+    of zeros: the sums are not there. `changes` replace attributes: sweeptrace.KEY is given as KEY."""
     def attr(name, kind, v):
         return name.encode() + b"\0" + kind.encode() + b"\0" + struct.pack("<i", len(v)) + v
     names = [b"B", b"G", b"R"] + [f"sum.{c}.{k}".encode() for c in "BGR" for k in range(4)]
     channels = b"".join(n + b"\0" + struct.pack("<iB3xii", 2 if len(n) == 1 else 0, 0, 1, 1) for n in sorted(names)) + b"\0"
     box = struct.pack("<iiii", 0, 0, w - 1, h - 1)
-    strings = {"sweeptrace.part": "4", "sweeptrace.aovs": "off", "sweeptrace.fractionBits": "56", "sweeptrace.sceneHash": "0", "sweeptrace.seed": "1",
-               "sweeptrace.maxDepth": "8", "sweeptrace.accel": "bvh", "sweeptrace.integrator": "path",
+    strings = {"sweeptrace.part": "5", "sweeptrace.aovs": "off", "sweeptrace.fractionBits": "56", "sweeptrace.sceneHash": "0", "sweeptrace.seed": "1",
+               "sweeptrace.maxDepth": "8", "sweeptrace.accel": "bvh", "sweeptrace.integrator": "path", "sweeptrace.sampler": "sobol",
                "sweeptrace.adaptive": "off", "sweeptrace.version": "0", "sweeptrace.spp": "4", "sweeptrace.samples": "0:4",
                "sweeptrace.checksum": "0"}
+    strings.update({"sweeptrace." + k: v for k, v in changes.items()})
     head = (b"\x76\x2f\x31\x01" + struct.pack("<i", 2) + attr("channels", "chlist", channels) +
             attr("compression", "compression", bytes([3])) + attr("dataWindow", "box2i", box) +
             attr("displayWindow", "box2i", box) + attr("lineOrder", "lineOrder", b"\0") +
@@ -812,6 +813,14 @@ case("mem-merge-part-8192", 2, E + r"'big\.exr': merging parts of 8192x8192 need
      "merge big.exr -o out.exr", {"big.exr": part_header(8192, 8192)}, AS)
 case("merge-part-65536", 2, E + r"'big\.exr': data window is not 1\.\.16384 pixels a side", "merge big.exr -o out.exr",
      {"big.exr": part_header(65536, 65536)})
+# Parts whose sample indices drew different numbers (render --sampler) are parts of different
+# images: refused from their headers, naming both files and the field. A part of format 4 did
+# not record its sampler: refused, saying to render it again.
+case("merge-part-sampler", 2, E + r"'b\.exr' is not a part of the same render as 'a\.exr': sampler 'sobol' vs 'independent'$",
+     "merge a.exr b.exr -o out.exr", {"a.exr": part_header(4, 2, samples="0:2"),
+                                      "b.exr": part_header(4, 2, samples="2:4", sampler="independent")})
+case("merge-part-format-4", 2, E + r"'old\.exr': part format 4, this program reads 5 \(render the part again with this program\)$",
+     "merge old.exr -o out.exr", {"old.exr": part_header(4, 2, part="4")})
 case("merge-part-directory", 2, E + r"cannot read 'd\.exr': is a directory", "merge d.exr -o out.exr", {"d.exr/keep": ""})
 case("merge-part-fifo", 2, E + r"cannot read 'f\.exr': is a FIFO", "merge f.exr -o out.exr", {}, "fifo f.exr")
 # The memory bdpt's light splats and --forensics take, charged before the render (issue 40): a

@@ -9,7 +9,8 @@
 namespace sweeptrace::test {
 
 inline RenderIdentity farm_test_identity(int width, int height, std::uint64_t seed, int max_depth,
-                                         const std::string& integrator, int spp, const std::string& adaptive = "off") {
+                                         const std::string& integrator, int spp, const std::string& adaptive = "off",
+                                         const std::string& sampler = "sobol") {
     RenderIdentity id;
     id.scene_hash = "0123456789abcdef";
     id.width = width;
@@ -18,6 +19,7 @@ inline RenderIdentity farm_test_identity(int width, int height, std::uint64_t se
     id.max_depth = max_depth;
     id.accel = "bvh";
     id.integrator = integrator;
+    id.sampler = sampler;
     id.adaptive = adaptive;
     id.version = "test";
     id.spp = spp;

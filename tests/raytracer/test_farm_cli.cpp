@@ -119,6 +119,7 @@ TEST_CASE("farm cli: merge refuses other renders, overlaps and gaps, exit 2, not
     part("4:9", "small.exr", "--width 12");
     part("4:9", "deep.exr", "--max-depth 3");
     part("4:9", "embree.exr", "--accel embree");
+    part("4:9", "independent.exr", "--sampler independent");
     write_scene(dir / "scene.json", "0.6, 0.5, 0.41");  // one number of the scene changed
     part("4:9", "edited.exr");
 
@@ -132,6 +133,8 @@ TEST_CASE("farm cli: merge refuses other renders, overlaps and gaps, exit 2, not
     check_refused(dir, run(dir, "merge a.exr small.exr -o final.png"), "width 24 vs 12");
     check_refused(dir, run(dir, "merge a.exr deep.exr -o final.png"), "max depth 5 vs 3");
     check_refused(dir, run(dir, "merge a.exr embree.exr -o final.png"), "accel 'bvh' vs 'embree'");
+    check_refused(dir, run(dir, "merge a.exr independent.exr -o final.png"),
+                  "'independent.exr' is not a part of the same render as 'a.exr': sampler 'sobol' vs 'independent'");
     check_refused(dir, run(dir, "merge a.exr edited.exr -o final.png"), "scene hash");
     REQUIRE(run(dir, "render scene.json --quiet -o plain.exr").exit_code == 0);
     check_refused(dir, run(dir, "merge a.exr plain.exr -o final.png"), "'plain.exr': not a sweeptrace part");

@@ -193,7 +193,7 @@ TEST_CASE("farm: a part file keeps every bit of its sums and its identity, and r
     write_image(p.mean(), dir / "plain.exr");
     CHECK_THROWS_WITH(read_partial(dir / "plain.exr"), Catch::Contains("not a sweeptrace part"));
 
-    // A part of format 3 (before the features' narrower sums; its header's version string patched
+    // A part of format 4 (before the sampler was recorded; its header's version string patched
     // back, the header being uncompressed) is refused by its version, saying what to do.
     const std::string key = std::string("sweeptrace.part") + '\0' + "string" + '\0';
     std::string old_format;
@@ -203,11 +203,11 @@ TEST_CASE("farm: a part file keeps every bit of its sums and its identity, and r
     }
     const std::size_t at = old_format.find(key);
     REQUIRE(at != std::string::npos);
-    REQUIRE(old_format[at + key.size() + 4] == '4');  // after the 4-byte length
-    old_format[at + key.size() + 4] = '3';
-    std::ofstream(dir / "format3.exr", std::ios::binary) << old_format;
-    CHECK_THROWS_WITH(read_partial_header(dir / "format3.exr"),
-                      Catch::Contains("part format 3, this program reads 4 (render the part again with this program)"));
+    REQUIRE(old_format[at + key.size() + 4] == '5');  // after the 4-byte length
+    old_format[at + key.size() + 4] = '4';
+    std::ofstream(dir / "format4.exr", std::ios::binary) << old_format;
+    CHECK_THROWS_WITH(read_partial_header(dir / "format4.exr"),
+                      Catch::Contains("part format 4, this program reads 5 (render the part again with this program)"));
 
     // An adaptive part keeps each pixel's count, and its mean is over that count.
     PartialImage a = part(3, 7);
@@ -245,6 +245,11 @@ TEST_CASE("farm: the merge names a different render, an overlap and a gap", "[fa
     other.id.integrator = "bdpt";
     CHECK(merge_error({part(0, 4), other}, {"a.exr", "b.exr"}) ==
           "'b.exr' is not a part of the same render as 'a.exr': integrator 'vcm' vs 'bdpt'");
+    // A sample index draws other numbers under another sampler: such parts are another image.
+    other = part(4, 12);
+    other.id.sampler = "independent";
+    CHECK(merge_error({part(0, 4), other}, {"a.exr", "b.exr"}) ==
+          "'b.exr' is not a part of the same render as 'a.exr': sampler 'sobol' vs 'independent'");
     other = part(4, 12);
     other.id.scene_hash = "ffffffffffffffff";
     CHECK_THAT(merge_error({part(0, 4), other}, {"a.exr", "b.exr"}), Catch::Contains("scene hash"));

@@ -6,8 +6,10 @@
 // quantity (means within noise on a scene with glass, whose delta bounces each integrator draws
 // with its own numbers).
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <cstdint>
+#include <random>
 #include <string>
 #include <vector>
 
@@ -154,6 +156,56 @@ TEST_CASE("aovs: feature sums at the ends of their ranges stay exact, and beyond
     CHECK(T.normal.pixels[0].x == 0.0f);
     CHECK(T.normal_variance.pixels[0].x == Approx(1.0 / 3.0).epsilon(1e-7));
     CHECK(T.depth_variance[0] == Approx(1.0e18 / 12.0).epsilon(1e-7));
+}
+
+TEST_CASE("aovs: the conversions' fast paths give the sums of the plain definition, at every magnitude", "[render][aovs]") {
+    // add_feature_sample converts a colour of magnitude 0 or [2^-33, 2^7) by one truncation and
+    // the features by pairs of doubles (feature_sums.cpp); its sums must be those of the plain
+    // definition: to_fixed and add_square for the colour, round to nearest (ties to even) on the
+    // 2^-32 grid after the clamps for the features. Samples over every binary exponent from
+    // denormals to past the clamps, both signs, mantissas at the ends and random, one sample a
+    // pixel so that a mismatch shows in the pixel that made it.
+    std::mt19937 rng(5);
+    std::uniform_int_distribution<std::uint32_t> mantissa(0, (1u << 23) - 1);
+    std::vector<float> values{0.0f, -0.0f};
+    for (std::uint32_t exponent = 0; exponent <= 127 + 42; ++exponent)
+        for (std::uint32_t m : {0u, 1u, (1u << 22) + 1, (1u << 23) - 1, mantissa(rng), mantissa(rng)})
+            for (std::uint32_t sign : {0u, 1u}) values.push_back(std::bit_cast<float>(sign << 31 | exponent << 23 | m));
+    const auto nearest = [](float v, float limit) {  // the plain definition of a feature's fixed point
+        const double c = std::clamp(static_cast<double>(v), -static_cast<double>(limit), static_cast<double>(limit));
+        return static_cast<std::int64_t>(std::nearbyint(c * 0x1p32));
+    };
+    std::size_t mismatched = 0;
+    for (std::size_t i = 0; i < values.size(); ++i) {
+        FeatureSample f;
+        // Each value in every channel, beside others of the list (so both position paths run).
+        const float v = values[i], w = values[(i * 7 + 3) % values.size()], u = values[(i * 13 + 5) % values.size()];
+        f.color = glm::vec3(v, w, u);
+        f.features.albedo = glm::vec3(w, v, u);
+        f.features.normal = glm::vec3(u, w, v);
+        f.features.position = glm::vec3(v, u, w);
+        FeatureSums got;
+        add_feature_sample(got, static_cast<std::int64_t>(i), f);
+        FeatureSums want;
+        const int h = static_cast<int>(i & 1);
+        want.count[h] = 1;
+        for (int c = 0; c < 3; ++c) {
+            bool clamped = false;
+            const SumInt x = to_fixed(f.color[c], clamped);
+            want.color[h].rgb[c] = x;
+            add_square(want.color_square[c], x);
+            const std::int64_t a = nearest(f.features.albedo[c], 1.0f), n = nearest(f.features.normal[c], 1.0f);
+            want.albedo[h].v[c] = a;
+            want.normal[h].v[c] = n;
+            want.bounded_square[c] = static_cast<SumUInt>(static_cast<SumInt>(a) * a);
+            want.bounded_square[3 + c] = static_cast<SumUInt>(static_cast<SumInt>(n) * n);
+            want.position[h].rgb[c] = nearest(f.features.position[c], kFeaturePositionLimit);
+        }
+        add_square(want.depth_square, want.position[h].rgb[2]);
+        mismatched += got == want ? 0 : 1;
+    }
+    CHECK(values.size() > 2000);
+    CHECK(mismatched == 0);
 }
 
 TEST_CASE("aovs: a checker-textured quad's albedo, normal and depth against the closed form, misses zero", "[render][aovs]") {
