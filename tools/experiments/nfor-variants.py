@@ -12,6 +12,7 @@ the environment variable NFOR_EXP (comma-separated; empty: the method as on main
   nop2      no second pass (the blended halves' mean)
   sellum    selection on the three channels' summed error (one choice per pixel)
   only0 / only1   the k = 0.5 / k = 1 candidate alone (selection map 0 / 1)
+and NFOR_K=k makes both candidates bandwidth k (one filter alone, any k).
 With NFOR_DUMP=PREFIX the patched build also writes the error maps, candidates and selection map as
 raw float planes (PREFIX-WHAT.raw), which --diagnose reads.
 
@@ -21,13 +22,14 @@ between only0's and only1's outputs (the one nearer the reference, summed over c
 on what any selection between the two candidates can give, the second pass applied to each);
 --diagnose prints, per candidate, the mean of the noisy and of the smoothed error estimate against
 the true MSE of the halves' mean, and how often the binary selection agrees with the true one;
---equal-flip adds, per variant, the raw spp whose FLIP equals its FLIP (log-log between the two
+--bandwidth-oracle K1,K2,.. adds each bandwidth alone (NFOR_K) and the per-pixel oracle over them
+(which also picks each pixel's luckiest noise: a loose bound); --equal-flip adds, per variant, the raw spp whose FLIP equals its FLIP (log-log between the two
 raw renders WORK/SCENE/raw-N.exr that bracket it).
 
 Usage: /usr/bin/python3 tools/experiments/nfor-variants.py --binary PATCHED/sweeptrace
            --work /work/q-quality --refs /work/denoise-refs [--variants ';novar;novarf']
            [--scenes cornell-box,classroom,kitchen,staircase2,coffee] [--spp 32] [--oracle]
-           [--diagnose] [--equal-flip] [--out /tmp/nfor-variants]
+           [--diagnose] [--equal-flip] [--bandwidth-oracle 0.25,0.5,1,2,4] [--out /tmp/nfor-variants]
 """
 import argparse
 import glob
@@ -47,9 +49,11 @@ spec.loader.exec_module(chart)
 from pfm import write_pfm  # noqa: E402  (tools/, on the path through denoise-chart's import)
 
 
-def denoise(args, name, variant, dump=None):
-    out = os.path.join(args.out, f"{name}-{args.spp}-{variant or 'main'}.pfm")
+def denoise(args, name, variant, dump=None, k=None):
+    out = os.path.join(args.out, f"{name}-{args.spp}-{variant or 'main'}{'-k' + k if k else ''}.pfm")
     env = dict(os.environ, NFOR_EXP=variant)
+    if k:
+        env["NFOR_K"] = k
     if dump:
         env["NFOR_DUMP"] = dump
     before = resource.getrusage(resource.RUSAGE_CHILDREN)
@@ -102,11 +106,14 @@ def main():
     p.add_argument("--oracle", action="store_true")
     p.add_argument("--diagnose", action="store_true")
     p.add_argument("--equal-flip", action="store_true")
+    p.add_argument("--bandwidth-oracle", default="")
     p.add_argument("--out", default="/tmp/nfor-variants")
     args = p.parse_args()
     os.makedirs(args.out, exist_ok=True)
     variants = args.variants.split(";")
-    print("| scene | " + " | ".join(v or "main" for v in variants) + (" | oracle of only0, only1 |" if args.oracle else " |"))
+    ks = [k for k in args.bandwidth_oracle.split(",") if k]
+    print("| scene | " + " | ".join(v or "main" for v in variants) + (" | oracle of only0, only1" if args.oracle else "") +
+          "".join(f" | k = {k} alone" for k in ks) + (" | oracle over them" if ks else "") + " |")
     for name in args.scenes.split(","):
         ref_path = os.path.join(args.refs, f"{name}.exr")
         ref = chart.colour(ref_path)
@@ -132,6 +139,14 @@ def main():
             cells.append("%.5f / %.4f" % score(args, out, ref, ref_path))
         if raw_flips:
             print(f"  {name} raw FLIP: " + ", ".join(f"{n} spp {f:.4f}" for n, f in raw_flips))
+        if ks:
+            outs = [denoise(args, name, "", k=k)[0] for k in ks]
+            cells += ["%.5f / %.4f" % score(args, out, ref, ref_path) for out in outs]
+            stack = np.stack([chart.colour(out) for out in outs])
+            best = ((stack - ref) ** 2).sum(-1).argmin(0)
+            out = os.path.join(args.out, f"{name}-{args.spp}-bandwidth-oracle.pfm")
+            write_pfm(out, np.take_along_axis(stack, best[None, ..., None].repeat(3, -1), 0)[0].astype(np.float32))
+            cells.append("%.5f / %.4f" % score(args, out, ref, ref_path))
         print(f"| {name} | " + " | ".join(cells) + " |", flush=True)
         if args.diagnose:
             diagnose(args, name, ref)
