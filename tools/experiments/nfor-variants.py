@@ -12,6 +12,7 @@ the environment variable NFOR_EXP (comma-separated; empty: the method as on main
   nop2      no second pass (the blended halves' mean)
   sellum    selection on the three channels' summed error (one choice per pixel)
   only0 / only1   the k = 0.5 / k = 1 candidate alone (selection map 0 / 1)
+  noprefilter  the features' halves unfiltered (no paper 5.1)
   demod     the colour divided by the albedo's mean (features 0-2; 1 where it is 0) before NFOR and
             multiplied by it after, as albedo-demodulating denoisers do
 and NFOR_K=k makes both candidates bandwidth k (one filter alone, any k).
