@@ -51,7 +51,9 @@ template <class V>
 // Every lane `value` (x - 0 is x for every float, -0 included).
 template <class V>
 [[gnu::always_inline]] inline V broadcast(float value) {
-    return value - V{};
+    float lanes[kVectorLanes<V>];
+    for (float& lane : lanes) lane = value;
+    return load_floats<V>(lanes);
 }
 
 }  // namespace sweeptrace::denoise

@@ -52,7 +52,7 @@ struct TileWork {
     int r = 0;
     int stride = 0;                // kLanes + 2R
     std::vector<float> local;      // [channel (features, then 3 colours)][row][stride]
-    std::vector<float> weight;     // [offset][tile row][kLanes]
+    std::vector<float> weight;     // [offset][kLanes] of the current row of centres
     std::vector<float> beta;       // [term][colour][kLanes] of the current row of centres
     std::vector<float> terms;      // [feature][dx + R][kLanes]: one window row's feature terms
     std::vector<float> products;   // [colour or weight][dx + R][2R + kLanes + 2R]: predict_row's
@@ -63,14 +63,13 @@ struct TileWork {
 };
 
 // Row dy of the windows of a row of centres cy, as the kernels read it. For lane i (centre
-// (tile.x0 + i, cy)) and offset dx: the weight at weight[(dx + R) * weight_stride + i], feature f's
+// (tile.x0 + i, cy)) and offset dx: the weight at weight[(dx + R) * kLanes + i], feature f's
 // term (the window pixel's value less the centre's) at terms[(f * side + dx + R) * kLanes + i], and
 // colour c at colour[c][dx + R + i].
 struct WindowRow {
     int r = 0, side = 0;
     float dy = 0.0f;
     const float* weight = nullptr;
-    std::size_t weight_stride = 0;
     const float* terms = nullptr;
     const float* colour[3] = {};
 
@@ -80,7 +79,6 @@ struct WindowRow {
 // Fills work.terms with row dy of the windows of centres cy, and returns its view.
 [[gnu::always_inline]] inline WindowRow window_row_of(TileWork& work, int features, int cy, int dy) {
     const int r = work.r, side = 2 * r + 1;
-    const std::size_t offset_stride = std::size_t(kTileSize) * kLanes;
     for (int f = 0; f < features; ++f) {
         const float* centre = work.local_row(f, cy) + r;
         const float* window = work.local_row(f, cy + dy);
@@ -93,8 +91,7 @@ struct WindowRow {
     row.r = r;
     row.side = side;
     row.dy = float(dy);
-    row.weight = work.weight.data() + std::size_t((dy + r) * side) * offset_stride + std::size_t(cy - work.tile.y0) * kLanes;
-    row.weight_stride = offset_stride;
+    row.weight = work.weight.data() + std::size_t((dy + r) * side) * kLanes;
     row.terms = work.terms.data();
     for (int c = 0; c < 3; ++c) row.colour[c] = work.local_row(features + c, cy + dy);
     return row;
@@ -117,7 +114,7 @@ template <int Terms, class V, int J>
 #pragma GCC unroll 32
             for (V& a : acc) a = V{};
             for (int dx = -r; dx <= r; ++dx) {
-                const V w = load_floats<V>(row.weight + std::size_t(dx + r) * row.weight_stride + std::size_t(lane));
+                const V w = load_floats<V>(row.weight + std::size_t(dx + r) * kLanes + std::size_t(lane));
                 const V x_dx = broadcast<V>(float(dx));
                 V wx;
                 if constexpr (J == 0)
@@ -176,12 +173,12 @@ template <int Terms, class V>
                 pred += y_dy * b[2];
 #pragma GCC unroll 16
                 for (int t = 3; t < Terms; ++t) pred += load_floats<V>(row.term(t - 3, dx) + lane) * b[t];
-                const V w = load_floats<V>(row.weight + std::size_t(dx + r) * row.weight_stride + std::size_t(lane));
+                const V w = load_floats<V>(row.weight + std::size_t(dx + r) * kLanes + std::size_t(lane));
                 store_floats(product(c, dx) + lane, w * pred);
             }
         }
         for (int dx = -r; dx <= r; ++dx)
-            store_floats(product(3, dx) + lane, load_floats<V>(row.weight + std::size_t(dx + r) * row.weight_stride + std::size_t(lane)));
+            store_floats(product(3, dx) + lane, load_floats<V>(row.weight + std::size_t(dx + r) * kLanes + std::size_t(lane)));
     }
     // Column q of the buffer holds the window pixels of lane q - (dx + R) at offset dx.
     for (int c = 0; c < 4; ++c) {
@@ -279,19 +276,19 @@ constexpr auto kFitsBaseline = fit_table(std::make_integer_sequence<int, kMaxReg
 constexpr auto kFitsAvx2 = fit_table(std::make_integer_sequence<int, kMaxRegressionTerms - 2>(), FilterIsa::Avx2);
 constexpr auto kFitsAvx512 = fit_table(std::make_integer_sequence<int, kMaxRegressionTerms - 2>(), FilterIsa::Avx512);
 
-// The weights exp(-d / k^2) of a tile's distances.
-[[gnu::always_inline]] inline void weights_of(const std::vector<float>& distance, float scale, std::vector<float>& weight) {
-    for (std::size_t i = 0; i < weight.size(); ++i) weight[i] = exp_weight(distance[i] * scale);
+// The weights exp(-d / k^2) of n distances.
+[[gnu::always_inline]] inline void weights_of(const float* distance, std::size_t n, float scale, float* weight) {
+    for (std::size_t i = 0; i < n; ++i) weight[i] = exp_weight(distance[i] * scale);
 }
 
-void weights_baseline(const std::vector<float>& distance, float scale, std::vector<float>& weight) { weights_of(distance, scale, weight); }
+void weights_baseline(const float* distance, std::size_t n, float scale, float* weight) { weights_of(distance, n, scale, weight); }
 
-[[gnu::target("avx2")]] void weights_avx2(const std::vector<float>& distance, float scale, std::vector<float>& weight) {
-    weights_of(distance, scale, weight);
+[[gnu::target("avx2")]] void weights_avx2(const float* distance, std::size_t n, float scale, float* weight) {
+    weights_of(distance, n, scale, weight);
 }
 
-[[gnu::target("avx512f")]] void weights_avx512(const std::vector<float>& distance, float scale, std::vector<float>& weight) {
-    weights_of(distance, scale, weight);
+[[gnu::target("avx512f")]] void weights_avx512(const float* distance, std::size_t n, float scale, float* weight) {
+    weights_of(distance, n, scale, weight);
 }
 
 }  // namespace
@@ -322,18 +319,22 @@ std::vector<Planes> collaborative_regression(const Planes& image, const Planes& 
         work.tile = tile;
         work.r = r;
         work.stride = kLanes + 2 * r;
-        // distance[offset][row][lane]: the largest channel distance decides (a window pixel must
+        // distance[row][offset][lane]: the largest channel distance decides (a window pixel must
         // resemble the centre in every channel); infinite where the window pixel is outside the
-        // image, or the lane or row outside the tile (weight 0).
-        const std::size_t offset_stride = std::size_t(kTileSize) * kLanes, weights_size = std::size_t(side) * std::size_t(side) * offset_stride;
+        // image, or the lane or row outside the tile (weight 0). A row of centres' distances are
+        // contiguous, so its weights are taken into a buffer of 46 KB that stays in the core's L1
+        // while the row's windows read it: laid out [offset][row][lane], a window row's 19 offsets
+        // were 4 KB apart, so they fell in the same L1 set, more of them than its ways, and every
+        // reload missed.
+        const std::size_t offsets = std::size_t(side) * std::size_t(side), row_stride = offsets * kLanes;
         constexpr float kFar = std::numeric_limits<float>::infinity();
-        distance.resize(weights_size);
+        distance.resize(std::size_t(kTileSize) * row_stride);
         for (int dy = -r, o = 0; dy <= r; ++dy)
             for (int dx = -r; dx <= r; ++dx, ++o) {
                 const Rect out = patch_distances(guide, guide_variance, distance_params, tile, dx, dy, buffers.scratch, buffers.dist, isa);
                 const std::vector<float>& dist = buffers.dist;
                 for (int y = tile.y0; y < tile.y0 + kTileSize; ++y) {
-                    float* to = distance.data() + std::size_t(o) * offset_stride + std::size_t(y - tile.y0) * kLanes;
+                    float* to = distance.data() + std::size_t(y - tile.y0) * row_stride + std::size_t(o) * kLanes;
                     if (out.empty() || y < out.y0 || y >= out.y1) {
                         std::fill(to, to + kLanes, kFar);
                         continue;
@@ -357,12 +358,12 @@ std::vector<Planes> collaborative_regression(const Planes& image, const Planes& 
                 for (int x = std::max(tile.x0 - r, 0); x < std::min(tile.x0 + kLanes + r, w); ++x) dst[x - tile.x0 + r] = src[std::size_t(y) * std::size_t(w) + std::size_t(x)];
             }
         }
-        work.weight.resize(weights_size);
+        work.weight.resize(row_stride);
         work.terms.resize(std::size_t(features.channels) * std::size_t(side) * kLanes);
         work.products.assign(4 * std::size_t(side) * std::size_t(kLanes + 4 * r), 0.0f);
         for (std::size_t b = 0; b < bandwidths.size(); ++b) {
             const float scale = 1.0f / (bandwidths[b] * bandwidths[b]);
-            (isa == FilterIsa::Avx512 ? weights_avx512 : isa == FilterIsa::Avx2 ? weights_avx2 : weights_baseline)(distance, scale, work.weight);
+            const auto weights = isa == FilterIsa::Avx512 ? weights_avx512 : isa == FilterIsa::Avx2 ? weights_avx2 : weights_baseline;
             work.beta.assign(std::size_t(3 * terms) * kLanes, 0.0f);
             TileResult& res = results[b][index];
             res.area = {tile.x0 - r, std::max(tile.y0 - r, 0), tile.x0 + kLanes + r, std::min(tile.y1 + r, h)};
@@ -372,7 +373,10 @@ std::vector<Planes> collaborative_regression(const Planes& image, const Planes& 
             res.weights.assign(buffer, 0.0f);
             const auto& fits = isa == FilterIsa::Avx512 ? kFitsAvx512 : isa == FilterIsa::Avx2 ? kFitsAvx2 : kFitsBaseline;
             const FitRowFn fit = fits[std::size_t(terms - 3)];
-            for (int cy = tile.y0; cy < tile.y1; ++cy) fit(work, cy, res);
+            for (int cy = tile.y0; cy < tile.y1; ++cy) {
+                weights(distance.data() + std::size_t(cy - tile.y0) * row_stride, row_stride, scale, work.weight.data());
+                fit(work, cy, res);
+            }
         }
     });
     // The tiles' buffers added into the image in tile order, in parallel over bands of rows: a band
