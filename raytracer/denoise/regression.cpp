@@ -307,12 +307,11 @@ std::vector<Planes> collaborative_regression(const Planes& image, const Planes& 
     // Each thread's working buffers, reused from tile to tile (each tile overwrites what it reads).
     struct Buffers {
         TileWork work;
-        std::vector<float> distance, dist;
+        std::vector<float> distance;
         PatchScratch scratch;
     };
     tbb::enumerable_thread_specific<Buffers> thread_buffers;
     for_each_tile(tiles, [&](std::size_t index, const Rect& tile) {
-        const std::size_t n = std::size_t(tile.width()) * std::size_t(tile.height());
         Buffers& buffers = thread_buffers.local();
         TileWork& work = buffers.work;
         std::vector<float>& distance = buffers.distance;
@@ -331,21 +330,16 @@ std::vector<Planes> collaborative_regression(const Planes& image, const Planes& 
         distance.resize(std::size_t(kTileSize) * row_stride);
         for (int dy = -r, o = 0; dy <= r; ++dy)
             for (int dx = -r; dx <= r; ++dx, ++o) {
-                const Rect out = patch_distances(guide, guide_variance, distance_params, tile, dx, dy, buffers.scratch, buffers.dist, isa);
-                const std::vector<float>& dist = buffers.dist;
+                float* const at = distance.data() + std::size_t(o) * kLanes;  // row 0 of offset o
+                const Rect out = largest_patch_distances(guide, guide_variance, distance_params, tile, dx, dy, buffers.scratch, at, row_stride, isa);
                 for (int y = tile.y0; y < tile.y0 + kTileSize; ++y) {
-                    float* to = distance.data() + std::size_t(y - tile.y0) * row_stride + std::size_t(o) * kLanes;
+                    float* to = at + std::size_t(y - tile.y0) * row_stride;
                     if (out.empty() || y < out.y0 || y >= out.y1) {
                         std::fill(to, to + kLanes, kFar);
                         continue;
                     }
                     std::fill(to, to + (out.x0 - tile.x0), kFar);
                     std::fill(to + (out.x1 - tile.x0), to + kLanes, kFar);
-                    to += out.x0 - tile.x0;
-                    const std::size_t from = std::size_t(y - tile.y0) * std::size_t(tile.width()) + std::size_t(out.x0 - tile.x0);
-                    for (int i = 0; i < out.width(); ++i) to[i] = dist[from + std::size_t(i)];
-                    for (int c = 1; c < guide.channels; ++c)
-                        for (int i = 0; i < out.width(); ++i) to[i] = std::max(to[i], dist[std::size_t(c) * n + from + std::size_t(i)]);
                 }
             }
         // The features, then the colour, over the tile grown by R (zero outside the image).
