@@ -24,6 +24,7 @@
 #include "raytracer/denoise/exp_weight.hpp"
 #include "raytracer/denoise/float_vector.hpp"
 #include "raytracer/denoise/least_squares.hpp"
+#include "raytracer/denoise/least_squares_lanes.hpp"
 #include "raytracer/denoise/tiles.hpp"
 
 namespace sweeptrace::denoise {
@@ -224,15 +225,21 @@ template <int Terms, FilterIsa Isa>
         for (int c = 0; c < 3; ++c)
             for (int i = 0; i < kLanes; ++i) total[kPairs + 3 * 2 + c][i] += ddy * double(window_row[kPairs + c][i]);
     }
-    // Each centre's solve.
+    // Each centre's solve, a vector of centres at a time (least_squares_lanes.hpp: the scalar
+    // solve's bits). Lanes past the tile's width have all sums 0, so their fit is 0.
+    using VD = DoubleVector<Isa>;
+    constexpr int D = int(sizeof(VD) / sizeof(double));
     const double precision = (2 * r + 3) * double(FLT_EPSILON);
-    for (int i = 0; i < width; ++i) {
-        double a[Terms * Terms], b[Terms * 3], beta[Terms * 3];
-        for (int j = 0; j < Terms; ++j)
-            for (int k = 0; k <= j; ++k) a[j * Terms + k] = a[k * Terms + j] = total[pair(j, k)][i];
-        for (int e = 0; e < 3 * Terms; ++e) b[e] = total[kPairs + e][i];
-        solve_normal_equations(a, b, Terms, beta, precision);
-        for (int e = 0; e < 3 * Terms; ++e) work.beta[std::size_t(e) * kLanes + std::size_t(i)] = float(beta[e]);
+    for (int lane = 0; lane < width; lane += D) {
+        VD a[Terms][Terms], b[Terms][3], beta[Terms][3];
+        for (int j = 0; j < Terms; ++j) {
+            for (int k = 0; k <= j; ++k) a[j][k] = load_doubles<VD>(total[pair(j, k)] + lane);
+            for (int c = 0; c < 3; ++c) b[j][c] = load_doubles<VD>(total[kPairs + 3 * j + c] + lane);
+        }
+        solve_normal_equations_lanes<Terms>(a, b, beta, precision);
+        for (int t = 0; t < Terms; ++t)
+            for (int c = 0; c < 3; ++c)
+                for (int l = 0; l < D; ++l) work.beta[std::size_t(3 * t + c) * kLanes + std::size_t(lane + l)] = float(beta[t][c][l]);
     }
     // The predictions: every window pixel gets its centre's fit, weighted. The lanes whose window
     // pixel is outside the image, or past the tile's width, have weight 0 and land in the
