@@ -9,6 +9,8 @@
 #include <cmath>
 #include <cstddef>
 
+#include "raytracer/denoise/float_vector.hpp"
+
 namespace sweeptrace::denoise {
 
 template <class M>
@@ -16,12 +18,6 @@ template <class M>
     for (std::size_t l = 0; l < sizeof(M) / sizeof(m[0]); ++l)
         if (m[l]) return true;
     return false;
-}
-
-// Every lane `value` (x - 0 is x for every double, -0 included).
-template <class VD>
-[[gnu::always_inline]] inline VD broadcast_double(double value) {
-    return value - VD{};
 }
 
 // Lane by lane sqrt of d where `use`, 1 elsewhere (no square root of a negative is taken).
@@ -50,29 +46,29 @@ template <int N, class VD>
     VD scale[N], index[N];
     for (int i = 0; i < N; ++i) {
         const M positive = a[i][i] > zero;
-        scale[i] = positive ? broadcast_double<VD>(1.0) / sqrt_lanes(a[i][i], positive) : zero;
-        index[i] = broadcast_double<VD>(double(i));
+        scale[i] = positive ? broadcast<VD>(1.0) / sqrt_lanes(a[i][i], positive) : zero;
+        index[i] = broadcast<VD>(double(i));
     }
     for (int i = 0; i < N; ++i) {
         for (int j = 0; j <= i; ++j) a[i][j] *= scale[i] * scale[j];
         for (int c = 0; c < 3; ++c) b[i][c] *= scale[i];
     }
-    const VD tolerance = broadcast_double<VD>(N * precision);
+    const VD tolerance = broadcast<VD>(N * precision);
     M active = zero == zero;  // not stopped yet
     VD rank = zero;
     for (int k = 0; k < N; ++k) {
-        VD best = a[k][k], pick = broadcast_double<VD>(double(k));
+        VD best = a[k][k], pick = broadcast<VD>(double(k));
         for (int j = k + 1; j < N; ++j) {
             const M larger = a[j][j] > best;
             best = larger ? a[j][j] : best;
-            pick = larger ? broadcast_double<VD>(double(j)) : pick;
+            pick = larger ? broadcast<VD>(double(j)) : pick;
         }
         active &= best > tolerance;
         if (!any_lane(active)) break;
         // Rows and columns k and m swapped in the lanes that picked m (the lower triangle's
         // view of swapping both in the symmetric matrix, as LAPACK's dpstrf does).
         for (int m = k + 1; m < N; ++m) {
-            const M sel = active & (pick == broadcast_double<VD>(double(m)));
+            const M sel = active & (pick == broadcast<VD>(double(m)));
             if (!any_lane(sel)) continue;
             for (int j = 0; j < k; ++j) swap_where(sel, a[k][j], a[m][j]);
             swap_where(sel, a[k][k], a[m][m]);
@@ -87,7 +83,7 @@ template <int N, class VD>
         for (int i = k + 1; i < N; ++i) a[i][k] = active ? a[i][k] / pivot : a[i][k];
         for (int i = k + 1; i < N; ++i)
             for (int j = k + 1; j <= i; ++j) a[i][j] = active ? a[i][j] - a[i][k] * a[j][k] : a[i][j];
-        rank = active ? rank + broadcast_double<VD>(1.0) : rank;
+        rank = active ? rank + broadcast<VD>(1.0) : rank;
     }
     // L L^T z = b on each lane's first `rank` rows; the rest of z is 0.
     for (int t = 0; t < N; ++t)
@@ -97,17 +93,17 @@ template <int N, class VD>
         for (int i = 0; i < N; ++i) {
             VD s = b[i][c];
             for (int j = 0; j < i; ++j) s -= a[i][j] * z[j];
-            z[i] = broadcast_double<VD>(double(i)) < rank ? s / a[i][i] : zero;
+            z[i] = broadcast<VD>(double(i)) < rank ? s / a[i][i] : zero;
         }
         for (int i = N - 1; i >= 0; --i) {
             VD s = z[i];
-            for (int j = i + 1; j < N; ++j) s = broadcast_double<VD>(double(j)) < rank ? s - a[j][i] * z[j] : s;
-            z[i] = broadcast_double<VD>(double(i)) < rank ? s / a[i][i] : zero;
+            for (int j = i + 1; j < N; ++j) s = broadcast<VD>(double(j)) < rank ? s - a[j][i] * z[j] : s;
+            z[i] = broadcast<VD>(double(i)) < rank ? s / a[i][i] : zero;
         }
         // beta at each row's original position
         for (int i = 0; i < N; ++i) {
             const VD value = z[i] * scale[i];
-            for (int t = 0; t < N; ++t) beta[t][c] = index[i] == broadcast_double<VD>(double(t)) ? value : beta[t][c];
+            for (int t = 0; t < N; ++t) beta[t][c] = index[i] == broadcast<VD>(double(t)) ? value : beta[t][c];
         }
     }
 }

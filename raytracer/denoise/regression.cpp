@@ -1,7 +1,9 @@
 // Collaborative regression (regression.hpp), tile by tile. The NL-means distances of every
 // centre of the tile to each of its window's offsets are computed offset by offset (as nl_means
-// does), once for all bandwidths. Then, per bandwidth, one row of centres at a time, the normal equations of all the row's windows are
-// summed together, offset by offset, each sum a float lane per centre: the loops run along the row
+// does), once for all bandwidths. Then, one row of centres at a time, for two bandwidths at once
+// (the loads of the window's terms and colours shared), the normal equations of all the row's
+// windows are summed together, offset by offset, each sum a float lane per centre (the solves
+// too, least_squares_lanes.hpp): the loops run along the row
 // and vectorize, and every lane does the same operations in the same order whatever the vector
 // width. A window row's 2R + 1 products are summed in float and the rows' sums in double, so an
 // entry's relative rounding stays below (2R + 3) float epsilons, the precision the solve
