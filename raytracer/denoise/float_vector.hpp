@@ -1,8 +1,9 @@
 #pragma once
 // A vector of floats as wide as one register of the instruction set a loop is compiled for (GCC's
-// vector extension): 4 lanes for the baseline (SSE2), 8 for AVX2, 16 for AVX-512. The
-// register-blocked kernels (regression.cpp) keep their running sums in these, so the sums stay in
-// registers across a window's pixels instead of being loaded and stored for every product. Each
+// vector extension): 4 lanes for the baseline (SSE2), 8 for AVX2, 16 for AVX-512; and of doubles,
+// half as many. The register-blocked kernels (regression.cpp) keep their running sums in these,
+// so the sums stay in registers across a window's pixels instead of being loaded and stored for
+// every product. Each
 // lane's + and * are the float operations of a scalar loop (the denoiser's files are built with
 // -ffp-contract=off: no multiply-add is fused), so every width gives the same bits. Functions on
 // these vectors are inlined into the loops of their own ISA (so the files that use them are built
@@ -32,6 +33,15 @@ struct FloatVectorOf<FilterIsa::Avx512> {
 template <FilterIsa Isa>
 using FloatVector = typename FloatVectorOf<Isa>::type;
 
+// The same register's worth of double lanes (the window solves, least_squares_lanes.hpp).
+template <FilterIsa Isa>
+struct DoubleVectorOf {
+    typedef double type __attribute__((vector_size(sizeof(FloatVector<Isa>))));
+};
+
+template <FilterIsa Isa>
+using DoubleVector = typename DoubleVectorOf<Isa>::type;
+
 template <class V>
 inline constexpr int kVectorLanes = int(sizeof(V) / sizeof(float));
 
@@ -48,10 +58,22 @@ template <class V>
     std::memcpy(p, &v, sizeof(V));
 }
 
-// Every lane `value` (x - 0 is x for every float, -0 included).
 template <class V>
-[[gnu::always_inline]] inline V broadcast(float value) {
-    return value - V{};
+[[gnu::always_inline]] inline V load_doubles(const double* p) {
+    V v;
+    std::memcpy(&v, p, sizeof(V));
+    return v;
+}
+
+// Every lane `value` (a float or a double vector), from an array of lanes: written `value - V{}`,
+// GCC -O3 built it, inlined into a loop, one lane at a time (16 masked broadcasts for one).
+template <class V, class T>
+[[gnu::always_inline]] inline V broadcast(T value) {
+    T lanes[sizeof(V) / sizeof(T)];
+    for (T& lane : lanes) lane = value;
+    V v;
+    std::memcpy(&v, lanes, sizeof(V));
+    return v;
 }
 
 }  // namespace sweeptrace::denoise

@@ -11,9 +11,9 @@ namespace {
 // Sums of `in` (one channel, width x height) over the clipped 2r + 1 pixels around every pixel
 // along its row (dx = 1, dy = 0) or its column (dx = 0, dy = 1), each sum taken afresh (no running
 // sum whose subtractions would leave rounding behind beside large values: a window of zeros sums
-// to 0). Rows in parallel, each sum alone: the same bits at any thread count.
-std::vector<double> line_sums(const std::vector<double>& in, int width, int height, int r, int dx, int dy) {
-    std::vector<double> out(in.size());
+// to 0), into `out` (every element written). Rows in parallel, each sum alone: the same bits at
+// any thread count.
+void line_sums(const std::vector<double>& in, int width, int height, int r, int dx, int dy, std::vector<double>& out) {
     for_each_chunk(std::size_t(height), 8, [&](std::size_t y0, std::size_t y1) {
         for (int y = int(y0); y < int(y1); ++y)
             for (int x = 0; x < width; ++x) {
@@ -24,12 +24,14 @@ std::vector<double> line_sums(const std::vector<double>& in, int width, int heig
                 out[std::size_t(y) * std::size_t(width) + std::size_t(x)] = sum;
             }
     });
-    return out;
 }
 
-// The sums over the clipped (2r + 1)^2 window of every pixel: along rows, then along columns.
-std::vector<double> window_sums(const std::vector<double>& values, int width, int height, int r) {
-    return line_sums(line_sums(values, width, height, r, 1, 0), width, height, r, 0, 1);
+// The sums over the clipped (2r + 1)^2 window of every pixel, into `out`: along rows (into
+// `rows`), then along columns. The buffers are the caller's, reused for every channel: allocated
+// afresh, a whole image of doubles was zero-filled and page-faulted in four times per channel.
+void window_sums(const std::vector<double>& values, int width, int height, int r, std::vector<double>& rows, std::vector<double>& out) {
+    line_sums(values, width, height, r, 1, 0, rows);
+    line_sums(rows, width, height, r, 0, 1, out);
 }
 
 }  // namespace
@@ -37,7 +39,7 @@ std::vector<double> window_sums(const std::vector<double>& values, int width, in
 Planes halves_variance(const Buffers& buffers, int radius) {
     Planes out = buffers.variance;
     const std::size_t n = out.pixels();
-    std::vector<double> spread(n), variance(n);
+    std::vector<double> spread(n), variance(n), rows(n), spread_sum(n), variance_sum(n);
     for (int c = 0; c < out.channels; ++c) {
         const float* even = buffers.even.channel(c);
         const float* odd = buffers.odd.channel(c);
@@ -49,8 +51,8 @@ Planes halves_variance(const Buffers& buffers, int radius) {
                 variance[i] = var[i];
             }
         });
-        const std::vector<double> spread_sum = window_sums(spread, out.width, out.height, radius);
-        const std::vector<double> variance_sum = window_sums(variance, out.width, out.height, radius);
+        window_sums(spread, out.width, out.height, radius, rows, spread_sum);
+        window_sums(variance, out.width, out.height, radius, rows, variance_sum);
         float* dst = out.channel(c);
         for_each_chunk(n, 4096, [&](std::size_t i0, std::size_t i1) {
             for (std::size_t i = i0; i < i1; ++i)

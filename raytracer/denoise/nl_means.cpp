@@ -54,13 +54,16 @@ template <class V>
 }
 
 // The loops, inlined into one function per instruction set (filter_isa.hpp) at the end of this
-// namespace.
-template <FilterIsa Isa>
+// namespace. Each channel's patch distances of `tile` to dist[c * tile pixels + (y - tile.y0) *
+// tile.width() + (x - tile.x0)] or, Largest, only the largest of them to to[(y - tile.y0) *
+// row_stride + (x - tile.x0)] (largest_patch_distances).
+template <FilterIsa Isa, bool Largest = false>
 [[gnu::always_inline]] inline Rect distances(const Planes& guide, const Planes& variance, const NlMeansParams& params, const Rect& tile,
-                                             int dx, int dy, PatchScratch& scratch, std::vector<float>& dist) {
+                                             int dx, int dy, PatchScratch& scratch, std::vector<float>& dist, float* to = nullptr,
+                                             std::size_t row_stride = 0) {
     const int w = guide.width, h = guide.height, f = params.patch_radius;
     const std::size_t tile_pixels = std::size_t(tile.width()) * std::size_t(tile.height());
-    dist.resize(std::size_t(guide.channels) * tile_pixels);
+    if constexpr (!Largest) dist.resize(std::size_t(guide.channels) * tile_pixels);
     // Pixels p with p and p + (dx, dy) both inside the image; patches are clipped to it too.
     const Rect valid{std::max(0, -dx), std::max(0, -dy), std::min(w, w - dx), std::min(h, h - dy)};
     const Rect out = intersect(tile, valid);
@@ -84,6 +87,7 @@ template <FilterIsa Isa>
     scratch.row.resize(std::size_t(ow) * std::size_t(gh));
     scratch.column.resize(std::size_t(ow));
     scratch.count.resize(std::size_t(ow));
+    if constexpr (Largest) scratch.largest.resize(std::size_t(ow) * std::size_t(out.height()));
     for (int x = out.x0; x < out.x1; ++x) scratch.count[std::size_t(x - out.x0)] = float(std::min(x + f + 1, pad.x1) - std::max(x - f, pad.x0));
     const float k2 = params.k * params.k, s = params.variance_scale;
     for (int c = 0; c < guide.channels; ++c) {
@@ -99,7 +103,28 @@ template <FilterIsa Isa>
         for (int y = 0; y < gh; ++y)
             strided_sums<FloatVector<Isa>>(scratch.pixel.data() + std::size_t(y) * std::size_t(gw), 1, 2 * f + 1,
                                            scratch.row.data() + std::size_t(y) * std::size_t(ow), ow);
-        // Down columns, then the patch's mean distance.
+        // Down columns, then the patch's mean distance (Largest: the largest sum so far, and
+        // after the last channel its mean).
+        if constexpr (Largest) {
+            const bool last = c + 1 == guide.channels;
+            for (int y = out.y0; y < out.y1; ++y) {
+                const float* r = scratch.row.data() + std::size_t(y - out.y0) * std::size_t(ow);  // grown row y - F
+                float* largest = scratch.largest.data() + std::size_t(y - out.y0) * std::size_t(ow);
+                if (c == 0) {
+                    strided_sums<FloatVector<Isa>>(r, std::size_t(ow), 2 * f + 1, largest, ow);
+                } else {
+                    float* column = scratch.column.data();
+                    strided_sums<FloatVector<Isa>>(r, std::size_t(ow), 2 * f + 1, column, ow);
+                    for (int i = 0; i < ow; ++i) largest[i] = std::max(largest[i], column[i]);
+                }
+                if (last) {
+                    const float rows = float(std::min(y + f + 1, pad.y1) - std::max(y - f, pad.y0));
+                    float* line = to + std::size_t(y - tile.y0) * row_stride + std::size_t(out.x0 - tile.x0);
+                    for (int i = 0; i < ow; ++i) line[i] = largest[i] / (rows * scratch.count[std::size_t(i)]);
+                }
+            }
+            continue;
+        }
         float* o = dist.data() + std::size_t(c) * tile_pixels;
         float* column = scratch.column.data();
         for (int y = out.y0; y < out.y1; ++y) {
@@ -152,19 +177,22 @@ template <FilterIsa Isa>
             }
 }
 
-Rect distances_baseline(const Planes& guide, const Planes& variance, const NlMeansParams& params, const Rect& tile, int dx, int dy,
-                        PatchScratch& scratch, std::vector<float>& dist) {
-    return distances<FilterIsa::Baseline>(guide, variance, params, tile, dx, dy, scratch, dist);
+Rect largest_baseline(const Planes& guide, const Planes& variance, const NlMeansParams& params, const Rect& tile, int dx, int dy,
+                      PatchScratch& scratch, float* to, std::size_t row_stride) {
+    std::vector<float> unused;
+    return distances<FilterIsa::Baseline, true>(guide, variance, params, tile, dx, dy, scratch, unused, to, row_stride);
 }
 
-[[gnu::target("avx2")]] Rect distances_avx2(const Planes& guide, const Planes& variance, const NlMeansParams& params, const Rect& tile,
-                                            int dx, int dy, PatchScratch& scratch, std::vector<float>& dist) {
-    return distances<FilterIsa::Avx2>(guide, variance, params, tile, dx, dy, scratch, dist);
+[[gnu::target("avx2")]] Rect largest_avx2(const Planes& guide, const Planes& variance, const NlMeansParams& params, const Rect& tile,
+                                          int dx, int dy, PatchScratch& scratch, float* to, std::size_t row_stride) {
+    std::vector<float> unused;
+    return distances<FilterIsa::Avx2, true>(guide, variance, params, tile, dx, dy, scratch, unused, to, row_stride);
 }
 
-[[gnu::target("avx512f")]] Rect distances_avx512(const Planes& guide, const Planes& variance, const NlMeansParams& params, const Rect& tile,
-                                               int dx, int dy, PatchScratch& scratch, std::vector<float>& dist) {
-    return distances<FilterIsa::Avx512>(guide, variance, params, tile, dx, dy, scratch, dist);
+[[gnu::target("avx512f")]] Rect largest_avx512(const Planes& guide, const Planes& variance, const NlMeansParams& params, const Rect& tile,
+                                             int dx, int dy, PatchScratch& scratch, float* to, std::size_t row_stride) {
+    std::vector<float> unused;
+    return distances<FilterIsa::Avx512, true>(guide, variance, params, tile, dx, dy, scratch, unused, to, row_stride);
 }
 
 void filter_tile_baseline(const Planes& image, const Planes& guide, const Planes& variance, const NlMeansParams& params, const Rect& tile,
@@ -184,10 +212,10 @@ void filter_tile_baseline(const Planes& image, const Planes& guide, const Planes
 
 }  // namespace
 
-Rect patch_distances(const Planes& guide, const Planes& variance, const NlMeansParams& params, const Rect& tile, int dx, int dy,
-                     PatchScratch& scratch, std::vector<float>& dist, FilterIsa isa) {
-    const auto distances_of = isa == FilterIsa::Avx512 ? distances_avx512 : isa == FilterIsa::Avx2 ? distances_avx2 : distances_baseline;
-    return distances_of(guide, variance, params, tile, dx, dy, scratch, dist);
+Rect largest_patch_distances(const Planes& guide, const Planes& variance, const NlMeansParams& params, const Rect& tile, int dx, int dy,
+                             PatchScratch& scratch, float* to, std::size_t row_stride, FilterIsa isa) {
+    const auto largest_of = isa == FilterIsa::Avx512 ? largest_avx512 : isa == FilterIsa::Avx2 ? largest_avx2 : largest_baseline;
+    return largest_of(guide, variance, params, tile, dx, dy, scratch, to, row_stride);
 }
 
 Planes nl_means(const Planes& image, const Planes& guide, const Planes& variance, const NlMeansParams& params, FilterIsa isa) {

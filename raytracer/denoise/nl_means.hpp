@@ -23,17 +23,19 @@ struct NlMeansParams {
     float variance_scale = 1.0f;
 };
 
-// Working buffers of patch_distances, reused across offsets by one task.
+// Working buffers of largest_patch_distances, reused across offsets by one task.
 struct PatchScratch {
-    std::vector<float> pixel, row, column, count;
+    std::vector<float> pixel, row, column, count, largest;
 };
 
-// The patch distance d of every pixel p of `tile` whose neighbour p + (dx, dy) is inside the
-// image, per channel of `guide`: written to dist[c * tile pixels + (y - tile.y0) * tile.width()
-// + (x - tile.x0)] (dist is resized to channels * tile pixels). Returns the part of `tile` that
-// was written (pixels whose neighbour is outside are left as they were).
-Rect patch_distances(const Planes& guide, const Planes& variance, const NlMeansParams& params, const Rect& tile, int dx, int dy,
-                     PatchScratch& scratch, std::vector<float>& dist, FilterIsa isa);
+// The largest over the channels of `guide` of the patch distance d, for every pixel p of `tile`
+// whose neighbour p + (dx, dy) is inside the image: written to out[(y - tile.y0) * row_stride +
+// (x - tile.x0)]. Returns the part of `tile` that was written (pixels whose neighbour is outside
+// are left as they were). The channels' patch sums are compared before the division by the
+// patch's pixel count, the same for every channel: division by a positive number keeps the
+// order, so this is the largest of the channels' distances, to the bit.
+Rect largest_patch_distances(const Planes& guide, const Planes& variance, const NlMeansParams& params, const Rect& tile, int dx, int dy,
+                             PatchScratch& scratch, float* out, std::size_t row_stride, FilterIsa isa);
 
 // `image` filtered by NL-means weights computed on `guide` (same size; `variance` is the guide's
 // variance of the mean): each channel averaged with its own weights, those of guide channel c mod

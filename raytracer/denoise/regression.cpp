@@ -1,7 +1,9 @@
 // Collaborative regression (regression.hpp), tile by tile. The NL-means distances of every
 // centre of the tile to each of its window's offsets are computed offset by offset (as nl_means
-// does), once for all bandwidths. Then, per bandwidth, one row of centres at a time, the normal equations of all the row's windows are
-// summed together, offset by offset, each sum a float lane per centre: the loops run along the row
+// does), once for all bandwidths. Then, one row of centres at a time, for two bandwidths at once
+// (the loads of the window's terms and colours shared), the normal equations of all the row's
+// windows are summed together, offset by offset, each sum a float lane per centre (the solves
+// too, least_squares_lanes.hpp): the loops run along the row
 // and vectorize, and every lane does the same operations in the same order whatever the vector
 // width. A window row's 2R + 1 products are summed in float and the rows' sums in double, so an
 // entry's relative rounding stays below (2R + 3) float epsilons, the precision the solve
@@ -24,6 +26,7 @@
 #include "raytracer/denoise/exp_weight.hpp"
 #include "raytracer/denoise/float_vector.hpp"
 #include "raytracer/denoise/least_squares.hpp"
+#include "raytracer/denoise/least_squares_lanes.hpp"
 #include "raytracer/denoise/tiles.hpp"
 
 namespace sweeptrace::denoise {
@@ -52,8 +55,9 @@ struct TileWork {
     int r = 0;
     int stride = 0;                // kLanes + 2R
     std::vector<float> local;      // [channel (features, then 3 colours)][row][stride]
-    std::vector<float> weight;     // [offset][tile row][kLanes]
-    std::vector<float> beta;       // [term][colour][kLanes] of the current row of centres
+    std::vector<float> weight;     // [bandwidth][offset][kLanes] of the current row of centres
+    std::size_t band_stride = 0;   // one bandwidth's part of `weight` (and the next one's start)
+    std::vector<float> beta;       // [bandwidth][term][colour][kLanes] of the current row of centres
     std::vector<float> terms;      // [feature][dx + R][kLanes]: one window row's feature terms
     std::vector<float> products;   // [colour or weight][dx + R][2R + kLanes + 2R]: predict_row's
 
@@ -63,14 +67,15 @@ struct TileWork {
 };
 
 // Row dy of the windows of a row of centres cy, as the kernels read it. For lane i (centre
-// (tile.x0 + i, cy)) and offset dx: the weight at weight[(dx + R) * weight_stride + i], feature f's
+// (tile.x0 + i, cy)) and offset dx: bandwidth b's weight at weight[b * band_stride + (dx + R) *
+// kLanes + i], feature f's
 // term (the window pixel's value less the centre's) at terms[(f * side + dx + R) * kLanes + i], and
 // colour c at colour[c][dx + R + i].
 struct WindowRow {
     int r = 0, side = 0;
     float dy = 0.0f;
     const float* weight = nullptr;
-    std::size_t weight_stride = 0;
+    std::size_t band_stride = 0;
     const float* terms = nullptr;
     const float* colour[3] = {};
 
@@ -80,7 +85,6 @@ struct WindowRow {
 // Fills work.terms with row dy of the windows of centres cy, and returns its view.
 [[gnu::always_inline]] inline WindowRow window_row_of(TileWork& work, int features, int cy, int dy) {
     const int r = work.r, side = 2 * r + 1;
-    const std::size_t offset_stride = std::size_t(kTileSize) * kLanes;
     for (int f = 0; f < features; ++f) {
         const float* centre = work.local_row(f, cy) + r;
         const float* window = work.local_row(f, cy + dy);
@@ -93,8 +97,8 @@ struct WindowRow {
     row.r = r;
     row.side = side;
     row.dy = float(dy);
-    row.weight = work.weight.data() + std::size_t((dy + r) * side) * offset_stride + std::size_t(cy - work.tile.y0) * kLanes;
-    row.weight_stride = offset_stride;
+    row.weight = work.weight.data() + std::size_t((dy + r) * side) * kLanes;
+    row.band_stride = work.band_stride;
     row.terms = work.terms.data();
     for (int c = 0; c < 3; ++c) row.colour[c] = work.local_row(features + c, cy + dy);
     return row;
@@ -102,51 +106,69 @@ struct WindowRow {
 
 // One block of the normal equations' sums over a window row: the entries of term J (J != 2, whose
 // entries come from the row's sums, below) with the terms k <= J (k != 2) and with the three
-// colours, summed over dx in registers, one vector of lanes at a time. The products are those of
-// a scalar loop, in the same order: w x_J first, then times x_k; the sum starts at 0 and runs over
-// dx = -R .. R.
-template <int Terms, class V, int J>
+// colours, summed over dx in registers, one vector of lanes at a time, for B bandwidths at once
+// (bandwidth b's entries at window_row[b * entries + e]): the terms and colours are loaded once
+// for all of them. The products are those of a scalar loop, in the same order: w x_J first, then
+// times x_k; the sum starts at 0 and runs over dx = -R .. R.
+template <int Terms, class V, int J, int B>
 [[gnu::always_inline]] inline void sum_block(const WindowRow& row, float (*window_row)[kLanes]) {
     if constexpr (J != 2) {
-        constexpr int kPairs = Terms * (Terms + 1) / 2;
+        constexpr int kPairs = Terms * (Terms + 1) / 2, kEntries = kPairs + 3 * Terms;
         constexpr int kProducts = J < 2 ? J + 1 : J;  // k = 0, 1, 3 .. J
         constexpr int L = kVectorLanes<V>;
         const int r = row.r;
         for (int lane = 0; lane < kLanes; lane += L) {
-            V acc[kProducts + 3];
+            V acc[B][kProducts + 3];
+#pragma GCC unroll 2
+            for (int b = 0; b < B; ++b)
 #pragma GCC unroll 32
-            for (V& a : acc) a = V{};
+                for (V& a : acc[b]) a = V{};
             for (int dx = -r; dx <= r; ++dx) {
-                const V w = load_floats<V>(row.weight + std::size_t(dx + r) * row.weight_stride + std::size_t(lane));
                 const V x_dx = broadcast<V>(float(dx));
-                V wx;
-                if constexpr (J == 0)
-                    wx = w;  // w times the constant term 1
-                else if constexpr (J == 1)
-                    wx = w * x_dx;
-                else
-                    wx = w * load_floats<V>(row.term(J - 3, dx) + lane);
-                acc[0] += wx;
-                if constexpr (J >= 1) acc[1] += wx * x_dx;
+                V wx[B];
+#pragma GCC unroll 2
+                for (int b = 0; b < B; ++b) {
+                    const V w = load_floats<V>(row.weight + std::size_t(b) * row.band_stride + std::size_t(dx + r) * kLanes + std::size_t(lane));
+                    if constexpr (J == 0)
+                        wx[b] = w;  // w times the constant term 1
+                    else if constexpr (J == 1)
+                        wx[b] = w * x_dx;
+                    else
+                        wx[b] = w * load_floats<V>(row.term(J - 3, dx) + lane);
+                    acc[b][0] += wx[b];
+                    if constexpr (J >= 1) acc[b][1] += wx[b] * x_dx;
+                }
 #pragma GCC unroll 16
-                for (int k = 3; k <= J; ++k) acc[k - 1] += wx * load_floats<V>(row.term(k - 3, dx) + lane);
+                for (int k = 3; k <= J; ++k) {
+                    const V x = load_floats<V>(row.term(k - 3, dx) + lane);
+#pragma GCC unroll 2
+                    for (int b = 0; b < B; ++b) acc[b][k - 1] += wx[b] * x;
+                }
 #pragma GCC unroll 3
-                for (int c = 0; c < 3; ++c) acc[kProducts + c] += wx * load_floats<V>(row.colour[c] + dx + r + lane);
+                for (int c = 0; c < 3; ++c) {
+                    const V colour = load_floats<V>(row.colour[c] + dx + r + lane);
+#pragma GCC unroll 2
+                    for (int b = 0; b < B; ++b) acc[b][kProducts + c] += wx[b] * colour;
+                }
             }
             constexpr int base = J * (J + 1) / 2;  // pair (J, 0)
-            store_floats(window_row[base] + lane, acc[0]);
-            if constexpr (J >= 1) store_floats(window_row[base + 1] + lane, acc[1]);
+#pragma GCC unroll 2
+            for (int b = 0; b < B; ++b) {
+                float(*entries)[kLanes] = window_row + b * kEntries;
+                store_floats(entries[base] + lane, acc[b][0]);
+                if constexpr (J >= 1) store_floats(entries[base + 1] + lane, acc[b][1]);
 #pragma GCC unroll 16
-            for (int k = 3; k <= J; ++k) store_floats(window_row[base + k] + lane, acc[k - 1]);
+                for (int k = 3; k <= J; ++k) store_floats(entries[base + k] + lane, acc[b][k - 1]);
 #pragma GCC unroll 3
-            for (int c = 0; c < 3; ++c) store_floats(window_row[kPairs + 3 * J + c] + lane, acc[kProducts + c]);
+                for (int c = 0; c < 3; ++c) store_floats(entries[kPairs + 3 * J + c] + lane, acc[b][kProducts + c]);
+            }
         }
     }
 }
 
-template <int Terms, class V, int... J>
+template <int Terms, class V, int B, int... J>
 [[gnu::always_inline]] inline void sum_blocks(const WindowRow& row, float (*window_row)[kLanes], std::integer_sequence<int, J...>) {
-    (sum_block<Terms, V, J>(row, window_row), ...);
+    (sum_block<Terms, V, J, B>(row, window_row), ...);
 }
 
 // The predictions of a row of centres' fits for window row dy, added to the tile's buffers (sum:
@@ -158,7 +180,8 @@ template <int Terms, class V, int... J>
 // the same bits whatever the vector width (the lanes outside 0 .. kLanes add +0, which changes
 // no sum).
 template <int Terms, class V>
-[[gnu::always_inline]] inline void predict_row(const WindowRow& row, const float* beta, float* products, float* const (&sum)[4]) {
+[[gnu::always_inline]] inline void predict_row(const WindowRow& row, const float* weight, const float* beta, float* products,
+                                               float* const (&sum)[4]) {
     constexpr int L = kVectorLanes<V>;
     const int r = row.r, side = row.side, padded = kLanes + 4 * r, columns = kLanes + 2 * r;
     const V y_dy = broadcast<V>(row.dy);
@@ -176,12 +199,12 @@ template <int Terms, class V>
                 pred += y_dy * b[2];
 #pragma GCC unroll 16
                 for (int t = 3; t < Terms; ++t) pred += load_floats<V>(row.term(t - 3, dx) + lane) * b[t];
-                const V w = load_floats<V>(row.weight + std::size_t(dx + r) * row.weight_stride + std::size_t(lane));
+                const V w = load_floats<V>(weight + std::size_t(dx + r) * kLanes + std::size_t(lane));
                 store_floats(product(c, dx) + lane, w * pred);
             }
         }
         for (int dx = -r; dx <= r; ++dx)
-            store_floats(product(3, dx) + lane, load_floats<V>(row.weight + std::size_t(dx + r) * row.weight_stride + std::size_t(lane)));
+            store_floats(product(3, dx) + lane, load_floats<V>(weight + std::size_t(dx + r) * kLanes + std::size_t(lane)));
     }
     // Column q of the buffer holds the window pixels of lane q - (dx + R) at offset dx.
     for (int c = 0; c < 4; ++c) {
@@ -199,99 +222,128 @@ template <int Terms, class V>
     }
 }
 
-// Fits the windows of the tile's row of centres cy and adds their predictions to `res`.
-template <int Terms, FilterIsa Isa>
-[[gnu::always_inline]] inline void fit_row(TileWork& work, int cy, TileResult& res) {
+// Fits the windows of the tile's row of centres cy, for B bandwidths at once (weights in
+// work.weight, bandwidth b's at b * band_stride), and adds bandwidth b's predictions to res[b].
+template <int Terms, FilterIsa Isa, int B>
+[[gnu::always_inline]] inline void fit_row(TileWork& work, int cy, TileResult* const* res) {
     using V = FloatVector<Isa>;
     static_assert(kLanes % kVectorLanes<V> == 0);
     constexpr int kPairs = Terms * (Terms + 1) / 2, kEntries = kPairs + 3 * Terms;
     const int r = work.r, width = work.tile.width();
     const int features = Terms - 3;
     // The normal equations' lower triangle (pair j >= k at j (j + 1) / 2 + k) and right-hand
-    // sides (at kPairs + 3 j + c), per lane: a window row's sums in float, their total in double.
-    // The entries with term 2 (dy) are not summed per row (they stay 0 there): dy is constant
-    // along a window row, so sum w x_j dy = dy sum w x_j is taken from the row's sums of term 0 (1).
-    alignas(64) float window_row[kEntries][kLanes] = {};
-    alignas(64) double total[kEntries][kLanes] = {};
+    // sides (at kPairs + 3 j + c), per bandwidth and lane: a window row's sums in float (bandwidth
+    // b's at b * kEntries), their total in double. The entries with term 2 (dy) are not summed per
+    // row (they stay 0 there): dy is constant along a window row, so sum w x_j dy = dy sum w x_j
+    // is taken from the row's sums of term 0 (1).
+    alignas(64) float window_row[B * kEntries][kLanes] = {};
+    alignas(64) double total[B][kEntries][kLanes] = {};
     auto pair = [](int j, int k) { return j * (j + 1) / 2 + k; };  // j >= k
     for (int dy = -r; dy <= r; ++dy) {
         const WindowRow row = window_row_of(work, features, cy, dy);
-        sum_blocks<Terms, V>(row, window_row, std::make_integer_sequence<int, Terms>());
+        sum_blocks<Terms, V, B>(row, window_row, std::make_integer_sequence<int, Terms>());
         const double ddy = dy;
-        for (int e = 0; e < kEntries; ++e)
-            for (int i = 0; i < kLanes; ++i) total[e][i] += double(window_row[e][i]);
-        for (int j = 0; j < Terms; ++j)
-            if (j != 2)
-                for (int i = 0; i < kLanes; ++i) total[j > 2 ? pair(j, 2) : pair(2, j)][i] += ddy * double(window_row[pair(j, 0)][i]);
-        for (int i = 0; i < kLanes; ++i) total[pair(2, 2)][i] += ddy * ddy * double(window_row[pair(0, 0)][i]);
-        for (int c = 0; c < 3; ++c)
-            for (int i = 0; i < kLanes; ++i) total[kPairs + 3 * 2 + c][i] += ddy * double(window_row[kPairs + c][i]);
+        for (int b = 0; b < B; ++b) {
+            const float(*sums)[kLanes] = window_row + b * kEntries;
+            double(*t)[kLanes] = total[b];
+            for (int e = 0; e < kEntries; ++e)
+                for (int i = 0; i < kLanes; ++i) t[e][i] += double(sums[e][i]);
+            for (int j = 0; j < Terms; ++j)
+                if (j != 2)
+                    for (int i = 0; i < kLanes; ++i) t[j > 2 ? pair(j, 2) : pair(2, j)][i] += ddy * double(sums[pair(j, 0)][i]);
+            for (int i = 0; i < kLanes; ++i) t[pair(2, 2)][i] += ddy * ddy * double(sums[pair(0, 0)][i]);
+            for (int c = 0; c < 3; ++c)
+                for (int i = 0; i < kLanes; ++i) t[kPairs + 3 * 2 + c][i] += ddy * double(sums[kPairs + c][i]);
+        }
     }
-    // Each centre's solve.
+    // Each centre's solve, a vector of centres at a time (least_squares_lanes.hpp: the scalar
+    // solve's bits). Lanes past the tile's width have all sums 0, so their fit is 0.
+    using VD = DoubleVector<Isa>;
+    constexpr int D = int(sizeof(VD) / sizeof(double));
     const double precision = (2 * r + 3) * double(FLT_EPSILON);
-    for (int i = 0; i < width; ++i) {
-        double a[Terms * Terms], b[Terms * 3], beta[Terms * 3];
-        for (int j = 0; j < Terms; ++j)
-            for (int k = 0; k <= j; ++k) a[j * Terms + k] = a[k * Terms + j] = total[pair(j, k)][i];
-        for (int e = 0; e < 3 * Terms; ++e) b[e] = total[kPairs + e][i];
-        solve_normal_equations(a, b, Terms, beta, precision);
-        for (int e = 0; e < 3 * Terms; ++e) work.beta[std::size_t(e) * kLanes + std::size_t(i)] = float(beta[e]);
-    }
+    const std::size_t beta_stride = std::size_t(3 * Terms) * kLanes;  // one bandwidth's fits
+    for (int band = 0; band < B; ++band)
+        for (int lane = 0; lane < width; lane += D) {
+            VD a[Terms][Terms], b[Terms][3], beta[Terms][3];
+            for (int j = 0; j < Terms; ++j) {
+                for (int k = 0; k <= j; ++k) a[j][k] = load_doubles<VD>(total[band][pair(j, k)] + lane);
+                for (int c = 0; c < 3; ++c) b[j][c] = load_doubles<VD>(total[band][kPairs + 3 * j + c] + lane);
+            }
+            solve_normal_equations_lanes<Terms>(a, b, beta, precision);
+            float* fit = work.beta.data() + std::size_t(band) * beta_stride;
+            for (int t = 0; t < Terms; ++t)
+                for (int c = 0; c < 3; ++c)
+                    for (int l = 0; l < D; ++l) fit[std::size_t(3 * t + c) * kLanes + std::size_t(lane + l)] = float(beta[t][c][l]);
+        }
     // The predictions: every window pixel gets its centre's fit, weighted. The lanes whose window
     // pixel is outside the image, or past the tile's width, have weight 0 and land in the
-    // buffer's padding or add 0.
+    // buffer's padding or add 0. (Every bandwidth's buffer covers the same rows.)
     for (int dy = -r; dy <= r; ++dy) {
         const int y = cy + dy;
-        if (y < res.area.y0 || y >= res.area.y1) continue;
+        if (y < res[0]->area.y0 || y >= res[0]->area.y1) continue;
         const WindowRow row = window_row_of(work, features, cy, dy);
-        float* const sum[4] = {res.row(0, y), res.row(1, y), res.row(2, y), res.row(3, y)};
-        predict_row<Terms, V>(row, work.beta.data(), work.products.data(), sum);
+        for (int b = 0; b < B; ++b) {
+            float* const sum[4] = {res[b]->row(0, y), res[b]->row(1, y), res[b]->row(2, y), res[b]->row(3, y)};
+            predict_row<Terms, V>(row, row.weight + std::size_t(b) * row.band_stride, work.beta.data() + std::size_t(b) * beta_stride,
+                                  work.products.data(), sum);
+        }
     }
 }
 
 // The loops, inlined into one function per instruction set (filter_isa.hpp).
-template <int Terms>
-void fit_row_baseline(TileWork& work, int cy, TileResult& res) {
-    fit_row<Terms, FilterIsa::Baseline>(work, cy, res);
+template <int Terms, int B>
+void fit_row_baseline(TileWork& work, int cy, TileResult* const* res) {
+    fit_row<Terms, FilterIsa::Baseline, B>(work, cy, res);
 }
 
-template <int Terms>
-[[gnu::target("avx2")]] void fit_row_avx2(TileWork& work, int cy, TileResult& res) {
-    fit_row<Terms, FilterIsa::Avx2>(work, cy, res);
+template <int Terms, int B>
+[[gnu::target("avx2")]] void fit_row_avx2(TileWork& work, int cy, TileResult* const* res) {
+    fit_row<Terms, FilterIsa::Avx2, B>(work, cy, res);
 }
 
-template <int Terms>
-[[gnu::target("avx512f")]] void fit_row_avx512(TileWork& work, int cy, TileResult& res) {
-    fit_row<Terms, FilterIsa::Avx512>(work, cy, res);
+template <int Terms, int B>
+[[gnu::target("avx512f")]] void fit_row_avx512(TileWork& work, int cy, TileResult* const* res) {
+    fit_row<Terms, FilterIsa::Avx512, B>(work, cy, res);
 }
 
-using FitRowFn = void (*)(TileWork&, int, TileResult&);
+using FitRowFn = void (*)(TileWork&, int, TileResult* const*);
 
-template <int... T>
+// Bandwidths fitted at once by one call: two (the first pass's candidates) share each window row's
+// loads of terms and colours.
+inline constexpr int kMaxBandsAtOnce = 2;
+
+template <int B, int... T>
 constexpr std::array<FitRowFn, sizeof...(T)> fit_table(std::integer_sequence<int, T...>, FilterIsa isa) {
-    if (isa == FilterIsa::Avx512) return {&fit_row_avx512<T + 3>...};
-    if (isa == FilterIsa::Avx2) return {&fit_row_avx2<T + 3>...};
-    return {&fit_row_baseline<T + 3>...};
+    if (isa == FilterIsa::Avx512) return {&fit_row_avx512<T + 3, B>...};
+    if (isa == FilterIsa::Avx2) return {&fit_row_avx2<T + 3, B>...};
+    return {&fit_row_baseline<T + 3, B>...};
 }
 
-// fit_row for every number of terms from 3 (the offset terms alone) up, at index terms - 3.
-constexpr auto kFitsBaseline = fit_table(std::make_integer_sequence<int, kMaxRegressionTerms - 2>(), FilterIsa::Baseline);
-constexpr auto kFitsAvx2 = fit_table(std::make_integer_sequence<int, kMaxRegressionTerms - 2>(), FilterIsa::Avx2);
-constexpr auto kFitsAvx512 = fit_table(std::make_integer_sequence<int, kMaxRegressionTerms - 2>(), FilterIsa::Avx512);
+// fit_row for every number of terms from 3 (the offset terms alone) up, at index terms - 3, for
+// one bandwidth ([0]) and two ([1]).
+template <int B>
+constexpr auto fits_of(FilterIsa isa) {
+    return fit_table<B>(std::make_integer_sequence<int, kMaxRegressionTerms - 2>(), isa);
+}
+constexpr std::array<decltype(fits_of<1>(FilterIsa::Baseline)), kMaxBandsAtOnce> kFitsBaseline{fits_of<1>(FilterIsa::Baseline),
+                                                                                                fits_of<2>(FilterIsa::Baseline)};
+constexpr std::array<decltype(fits_of<1>(FilterIsa::Avx2)), kMaxBandsAtOnce> kFitsAvx2{fits_of<1>(FilterIsa::Avx2), fits_of<2>(FilterIsa::Avx2)};
+constexpr std::array<decltype(fits_of<1>(FilterIsa::Avx512)), kMaxBandsAtOnce> kFitsAvx512{fits_of<1>(FilterIsa::Avx512),
+                                                                                            fits_of<2>(FilterIsa::Avx512)};
 
-// The weights exp(-d / k^2) of a tile's distances.
-[[gnu::always_inline]] inline void weights_of(const std::vector<float>& distance, float scale, std::vector<float>& weight) {
-    for (std::size_t i = 0; i < weight.size(); ++i) weight[i] = exp_weight(distance[i] * scale);
+// The weights exp(-d / k^2) of n distances.
+[[gnu::always_inline]] inline void weights_of(const float* distance, std::size_t n, float scale, float* weight) {
+    for (std::size_t i = 0; i < n; ++i) weight[i] = exp_weight(distance[i] * scale);
 }
 
-void weights_baseline(const std::vector<float>& distance, float scale, std::vector<float>& weight) { weights_of(distance, scale, weight); }
+void weights_baseline(const float* distance, std::size_t n, float scale, float* weight) { weights_of(distance, n, scale, weight); }
 
-[[gnu::target("avx2")]] void weights_avx2(const std::vector<float>& distance, float scale, std::vector<float>& weight) {
-    weights_of(distance, scale, weight);
+[[gnu::target("avx2")]] void weights_avx2(const float* distance, std::size_t n, float scale, float* weight) {
+    weights_of(distance, n, scale, weight);
 }
 
-[[gnu::target("avx512f")]] void weights_avx512(const std::vector<float>& distance, float scale, std::vector<float>& weight) {
-    weights_of(distance, scale, weight);
+[[gnu::target("avx512f")]] void weights_avx512(const float* distance, std::size_t n, float scale, float* weight) {
+    weights_of(distance, n, scale, weight);
 }
 
 }  // namespace
@@ -310,41 +362,39 @@ std::vector<Planes> collaborative_regression(const Planes& image, const Planes& 
     // Each thread's working buffers, reused from tile to tile (each tile overwrites what it reads).
     struct Buffers {
         TileWork work;
-        std::vector<float> distance, dist;
+        std::vector<float> distance;
         PatchScratch scratch;
     };
     tbb::enumerable_thread_specific<Buffers> thread_buffers;
     for_each_tile(tiles, [&](std::size_t index, const Rect& tile) {
-        const std::size_t n = std::size_t(tile.width()) * std::size_t(tile.height());
         Buffers& buffers = thread_buffers.local();
         TileWork& work = buffers.work;
         std::vector<float>& distance = buffers.distance;
         work.tile = tile;
         work.r = r;
         work.stride = kLanes + 2 * r;
-        // distance[offset][row][lane]: the largest channel distance decides (a window pixel must
+        // distance[row][offset][lane]: the largest channel distance decides (a window pixel must
         // resemble the centre in every channel); infinite where the window pixel is outside the
-        // image, or the lane or row outside the tile (weight 0).
-        const std::size_t offset_stride = std::size_t(kTileSize) * kLanes, weights_size = std::size_t(side) * std::size_t(side) * offset_stride;
+        // image, or the lane or row outside the tile (weight 0). A row of centres' distances are
+        // contiguous, so its weights are taken into a buffer of 46 KB that stays in the core's L1
+        // while the row's windows read it: laid out [offset][row][lane], a window row's 19 offsets
+        // were 4 KB apart, so they fell in the same L1 set, more of them than its ways, and every
+        // reload missed.
+        const std::size_t offsets = std::size_t(side) * std::size_t(side), row_stride = offsets * kLanes;
         constexpr float kFar = std::numeric_limits<float>::infinity();
-        distance.resize(weights_size);
+        distance.resize(std::size_t(kTileSize) * row_stride);
         for (int dy = -r, o = 0; dy <= r; ++dy)
             for (int dx = -r; dx <= r; ++dx, ++o) {
-                const Rect out = patch_distances(guide, guide_variance, distance_params, tile, dx, dy, buffers.scratch, buffers.dist, isa);
-                const std::vector<float>& dist = buffers.dist;
+                float* const at = distance.data() + std::size_t(o) * kLanes;  // row 0 of offset o
+                const Rect out = largest_patch_distances(guide, guide_variance, distance_params, tile, dx, dy, buffers.scratch, at, row_stride, isa);
                 for (int y = tile.y0; y < tile.y0 + kTileSize; ++y) {
-                    float* to = distance.data() + std::size_t(o) * offset_stride + std::size_t(y - tile.y0) * kLanes;
+                    float* to = at + std::size_t(y - tile.y0) * row_stride;
                     if (out.empty() || y < out.y0 || y >= out.y1) {
                         std::fill(to, to + kLanes, kFar);
                         continue;
                     }
                     std::fill(to, to + (out.x0 - tile.x0), kFar);
                     std::fill(to + (out.x1 - tile.x0), to + kLanes, kFar);
-                    to += out.x0 - tile.x0;
-                    const std::size_t from = std::size_t(y - tile.y0) * std::size_t(tile.width()) + std::size_t(out.x0 - tile.x0);
-                    for (int i = 0; i < out.width(); ++i) to[i] = dist[from + std::size_t(i)];
-                    for (int c = 1; c < guide.channels; ++c)
-                        for (int i = 0; i < out.width(); ++i) to[i] = std::max(to[i], dist[std::size_t(c) * n + from + std::size_t(i)]);
                 }
             }
         // The features, then the colour, over the tile grown by R (zero outside the image).
@@ -357,22 +407,32 @@ std::vector<Planes> collaborative_regression(const Planes& image, const Planes& 
                 for (int x = std::max(tile.x0 - r, 0); x < std::min(tile.x0 + kLanes + r, w); ++x) dst[x - tile.x0 + r] = src[std::size_t(y) * std::size_t(w) + std::size_t(x)];
             }
         }
-        work.weight.resize(weights_size);
+        work.weight.resize(kMaxBandsAtOnce * row_stride);
+        work.band_stride = row_stride;
         work.terms.resize(std::size_t(features.channels) * std::size_t(side) * kLanes);
         work.products.assign(4 * std::size_t(side) * std::size_t(kLanes + 4 * r), 0.0f);
-        for (std::size_t b = 0; b < bandwidths.size(); ++b) {
-            const float scale = 1.0f / (bandwidths[b] * bandwidths[b]);
-            (isa == FilterIsa::Avx512 ? weights_avx512 : isa == FilterIsa::Avx2 ? weights_avx2 : weights_baseline)(distance, scale, work.weight);
-            work.beta.assign(std::size_t(3 * terms) * kLanes, 0.0f);
-            TileResult& res = results[b][index];
-            res.area = {tile.x0 - r, std::max(tile.y0 - r, 0), tile.x0 + kLanes + r, std::min(tile.y1 + r, h)};
-            res.stride = res.area.width();
-            const std::size_t buffer = std::size_t(res.stride) * std::size_t(res.area.height());
-            res.sum.assign(3 * buffer, 0.0f);
-            res.weights.assign(buffer, 0.0f);
-            const auto& fits = isa == FilterIsa::Avx512 ? kFitsAvx512 : isa == FilterIsa::Avx2 ? kFitsAvx2 : kFitsBaseline;
-            const FitRowFn fit = fits[std::size_t(terms - 3)];
-            for (int cy = tile.y0; cy < tile.y1; ++cy) fit(work, cy, res);
+        work.beta.assign(kMaxBandsAtOnce * std::size_t(3 * terms) * kLanes, 0.0f);
+        const auto weights = isa == FilterIsa::Avx512 ? weights_avx512 : isa == FilterIsa::Avx2 ? weights_avx2 : weights_baseline;
+        const auto& fits = isa == FilterIsa::Avx512 ? kFitsAvx512 : isa == FilterIsa::Avx2 ? kFitsAvx2 : kFitsBaseline;
+        for (std::size_t b0 = 0; b0 < bandwidths.size(); b0 += kMaxBandsAtOnce) {
+            const int bands = int(std::min<std::size_t>(kMaxBandsAtOnce, bandwidths.size() - b0));
+            TileResult* res[kMaxBandsAtOnce] = {};
+            float scale[kMaxBandsAtOnce] = {};
+            for (int b = 0; b < bands; ++b) {
+                scale[b] = 1.0f / (bandwidths[b0 + b] * bandwidths[b0 + b]);
+                res[b] = &results[b0 + b][index];
+                res[b]->area = {tile.x0 - r, std::max(tile.y0 - r, 0), tile.x0 + kLanes + r, std::min(tile.y1 + r, h)};
+                res[b]->stride = res[b]->area.width();
+                const std::size_t buffer = std::size_t(res[b]->stride) * std::size_t(res[b]->area.height());
+                res[b]->sum.assign(3 * buffer, 0.0f);
+                res[b]->weights.assign(buffer, 0.0f);
+            }
+            const FitRowFn fit = fits[std::size_t(bands - 1)][std::size_t(terms - 3)];
+            for (int cy = tile.y0; cy < tile.y1; ++cy) {
+                for (int b = 0; b < bands; ++b)
+                    weights(distance.data() + std::size_t(cy - tile.y0) * row_stride, row_stride, scale[b], work.weight.data() + std::size_t(b) * row_stride);
+                fit(work, cy, res);
+            }
         }
     });
     // The tiles' buffers added into the image in tile order, in parallel over bands of rows: a band

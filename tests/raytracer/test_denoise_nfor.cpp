@@ -4,16 +4,19 @@
 // regression's solve survives the singular windows every flat wall gives it.
 #include <catch2/catch.hpp>
 
+#include <array>
 #include <cfloat>
 #include <cmath>
 #include <cstring>
 #include <random>
+#include <vector>
 
 #include <tbb/task_arena.h>
 
 #include "denoise_test_images.hpp"
 #include "raytracer/denoise/exp_weight.hpp"
 #include "raytracer/denoise/least_squares.hpp"
+#include "raytracer/denoise/least_squares_lanes.hpp"
 #include "raytracer/denoise/nfor.hpp"
 #include "raytracer/input_error.hpp"
 
@@ -154,6 +157,69 @@ TEST_CASE("nfor: the window solve gives a constant feature coefficient 0 and sti
         // The two equal columns share the slope; which one carries it is the pivot's choice.
         CHECK(beta[1 * 3 + c] + beta[3 * 3 + c] == Approx(3.0 * (c + 1)));
     }
+}
+
+TEST_CASE("nfor: the window solve a vector of windows at a time gives each window the scalar solve's bits", "[denoise]") {
+    // 64 windows of 10 terms (NFOR's 3 + 7 features), 2 to a vector (the baseline ISA's; wider
+    // vectors run the same lane operations, and the ISAs' NFOR bits are compared above): full
+    // rank, with a column 0 (a flat wall's feature), with two equal columns (the pivot search
+    // ties, at the first step or after others), with a column 1e-5 times another's plus a little
+    // (stopped by the tolerance partway), of rank 1, and all zero (a lane past the tile's width).
+    constexpr int n = 10, lanes = 2, windows = 64;
+    typedef double Lanes __attribute__((vector_size(lanes * sizeof(double))));
+    std::mt19937 rng(7);
+    std::normal_distribution<double> normal;
+    std::vector<std::array<double, n * n>> as(windows);
+    std::vector<std::array<double, n * 3>> bs(windows);
+    for (int w = 0; w < windows; ++w) {
+        const int kind = w % 6;
+        as[w].fill(0.0);
+        bs[w].fill(0.0);
+        for (int row = 0; row < 40; ++row) {
+            double x[n];
+            for (double& v : x) v = normal(rng);
+            x[0] = 1.0;
+            if (kind == 1) x[4] = 0.0;
+            if (kind == 2) x[7] = x[3];
+            if (kind == 3) x[9] = 1e-5 * x[5] + 1e-9 * normal(rng);
+            if (kind == 4)
+                for (int i = 1; i < n; ++i) x[i] = 0.5 * i;
+            if (kind == 5)
+                for (double& v : x) v = 0.0;
+            const double weight = std::exp(-std::abs(normal(rng)));
+            for (int i = 0; i < n; ++i) {
+                for (int j = 0; j <= i; ++j) as[w][i * n + j] += weight * x[i] * x[j];
+                for (int c = 0; c < 3; ++c) bs[w][i * 3 + c] += weight * x[i] * (c + 1.0 + normal(rng));
+            }
+        }
+        for (int i = 0; i < n; ++i)
+            for (int j = 0; j < i; ++j) as[w][j * n + i] = as[w][i * n + j];  // symmetric, as the regression's
+    }
+    const double precision = 21 * double(FLT_EPSILON);  // the regression's
+    int compared = 0;
+    for (int v = 0; v < windows / lanes; ++v) {
+        Lanes a[n][n], b[n][3], beta[n][3];
+        for (int i = 0; i < n; ++i)
+            for (int l = 0; l < lanes; ++l) {
+                for (int j = 0; j <= i; ++j) a[i][j][l] = as[v * lanes + l][i * n + j];
+                for (int c = 0; c < 3; ++c) b[i][c][l] = bs[v * lanes + l][i * 3 + c];
+            }
+        denoise::solve_normal_equations_lanes<n>(a, b, beta, precision);
+        for (int l = 0; l < lanes; ++l) {
+            std::array<double, n * n> a1 = as[v * lanes + l];
+            std::array<double, n * 3> b1 = bs[v * lanes + l];
+            double beta1[n * 3];
+            denoise::solve_normal_equations(a1.data(), b1.data(), n, beta1, precision);
+            for (int t = 0; t < n; ++t)
+                for (int c = 0; c < 3; ++c) {
+                    INFO("window " << v * lanes + l << ", term " << t << ", colour " << c);
+                    const double lane_value = beta[t][c][l];
+                    CHECK(std::memcmp(&lane_value, &beta1[t * 3 + c], sizeof(double)) == 0);
+                    ++compared;
+                }
+        }
+    }
+    CHECK(compared == windows * n * 3);
 }
 
 TEST_CASE("nfor input: a missing channel and a NaN feature are named", "[denoise]") {
