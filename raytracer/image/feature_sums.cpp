@@ -45,6 +45,20 @@ std::int64_t position_fixed(float v) {
 // x^2 of a bounded feature's |x| <= 2^32: up to 2^64, one 64 x 64 -> 128-bit product.
 SumUInt bounded_square(std::int64_t x) { return static_cast<SumUInt>(static_cast<SumInt>(x) * x); }
 
+// |x| of an int64 (as unsigned, so that INT64_MIN's is right too).
+std::uint64_t magnitude64(std::int64_t x) {
+    return x < 0 ? std::uint64_t{0} - static_cast<std::uint64_t>(x) : static_cast<std::uint64_t>(x);
+}
+
+// The lanes of a pair of int64 (SSE2: the low one moves to a register directly, the high one after
+// an unpack), and a pair added to two consecutive int64 sums.
+std::int64_t low_lane(__m128i v) { return _mm_cvtsi128_si64(v); }
+std::int64_t high_lane(__m128i v) { return _mm_cvtsi128_si64(_mm_unpackhi_epi64(v, v)); }
+void add_pair(std::int64_t* sums, __m128i v) {
+    auto* p = reinterpret_cast<__m128i*>(sums);
+    _mm_storeu_si128(p, _mm_add_epi64(_mm_loadu_si128(p), v));
+}
+
 // The mean of `n` samples whose sums on the 2^-32 grid are s[3]: as mean_of (partial_sum.hpp),
 // one rounding to double, an exact scale, a division and the cast to float.
 template <class Int>
@@ -90,18 +104,22 @@ bool plain_color(const float* color) {
 
 void add_feature_sample(FeatureSums& s, std::int64_t sample, const FeatureSample& fs) {
     // Straight into `s`, channel by channel: a pixel's sums are in cache while its pending samples
-    // are added (a batch of them in locals measured slower: the locals spill).
+    // are added (a batch of them in locals measured slower: the locals spill). The converted
+    // features stay in registers (lanes of __m128i): storing them to a local array and reading
+    // them back as other pairs, as this code did, stalled on store-to-load forwarding (a 16-byte
+    // load across two 16-byte stores), the largest single cost of this function in its profile.
     const int h = static_cast<int>(sample & 1);
     ++s.count[h];
     const float* color = glm::value_ptr(fs.color);
-    // Nearly every sample: to_fixed without its cases. (add_square's carry branch measured faster
-    // than a branch-free chain of _addcarry_u64 through memory on this machine's AMD EPYC: 16-19
-    // against 33-37 ns a sample, in a loop of 64 samples a pixel.)
+    // Nearly every sample: to_fixed without its cases, a value below 2^63 whose square takes
+    // add_small_square. (add_small_square's carry branch measured faster than a branch-free chain
+    // of _addcarry_u64 through memory on this machine's AMD EPYC: 16-19 against 33-37 ns a
+    // sample, in a loop of 64 samples a pixel.)
     if (plain_color(color)) {
         for (int c = 0; c < 3; ++c) {
             const auto x = static_cast<std::int64_t>(static_cast<double>(color[c]) * 0x1p56);
             s.color[h].rgb[c] += x;
-            add_square(s.color_square[c], x);  // below 2^63: its 64-bit path
+            add_small_square(s.color_square[c], magnitude64(x));
         }
     } else {
         for (int c = 0; c < 3; ++c) {
@@ -111,36 +129,44 @@ void add_feature_sample(FeatureSums& s, std::int64_t sample, const FeatureSample
             add_square(s.color_square[c], x);
         }
     }
-    // Albedo then normal, six floats in a row (SampleFeatures), as three pairs of doubles.
+    // Albedo then normal, six floats in a row (SampleFeatures), as three pairs of doubles:
+    // (a.x, a.y), (a.z, n.x), (n.y, n.z).
     static_assert(offsetof(SampleFeatures, normal) == offsetof(SampleFeatures, albedo) + 3 * sizeof(float));
     const float* bounded = glm::value_ptr(fs.features.albedo);
     const __m128 lo = _mm_loadu_ps(bounded), hi = _mm_loadu_ps(bounded + 2);  // a.xyz n.x; a.z n.xyz
     const __m128d unit = _mm_set1_pd(1.0);
-    alignas(16) std::int64_t q[6];
-    _mm_store_si128(reinterpret_cast<__m128i*>(q), fixed_pair(_mm_cvtps_pd(lo), unit));
-    _mm_store_si128(reinterpret_cast<__m128i*>(q + 2), fixed_pair(_mm_cvtps_pd(_mm_movehl_ps(lo, lo)), unit));
-    _mm_store_si128(reinterpret_cast<__m128i*>(q + 4), fixed_pair(_mm_cvtps_pd(_mm_movehl_ps(hi, hi)), unit));
-    for (int c = 0; c < 3; ++c) {
-        s.albedo[h].v[c] += q[c];
-        s.normal[h].v[c] += q[3 + c];
-    }
-    for (int k = 0; k < 6; ++k) s.bounded_square[k] += bounded_square(q[k]);
+    const __m128i q0 = fixed_pair(_mm_cvtps_pd(lo), unit);
+    const __m128i q1 = fixed_pair(_mm_cvtps_pd(_mm_movehl_ps(lo, lo)), unit);
+    const __m128i q2 = fixed_pair(_mm_cvtps_pd(_mm_movehl_ps(hi, hi)), unit);
+    static_assert(sizeof(BoundedSum) == 3 * sizeof(std::int64_t));
+    add_pair(s.albedo[h].v, q0);
+    s.albedo[h].v[2] += low_lane(q1);
+    s.normal[h].v[0] += high_lane(q1);
+    add_pair(s.normal[h].v + 1, q2);
+    s.bounded_square[0] += bounded_square(low_lane(q0));
+    s.bounded_square[1] += bounded_square(high_lane(q0));
+    s.bounded_square[2] += bounded_square(low_lane(q1));
+    s.bounded_square[3] += bounded_square(high_lane(q1));
+    s.bounded_square[4] += bounded_square(low_lane(q2));
+    s.bounded_square[5] += bounded_square(high_lane(q2));
     // Position: below 2^19 scene units (nearly every hit) the pairs' path, else one by one.
     const float* position = glm::value_ptr(fs.features.position);
-    std::int64_t p[3];
     const __m128 pos = _mm_setr_ps(position[0], position[1], position[2], 0.0f);
     const __m128 magnitude = _mm_andnot_ps(_mm_set1_ps(-0.0f), pos);
+    __m128i xy, z;
     if (_mm_movemask_ps(_mm_cmplt_ps(magnitude, _mm_set1_ps(0x1p19f))) == 0xf) {
         const __m128d limit = _mm_set1_pd(static_cast<double>(kFeaturePositionLimit));
-        alignas(16) std::int64_t t[4];
-        _mm_store_si128(reinterpret_cast<__m128i*>(t), fixed_pair(_mm_cvtps_pd(pos), limit));
-        _mm_store_si128(reinterpret_cast<__m128i*>(t + 2), fixed_pair(_mm_cvtps_pd(_mm_movehl_ps(pos, pos)), limit));
-        for (int c = 0; c < 3; ++c) p[c] = t[c];
+        xy = fixed_pair(_mm_cvtps_pd(pos), limit);
+        z = fixed_pair(_mm_cvtps_pd(_mm_movehl_ps(pos, pos)), limit);
     } else {
-        for (int c = 0; c < 3; ++c) p[c] = position_fixed(position[c]);
+        xy = _mm_set_epi64x(position_fixed(position[1]), position_fixed(position[0]));
+        z = _mm_cvtsi64_si128(position_fixed(position[2]));
     }
-    for (int c = 0; c < 3; ++c) s.position[h].rgb[c] += p[c];
-    add_square(s.depth_square, p[2]);  // below 2^62: add_square's 64-bit path
+    const std::int64_t pz = low_lane(z);
+    s.position[h].rgb[0] += low_lane(xy);
+    s.position[h].rgb[1] += high_lane(xy);
+    s.position[h].rgb[2] += pz;
+    add_small_square(s.depth_square, magnitude64(pz));  // below 2^62
 }
 
 FeatureLayers feature_layers(const std::vector<FeatureSums>& sums, int width, int height) {
