@@ -95,6 +95,7 @@ public:
         arena.execute([this] {
             if (opt_.adaptive) run_adaptive();
             else run_passes(opt_.first_sample, opt_.spp, opt_.first_sample);
+            colour_sum_from_features();
         });
     }
 
@@ -269,12 +270,14 @@ private:
     // With AOVs, the pass's colours and features (already in pending_: pending_sample) to the half
     // of its sample index too.
     void accumulate_pass(int sample, bool kept) {
+        const bool in_features = colour_in_features();
         tbb::parallel_for(tbb::blocked_range<std::size_t>(0, sum_.size(), 4096),
                           [&](const tbb::blocked_range<std::size_t>& r) {
                               std::uint64_t clamped = 0;
                               for (std::size_t i = r.begin(); i < r.end(); ++i) {
                                   bool c = false;
-                                  add_sample(sum_[i], pass_[i], c);
+                                  if (in_features) c = beyond_sample_limit(pass_[i]);
+                                  else add_sample(sum_[i], pass_[i], c);
                                   clamped += c ? 1 : 0;
                                   const glm::dvec3 v(pass_[i]);
                                   sum_sq_[i] += v * v;
@@ -288,6 +291,22 @@ private:
         if (feature_sums_.empty()) return;
         pending_passes_.push_back({sample, kept});
         if (pending_passes_.size() == kAovPendingPasses) add_pending_features();
+    }
+
+    // With AOVs, the feature sums hold the colour of every sample as the colour sum takes it (the
+    // same fixed-point values, split by the sample's parity), so outside adaptive sampling (whose
+    // pilot and rounds read and copy sum_ as they go) the colour is converted and added once, there,
+    // and sum_ is their two halves' total, made once all passes are in (colour_sum_from_features):
+    // the same integers, so the same image and parts, for a sample's conversion and addition less.
+    bool colour_in_features() const { return !feature_sums_.empty() && !opt_.adaptive; }
+    void colour_sum_from_features() {
+        if (!colour_in_features()) return;
+        tbb::parallel_for(tbb::blocked_range<std::size_t>(0, sum_.size(), 4096), [&](const tbb::blocked_range<std::size_t>& r) {
+            for (std::size_t i = r.begin(); i < r.end(); ++i) {
+                sum_[i] = feature_sums_[i].color[0];
+                sum_[i] += feature_sums_[i].color[1];
+            }
+        });
     }
 
     // The pending passes' colours and features added to the exact feature sums, each pixel's in
