@@ -316,14 +316,24 @@ private:
     // integers, so the result is the same whenever they are added.
     void add_pending_features() {
         if (pending_passes_.empty()) return;
+        // A pixel's pending samples are one batch for add_feature_samples when their indices are
+        // consecutive, as run_passes' passes are.
+        static_assert(kAovPendingPasses == kFeatureBatch, "a pixel's pending samples are one batch");
+        const std::int64_t first = pending_passes_.front().sample;
+        const int n = static_cast<int>(pending_passes_.size());
+        bool consecutive = true;
+        for (int k = 0; k < n; ++k) consecutive = consecutive && pending_passes_[k].sample == first + k;
         tbb::parallel_for(tbb::blocked_range<std::size_t>(0, feature_sums_.size(), 1024),
                           [&](const tbb::blocked_range<std::size_t>& r) {
-                              for (std::size_t i = r.begin(); i < r.end(); ++i)
-                                  for (std::size_t k = 0; k < pending_passes_.size(); ++k) {
-                                      const FeatureSample& fs = pending_[i * kAovPendingPasses + k];
-                                      add_feature_sample(feature_sums_[i], pending_passes_[k].sample, fs);
-                                      if (pending_passes_[k].kept) add_feature_sample(kept_features_[i], pending_passes_[k].sample, fs);
+                              for (std::size_t i = r.begin(); i < r.end(); ++i) {
+                                  const FeatureSample* fs = &pending_[i * kAovPendingPasses];
+                                  if (consecutive) add_feature_samples(feature_sums_[i], first, fs, n);
+                                  for (int k = 0; k < n; ++k) {
+                                      const PendingPass& p = pending_passes_[k];
+                                      if (!consecutive) add_feature_sample(feature_sums_[i], p.sample, fs[k]);
+                                      if (p.kept) add_feature_sample(kept_features_[i], p.sample, fs[k]);
                                   }
+                              }
                           });
         pending_passes_.clear();
     }
