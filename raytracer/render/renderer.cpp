@@ -268,7 +268,8 @@ private:
     // into sample ranges is the same integer, and so the same image.
     // `kept`: also to kept_sum_ (an adaptive part's own passes of the pilot, run_adaptive).
     // With AOVs, the pass's colours and features (already in pending_: pending_sample) to the half
-    // of its sample index too.
+    // of its sample index too, and then, but under adaptive sampling, the colour only there
+    // (colour_in_features).
     void accumulate_pass(int sample, bool kept) {
         const bool in_features = colour_in_features();
         tbb::parallel_for(tbb::blocked_range<std::size_t>(0, sum_.size(), 4096),
