@@ -9,7 +9,8 @@ rounds too (before and after a change, in one sitting). Prints a markdown table.
 Identical runs on a shared virtual machine spread by +-15 %, so --perf N also profiles N rounds
 of each binary's plain and `--aovs` renders (`perf record`, 2000 Hz, pooled) and estimates on / off
 from the profiles: the samples of the whole run per sample of the path tracing itself (the
-symbols in CORE, the same work with and without features), with `--aovs` over without. The
+symbols in CORE, the same work with and without features), with `--aovs` over without (and the
+same with the 12 symbols CORE held before, OLD_CORE). The
 machine's load slows both alike, so the ratio holds better than the timings; the symbols whose
 samples grew most are listed with their share of the `--aovs` profile.
 Usage: /usr/bin/python3 tools/aov_cost.py BINARY [SCENE ...] [--baseline MAIN_BINARY] [--spp 16] [--size 320x180]
@@ -25,9 +26,25 @@ import tempfile
 
 from bench_path_cpu import cpu_seconds  # tools/ is this script's folder, first on sys.path
 
-# The path tracer's own work, rendered alike with and without features.
+# The path tracer's own work, rendered alike with and without features: the symbols of plain
+# cornell-box and classroom profiles above 0.2 % (2026-12-06) but scene loading, the tile loop
+# (PassRenderer::run_tiles, where render_tile and sample_pixel are inlined with the features'
+# recording and pending writes) and accumulate_pass (whose colour sum the features take over:
+# renderer.cpp). The radiance function has FeatureRecord::at_vertex inlined (a flag's test a
+# vertex; features_at, which does the work, is out of line and not counted). The list before held
+# 12 symbols: 68 % of a plain cornell-box profile (64 spp) and 34 % of classroom's (8 spp, loading
+# included); this one 91 % and 86 %, so the ratio rests on more samples (docs/aovs.md, Cost).
 CORE = ["PathIntegrator::radiance", "collision::intersect", "PixelSampler::get2d", "sample_bsdf", "traverse_nearest",
-        "traverse_any", "LightSet::sample", "to_object_space", "spawn_ray_to", "offset_origin", "top_intersect", "top_any"]
+        "traverse_any", "LightSet::sample", "to_object_space", "spawn_ray_to", "offset_origin", "top_intersect", "top_any",
+        "start_camera_sample", "PathIntegrator::shadow_ray", "CameraModel::generate", "sincosf", "surface_hit_to_world",
+        "make_shading_context", "eval_bsdf", "object_intersect", "sample_home", "intersect_candidate", "affine_magnitude",
+        "apply_affine", "IndirectClamp::limited", "nextafterf", "PixelFilter::sample", "emitted_radiance_at",
+        "BvhAccel::intersect", "mesh_intersect", "mesh_occluded", "mesh_hit_to_world", "MeshInstanceShape::mesh_uv",
+        "coat_albedo", "coated_terms", "eval_coated_diffuse", "sample_coated_diffuse", "ggx_reflection",
+        "fresnel_conductor", "eval_texture", "image_texture", "EnvironmentLight::", "background_radiance",
+        "equal_area_sphere_to_square"]
+# The list this script had before 2026-12-06: its figure is printed beside (the "12-symbol" one).
+OLD_CORE = CORE[:12]
 
 
 def profile(files):
@@ -48,8 +65,8 @@ def profile(files):
     return count
 
 
-def core(count):
-    return sum(n for s, n in count.items() if any(c in s for c in CORE))
+def core(count, symbols=None):
+    return sum(n for s, n in count.items() if any(c in s for c in (symbols or CORE)))
 
 
 def main():
@@ -98,11 +115,11 @@ def main():
             row = "| %s | %s | %.2f | %.2f | %.3f |" % (name, b, best[b, False], best[b, True], best[b, True] / best[b, False])
             if a.perf:
                 off, on = profile(profiles[b, False]), profile(profiles[b, True])
-                ratio = (sum(on.values()) / core(on)) / (sum(off.values()) / core(off))
+                ratio, old = ((sum(on.values()) / core(on, c)) / (sum(off.values()) / core(off, c)) for c in (CORE, OLD_CORE))
                 scale = core(on) / core(off)
                 grown = sorted(((on[s] - off[s] * scale, s) for s in set(on) | set(off)), reverse=True)[:6]
-                row += " %.3f (%s) |" % (ratio, ", ".join("%s %.1f %%" % (s[:40], 100 * g / sum(on.values()))
-                                                          for g, s in grown))
+                row += " %.3f (12-symbol core %.3f; %s) |" % (ratio, old, ", ".join("%s %.1f %%" % (s[:40], 100 * g / sum(on.values()))
+                                                                                    for g, s in grown))
             print(row)
         sys.stdout.flush()
 

@@ -45,6 +45,16 @@ std::int64_t position_fixed(float v) {
 // x^2 of a bounded feature's |x| <= 2^32: up to 2^64, one 64 x 64 -> 128-bit product.
 SumUInt bounded_square(std::int64_t x) { return static_cast<SumUInt>(static_cast<SumInt>(x) * x); }
 
+// |x| of an int64 (as unsigned, so that INT64_MIN's is right too).
+std::uint64_t magnitude64(std::int64_t x) {
+    return x < 0 ? std::uint64_t{0} - static_cast<std::uint64_t>(x) : static_cast<std::uint64_t>(x);
+}
+
+// The lanes of a pair of int64 (SSE2: the low one moves to a register directly, the high one after
+// an unpack).
+std::int64_t low_lane(__m128i v) { return _mm_cvtsi128_si64(v); }
+std::int64_t high_lane(__m128i v) { return _mm_cvtsi128_si64(_mm_unpackhi_epi64(v, v)); }
+
 // The mean of `n` samples whose sums on the 2^-32 grid are s[3]: as mean_of (partial_sum.hpp),
 // one rounding to double, an exact scale, a division and the cast to float.
 template <class Int>
@@ -86,61 +96,122 @@ bool plain_color(const float* color) {
     return _mm_movemask_ps(_mm_or_ps(in_range, _mm_cmpeq_ps(m, _mm_setzero_ps()))) == 0xf;
 }
 
-}  // namespace
+// A sample's values in fixed point, as the sums take them: the colour on the 2^-56 grid when
+// plain_color (else left unset: the caller takes to_fixed), the features on the 2^-32 grid.
+struct FixedSample {
+    std::int64_t color[3];
+    std::int64_t bounded[6];  // albedo R, G, B, normal X, Y, Z
+    std::int64_t position[3];
+};
 
-void add_feature_sample(FeatureSums& s, std::int64_t sample, const FeatureSample& fs) {
-    // Straight into `s`, channel by channel: a pixel's sums are in cache while its pending samples
-    // are added (a batch of them in locals measured slower: the locals spill).
-    const int h = static_cast<int>(sample & 1);
-    ++s.count[h];
+// The conversions, SSE2 pairs; true when the colour was plain. Each lane goes to the struct as one
+// int64 (movq), and is read back as that int64: storing 16-byte pairs and reading other pairs,
+// as this code did once, stalled on store-to-load forwarding (a 16-byte load across two stores),
+// the largest single cost of add_feature_sample in its profile.
+[[gnu::always_inline]] inline bool fixed_sample(const FeatureSample& fs, FixedSample& v) {
     const float* color = glm::value_ptr(fs.color);
-    // Nearly every sample: to_fixed without its cases. (add_square's carry branch measured faster
-    // than a branch-free chain of _addcarry_u64 through memory on this machine's AMD EPYC: 16-19
-    // against 33-37 ns a sample, in a loop of 64 samples a pixel.)
-    if (plain_color(color)) {
-        for (int c = 0; c < 3; ++c) {
-            const auto x = static_cast<std::int64_t>(static_cast<double>(color[c]) * 0x1p56);
-            s.color[h].rgb[c] += x;
-            add_square(s.color_square[c], x);  // below 2^63: its 64-bit path
-        }
-    } else {
-        for (int c = 0; c < 3; ++c) {
-            bool clamped = false;  // counted where the same value joins the pixel's colour sum
-            const SumInt x = to_fixed(color[c], clamped);
-            s.color[h].rgb[c] += x;
-            add_square(s.color_square[c], x);
-        }
-    }
-    // Albedo then normal, six floats in a row (SampleFeatures), as three pairs of doubles.
+    // Nearly every sample: to_fixed without its cases, a value below 2^63.
+    const bool plain = plain_color(color);
+    if (plain)
+        for (int c = 0; c < 3; ++c) v.color[c] = static_cast<std::int64_t>(static_cast<double>(color[c]) * 0x1p56);
+    // Albedo then normal, six floats in a row (SampleFeatures), as three pairs of doubles:
+    // (a.x, a.y), (a.z, n.x), (n.y, n.z).
     static_assert(offsetof(SampleFeatures, normal) == offsetof(SampleFeatures, albedo) + 3 * sizeof(float));
     const float* bounded = glm::value_ptr(fs.features.albedo);
     const __m128 lo = _mm_loadu_ps(bounded), hi = _mm_loadu_ps(bounded + 2);  // a.xyz n.x; a.z n.xyz
     const __m128d unit = _mm_set1_pd(1.0);
-    alignas(16) std::int64_t q[6];
-    _mm_store_si128(reinterpret_cast<__m128i*>(q), fixed_pair(_mm_cvtps_pd(lo), unit));
-    _mm_store_si128(reinterpret_cast<__m128i*>(q + 2), fixed_pair(_mm_cvtps_pd(_mm_movehl_ps(lo, lo)), unit));
-    _mm_store_si128(reinterpret_cast<__m128i*>(q + 4), fixed_pair(_mm_cvtps_pd(_mm_movehl_ps(hi, hi)), unit));
-    for (int c = 0; c < 3; ++c) {
-        s.albedo[h].v[c] += q[c];
-        s.normal[h].v[c] += q[3 + c];
+    const __m128i pairs[3] = {fixed_pair(_mm_cvtps_pd(lo), unit), fixed_pair(_mm_cvtps_pd(_mm_movehl_ps(lo, lo)), unit),
+                              fixed_pair(_mm_cvtps_pd(_mm_movehl_ps(hi, hi)), unit)};
+    for (int k = 0; k < 3; ++k) {
+        v.bounded[2 * k] = low_lane(pairs[k]);
+        v.bounded[2 * k + 1] = high_lane(pairs[k]);
     }
-    for (int k = 0; k < 6; ++k) s.bounded_square[k] += bounded_square(q[k]);
     // Position: below 2^19 scene units (nearly every hit) the pairs' path, else one by one.
     const float* position = glm::value_ptr(fs.features.position);
-    std::int64_t p[3];
     const __m128 pos = _mm_setr_ps(position[0], position[1], position[2], 0.0f);
     const __m128 magnitude = _mm_andnot_ps(_mm_set1_ps(-0.0f), pos);
     if (_mm_movemask_ps(_mm_cmplt_ps(magnitude, _mm_set1_ps(0x1p19f))) == 0xf) {
         const __m128d limit = _mm_set1_pd(static_cast<double>(kFeaturePositionLimit));
-        alignas(16) std::int64_t t[4];
-        _mm_store_si128(reinterpret_cast<__m128i*>(t), fixed_pair(_mm_cvtps_pd(pos), limit));
-        _mm_store_si128(reinterpret_cast<__m128i*>(t + 2), fixed_pair(_mm_cvtps_pd(_mm_movehl_ps(pos, pos)), limit));
-        for (int c = 0; c < 3; ++c) p[c] = t[c];
+        const __m128i xy = fixed_pair(_mm_cvtps_pd(pos), limit);
+        v.position[0] = low_lane(xy);
+        v.position[1] = high_lane(xy);
+        v.position[2] = low_lane(fixed_pair(_mm_cvtps_pd(_mm_movehl_ps(pos, pos)), limit));
     } else {
-        for (int c = 0; c < 3; ++c) p[c] = position_fixed(position[c]);
+        for (int c = 0; c < 3; ++c) v.position[c] = position_fixed(position[c]);
     }
-    for (int c = 0; c < 3; ++c) s.position[h].rgb[c] += p[c];
-    add_square(s.depth_square, p[2]);  // below 2^62: add_square's 64-bit path
+    return plain;
+}
+
+}  // namespace
+
+void add_feature_sample(FeatureSums& s, std::int64_t sample, const FeatureSample& fs) {
+    // Straight into `s`, channel by channel (a whole FeatureSums in locals measured slower: the
+    // locals spill). (add_small_square's carry branch measured faster than a branch-free chain of
+    // _addcarry_u64 through memory on this machine's AMD EPYC: 16-19 against 33-37 ns a sample,
+    // in a loop of 64 samples a pixel.)
+    const int h = static_cast<int>(sample & 1);
+    ++s.count[h];
+    FixedSample v;
+    if (fixed_sample(fs, v)) {
+        for (int c = 0; c < 3; ++c) {
+            s.color[h].rgb[c] += v.color[c];
+            add_small_square(s.color_square[c], magnitude64(v.color[c]));
+        }
+    } else {
+        for (int c = 0; c < 3; ++c) {
+            bool clamped = false;  // counted where the same value joins the pixel's colour sum
+            const SumInt x = to_fixed(fs.color[c], clamped);
+            s.color[h].rgb[c] += x;
+            add_square(s.color_square[c], x);
+        }
+    }
+    for (int c = 0; c < 3; ++c) {
+        s.albedo[h].v[c] += v.bounded[c];
+        s.normal[h].v[c] += v.bounded[3 + c];
+    }
+    for (int k = 0; k < 6; ++k) s.bounded_square[k] += bounded_square(v.bounded[k]);
+    for (int c = 0; c < 3; ++c) s.position[h].rgb[c] += v.position[c];
+    add_small_square(s.depth_square, magnitude64(v.position[2]));  // below 2^62
+}
+
+void add_feature_samples(FeatureSums& s, std::int64_t first, const FeatureSample* samples, int n) {
+    // A full batch of plain colours (nearly every pixel's): each channel's four values summed in
+    // registers, two to each half, and their squares (each below 2^126 for the colour and the
+    // depth, 2^64 for the bounded features, so four fit 128 bits), then one addition to each sum.
+    // Anything else: sample by sample.
+    static_assert(kFeatureBatch == 4, "the halves below take samples 0 and 2, 1 and 3");
+    FixedSample v[kFeatureBatch];
+    bool plain = n == kFeatureBatch;
+    for (int k = 0; k < n && plain; ++k) plain = fixed_sample(samples[k], v[k]);
+    if (!plain) {
+        for (int k = 0; k < n; ++k) add_feature_sample(s, first + k, samples[k]);
+        return;
+    }
+    const int a = static_cast<int>(first & 1), b = 1 - a;  // the halves of samples 0 and 2, 1 and 3
+    s.count[0] += 2;
+    s.count[1] += 2;
+    for (int c = 0; c < 3; ++c) {
+        s.color[a].rgb[c] += static_cast<SumInt>(v[0].color[c]) + v[2].color[c];
+        s.color[b].rgb[c] += static_cast<SumInt>(v[1].color[c]) + v[3].color[c];
+        SumUInt q = 0;
+        for (const FixedSample& x : v) q += static_cast<SumUInt>(magnitude64(x.color[c])) * magnitude64(x.color[c]);
+        add_narrow(s.color_square[c], q);
+    }
+    for (int k = 0; k < 6; ++k) {
+        BoundedSum* halves = k < 3 ? s.albedo : s.normal;
+        halves[a].v[k % 3] += v[0].bounded[k] + v[2].bounded[k];
+        halves[b].v[k % 3] += v[1].bounded[k] + v[3].bounded[k];
+        SumUInt q = 0;
+        for (const FixedSample& x : v) q += bounded_square(x.bounded[k]);
+        s.bounded_square[k] += q;
+    }
+    for (int c = 0; c < 3; ++c) {
+        s.position[a].rgb[c] += static_cast<SumInt>(v[0].position[c]) + v[2].position[c];
+        s.position[b].rgb[c] += static_cast<SumInt>(v[1].position[c]) + v[3].position[c];
+    }
+    SumUInt q = 0;
+    for (const FixedSample& x : v) q += static_cast<SumUInt>(magnitude64(x.position[2])) * magnitude64(x.position[2]);
+    add_narrow(s.depth_square, q);
 }
 
 FeatureLayers feature_layers(const std::vector<FeatureSums>& sums, int width, int height) {

@@ -77,6 +77,12 @@ struct FeatureSample {
 // Adds the camera sample of index `sample` (its parity picks the half).
 void add_feature_sample(FeatureSums& sums, std::int64_t sample, const FeatureSample& fs);
 
+// Adds n <= kFeatureBatch camera samples of consecutive indices first, first + 1, ...: the same
+// sums as add_feature_sample of each, with each sum stored once rather than once a sample (a
+// pixel's pending samples: render/renderer.cpp).
+inline constexpr int kFeatureBatch = 4;
+void add_feature_samples(FeatureSums& sums, std::int64_t first, const FeatureSample* samples, int n);
+
 // The feature images of a render, all width x height, means over each pixel's own samples.
 struct FeatureLayers {
     int width = 0, height = 0;

@@ -58,6 +58,11 @@ inline SumInt to_fixed(float v, bool& clamped) {
     return static_cast<SumInt>(r);
 }
 
+// Whether add_sample clamps a channel of v (and so counts the sample as clamped).
+inline bool beyond_sample_limit(const glm::vec3& v) {
+    return std::fabs(v.x) > kSampleLimit || std::fabs(v.y) > kSampleLimit || std::fabs(v.z) > kSampleLimit;
+}
+
 inline void add_sample(PixelSum& sum, const glm::vec3& v, bool& clamped) {
     clamped = false;
     for (int c = 0; c < 3; ++c) {

@@ -55,16 +55,25 @@ constexpr double square_unit(int bits) { return 1.0 / static_cast<double>(static
 
 inline SumUInt magnitude(SumInt x) { return x < 0 ? static_cast<SumUInt>(0) - static_cast<SumUInt>(x) : static_cast<SumUInt>(x); }
 
+// v, below 2^128, added to q: its carry into the upper limbs taken by a branch (rarely taken).
+inline void add_narrow(SquareSum& q, SumUInt v) {
+    const SumUInt lo = (static_cast<SumUInt>(q.limb[1]) << 64 | q.limb[0]) + v;
+    const bool carry = lo < v;
+    q.limb[0] = static_cast<std::uint64_t>(lo);
+    q.limb[1] = static_cast<std::uint64_t>(lo >> 64);
+    if (carry && ++q.limb[2] == 0) ++q.limb[3];
+}
+
+// m^2 added to q for a magnitude m < 2^64: one 64 x 64 -> 128-bit product. Nearly every sample's
+// case: the feature sums call it for the values they know to be below 2^64, so it is inlined there
+// rather than reached through add_square's test.
+inline void add_small_square(SquareSum& q, std::uint64_t m) { add_narrow(q, static_cast<SumUInt>(m) * m); }
+
 // x^2 added to q, x a fixed-point sample (to_fixed).
 inline void add_square(SquareSum& q, SumInt x) {
     const SumUInt m = magnitude(x);
-    if ((m >> 64) == 0) {  // |x| < 2^64 (a sample below 256): one 64 x 64 -> 128-bit product
-        const SumUInt p = m * m;
-        const SumUInt lo = (static_cast<SumUInt>(q.limb[1]) << 64 | q.limb[0]) + p;
-        const bool carry = lo < p;
-        q.limb[0] = static_cast<std::uint64_t>(lo);
-        q.limb[1] = static_cast<std::uint64_t>(lo >> 64);
-        if (carry && ++q.limb[2] == 0) ++q.limb[3];
+    if ((m >> 64) == 0) {  // |x| < 2^64 (a sample below 256)
+        add_small_square(q, static_cast<std::uint64_t>(m));
         return;
     }
     q += wide_product(m, m);

@@ -95,6 +95,7 @@ public:
         arena.execute([this] {
             if (opt_.adaptive) run_adaptive();
             else run_passes(opt_.first_sample, opt_.spp, opt_.first_sample);
+            colour_sum_from_features();
         });
     }
 
@@ -267,14 +268,17 @@ private:
     // into sample ranges is the same integer, and so the same image.
     // `kept`: also to kept_sum_ (an adaptive part's own passes of the pilot, run_adaptive).
     // With AOVs, the pass's colours and features (already in pending_: pending_sample) to the half
-    // of its sample index too.
+    // of its sample index too, and then, but under adaptive sampling, the colour only there
+    // (colour_in_features).
     void accumulate_pass(int sample, bool kept) {
+        const bool in_features = colour_in_features();
         tbb::parallel_for(tbb::blocked_range<std::size_t>(0, sum_.size(), 4096),
                           [&](const tbb::blocked_range<std::size_t>& r) {
                               std::uint64_t clamped = 0;
                               for (std::size_t i = r.begin(); i < r.end(); ++i) {
                                   bool c = false;
-                                  add_sample(sum_[i], pass_[i], c);
+                                  if (in_features) c = beyond_sample_limit(pass_[i]);
+                                  else add_sample(sum_[i], pass_[i], c);
                                   clamped += c ? 1 : 0;
                                   const glm::dvec3 v(pass_[i]);
                                   sum_sq_[i] += v * v;
@@ -290,6 +294,22 @@ private:
         if (pending_passes_.size() == kAovPendingPasses) add_pending_features();
     }
 
+    // With AOVs, the feature sums hold the colour of every sample as the colour sum takes it (the
+    // same fixed-point values, split by the sample's parity), so outside adaptive sampling (whose
+    // pilot and rounds read and copy sum_ as they go) the colour is converted and added once, there,
+    // and sum_ is their two halves' total, made once all passes are in (colour_sum_from_features):
+    // the same integers, so the same image and parts, for a sample's conversion and addition less.
+    bool colour_in_features() const { return !feature_sums_.empty() && !opt_.adaptive; }
+    void colour_sum_from_features() {
+        if (!colour_in_features()) return;
+        tbb::parallel_for(tbb::blocked_range<std::size_t>(0, sum_.size(), 4096), [&](const tbb::blocked_range<std::size_t>& r) {
+            for (std::size_t i = r.begin(); i < r.end(); ++i) {
+                sum_[i] = feature_sums_[i].color[0];
+                sum_[i] += feature_sums_[i].color[1];
+            }
+        });
+    }
+
     // The pending passes' colours and features added to the exact feature sums, each pixel's in
     // pass order. A pixel's sums (sizeof(FeatureSums) bytes) are streamed through memory once per
     // kAovPendingPasses passes instead of every pass, and its pending samples once: what made
@@ -297,14 +317,24 @@ private:
     // integers, so the result is the same whenever they are added.
     void add_pending_features() {
         if (pending_passes_.empty()) return;
+        // A pixel's pending samples are one batch for add_feature_samples when their indices are
+        // consecutive, as run_passes' passes are.
+        static_assert(kAovPendingPasses == kFeatureBatch, "a pixel's pending samples are one batch");
+        const std::int64_t first = pending_passes_.front().sample;
+        const int n = static_cast<int>(pending_passes_.size());
+        bool consecutive = true;
+        for (int k = 0; k < n; ++k) consecutive = consecutive && pending_passes_[k].sample == first + k;
         tbb::parallel_for(tbb::blocked_range<std::size_t>(0, feature_sums_.size(), 1024),
                           [&](const tbb::blocked_range<std::size_t>& r) {
-                              for (std::size_t i = r.begin(); i < r.end(); ++i)
-                                  for (std::size_t k = 0; k < pending_passes_.size(); ++k) {
-                                      const FeatureSample& fs = pending_[i * kAovPendingPasses + k];
-                                      add_feature_sample(feature_sums_[i], pending_passes_[k].sample, fs);
-                                      if (pending_passes_[k].kept) add_feature_sample(kept_features_[i], pending_passes_[k].sample, fs);
+                              for (std::size_t i = r.begin(); i < r.end(); ++i) {
+                                  const FeatureSample* fs = &pending_[i * kAovPendingPasses];
+                                  if (consecutive) add_feature_samples(feature_sums_[i], first, fs, n);
+                                  for (int k = 0; k < n; ++k) {
+                                      const PendingPass& p = pending_passes_[k];
+                                      if (!consecutive) add_feature_sample(feature_sums_[i], p.sample, fs[k]);
+                                      if (p.kept) add_feature_sample(kept_features_[i], p.sample, fs[k]);
                                   }
+                              }
                           });
         pending_passes_.clear();
     }

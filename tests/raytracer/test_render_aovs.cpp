@@ -208,6 +208,56 @@ TEST_CASE("aovs: the conversions' fast paths give the sums of the plain definiti
     CHECK(mismatched == 0);
 }
 
+TEST_CASE("aovs: a batch of consecutive samples gives the sums of the samples added one by one", "[render][aovs]") {
+    // add_feature_samples sums a full batch of plain colours in registers, two samples to each
+    // half, and takes anything else sample by sample: on sums that already hold samples, for
+    // batches of 1 to 4 starting at even and odd indices, with colours plain and not (a large,
+    // a tiny, a negative value), positions on both conversion paths and values at the clamps.
+    std::mt19937 rng(11);
+    std::uniform_real_distribution<float> u(-1.0f, 1.0f);
+    const auto sample = [&](int kind) {
+        FeatureSample f;
+        f.color = glm::vec3(std::abs(u(rng)) * 3.0f, std::abs(u(rng)), 0.25f);
+        if (kind == 1) f.color.x = 1.0e9f;                         // past 2^7: to_fixed's general case
+        if (kind == 2) f.color.y = 1.0e-12f;                       // below 2^-33: rounded
+        if (kind == 3) f.color.z = -2.5f;                          // a negative lobe of the filter
+        f.features.albedo = glm::vec3(std::abs(u(rng)), 1.0f, 0.0f);  // 1 squares to 2^64
+        f.features.normal = glm::vec3(u(rng), -1.0f, u(rng));
+        f.features.position = glm::vec3(u(rng) * 50.0f, u(rng), kind == 4 ? 3.0e6f : 10.0f + u(rng));  // 3e6: one by one
+        return f;
+    };
+    std::size_t batches = 0, mismatched = 0;
+    for (int n = 1; n <= kFeatureBatch; ++n)
+        for (std::int64_t first : {0, 1, 6, 7})
+            for (int odd_kind = 0; odd_kind <= 4; ++odd_kind) {  // 0: every colour plain
+                FeatureSums one_by_one, batched;
+                for (int k = 0; k < 3; ++k) {  // earlier samples, so carries meet sums that are not zero
+                    const FeatureSample f = sample(0);
+                    add_feature_sample(one_by_one, k, f);
+                    add_feature_sample(batched, k, f);
+                }
+                std::vector<FeatureSample> fs;
+                for (int k = 0; k < n; ++k) fs.push_back(sample(k == n / 2 ? odd_kind : 0));
+                for (int k = 0; k < n; ++k) add_feature_sample(one_by_one, first + k, fs[static_cast<std::size_t>(k)]);
+                add_feature_samples(batched, first, fs.data(), n);
+                ++batches;
+                mismatched += batched == one_by_one ? 0 : 1;
+            }
+    CHECK(batches == 80);
+    CHECK(mismatched == 0);
+    // A batch's squares past 2^128 carry into the upper limbs as one by one: four colours near
+    // 2^7 square to nearly 2^126 each on the 2^-56 grid.
+    FeatureSums one_by_one, batched;
+    std::vector<FeatureSample> big(kFeatureBatch);
+    for (FeatureSample& f : big) f.color = glm::vec3(127.99f, 100.0f, 64.0f);
+    for (int round = 0; round < 3; ++round) {
+        for (int k = 0; k < kFeatureBatch; ++k) add_feature_sample(one_by_one, 4 * round + k, big[static_cast<std::size_t>(k)]);
+        add_feature_samples(batched, 4 * round, big.data(), kFeatureBatch);
+    }
+    CHECK(batched.color_square[0].limb[2] != 0);
+    CHECK(batched == one_by_one);
+}
+
 TEST_CASE("aovs: a checker-textured quad's albedo, normal and depth against the closed form, misses zero", "[render][aovs]") {
     constexpr int size = 32, sub = 8;
     Scene scene = plane_test_scene(size);
