@@ -130,12 +130,16 @@ std::uint64_t nfor_memory_bytes(int width, int height, int feature_channels, int
     const std::uint64_t tile_buffers = tiles * kCandidateK.size() * 4 * grown;
     // Per thread: a regression tile's distances (19^2 offsets x 32^2 centres), the weights of one
     // row of its centres for the two bandwidths fitted together (2 x 19^2 x 32), and its copy of the features and colour over the tile grown by 9 ((m + 3) x 50^2), or an
-    // NL-means tile's sums (2 x channels x 32^2), with the patch scratch, a window row's terms and
-    // predictions and a row's normal equations (below 128 KiB).
+    // NL-means tile's sums, sums of weights and distances (image channels, at most max(m, 6) for
+    // the error maps, and twice the guide's, over 64^2 pixels), with the patch scratch, a window
+    // row's terms and predictions and a row's normal equations (below 128 KiB).
     const std::uint64_t tile = std::uint64_t(kTileSize) * kTileSize;
+    const std::uint64_t nl_means_tile = std::uint64_t(kNlMeansTileSize) * kNlMeansTileSize;
     const std::uint64_t channels_max = std::uint64_t(std::max(feature_channels, 3));
     const std::uint64_t per_thread =
-        (19 * 19 * tile + 2 * 19 * 19 * std::uint64_t(kTileSize) + (channels_max + 3) * grown + 2 * channels_max * tile) * sizeof(float) + (128u << 10);
+        (19 * 19 * tile + 2 * 19 * 19 * std::uint64_t(kTileSize) + (channels_max + 3) * grown +
+         (std::max<std::uint64_t>(channels_max, 6) + 2 * channels_max) * nl_means_tile) * sizeof(float) +
+        (128u << 10);
     return (pixels * channels + tile_buffers) * sizeof(float) + std::uint64_t(std::max(threads, 1)) * per_thread;
 }
 

@@ -221,7 +221,7 @@ Rect largest_patch_distances(const Planes& guide, const Planes& variance, const 
 Planes nl_means(const Planes& image, const Planes& guide, const Planes& variance, const NlMeansParams& params, FilterIsa isa) {
     Planes result(image.width, image.height, image.channels);
     const auto filter = isa == FilterIsa::Avx512 ? filter_tile_avx512 : isa == FilterIsa::Avx2 ? filter_tile_avx2 : filter_tile_baseline;
-    for_each_tile(image_tiles(image.width, image.height),
+    for_each_tile(image_tiles(image.width, image.height, kNlMeansTileSize),
                   [&](std::size_t, const Rect& tile) { filter(image, guide, variance, params, tile, result); });
     return result;
 }
