@@ -82,7 +82,9 @@ def main():
     ap.add_argument("--perf", type=int, default=0)
     ap.add_argument("scenes", nargs="*", default=[os.path.join(root, "scenes", "cornell-box.json"),
                                                   os.path.join(root, "..", "shared", "bitterli", "classroom", "scene-v4.pbrt")])
-    a = ap.parse_args()
+    # Intermixed: with plain parse_args the positional `binary` takes the (empty) scene list with
+    # it, and a scene named after --baseline is refused as unrecognized.
+    a = ap.parse_intermixed_args()
     w, h = a.size.split("x")
     out = tempfile.mkdtemp()
     binaries = [("baseline", a.baseline)] if a.baseline else []
