@@ -225,6 +225,33 @@ template <FilterIsa Isa>
                     const std::size_t row = std::size_t(y - tile.y0) * tw + std::size_t(out.x0 - tile.x0);
                     const float* d = dist.data() + std::size_t(g) * n + row;
                     float* ws = weight_sum.data() + std::size_t(g) * n + row;
+                    const std::size_t q_row = std::size_t(y + dy) * std::size_t(w) + std::size_t(out.x0 + dx);
+                    // One or two image channels per guide (the prefilter and the selection; the
+                    // two error maps): the weight used where it is computed, not stored and read
+                    // back. The same sums in the same order.
+                    if (channels == guides) {
+                        const float* q = image.channel(g) + q_row;
+                        float* s = sum.data() + std::size_t(g) * n + row;
+                        for (int i = 0; i < out.width(); ++i) {
+                            const float wt = exp_weight(d[i]);
+                            ws[i] += wt;
+                            s[i] += wt * q[i];
+                        }
+                        continue;
+                    }
+                    if (channels == 2 * guides) {
+                        const float* q0 = image.channel(g) + q_row;
+                        const float* q1 = image.channel(g + guides) + q_row;
+                        float* s0 = sum.data() + std::size_t(g) * n + row;
+                        float* s1 = sum.data() + std::size_t(g + guides) * n + row;
+                        for (int i = 0; i < out.width(); ++i) {
+                            const float wt = exp_weight(d[i]);
+                            ws[i] += wt;
+                            s0[i] += wt * q0[i];
+                            s1[i] += wt * q1[i];
+                        }
+                        continue;
+                    }
                     for (int i = 0; i < out.width(); ++i) {
                         weight[std::size_t(i)] = exp_weight(d[i]);
                         ws[i] += weight[std::size_t(i)];
