@@ -22,17 +22,20 @@ constexpr int kRegressionRadius = 9;  // windows of 19x19 pixels
 constexpr std::size_t kChunk = 16384;  // the pixels of a parallel chunk of the per-pixel loops
 
 // The mean of two buffers and, as its variance of the mean, a quarter of their squared
-// difference: the two-sample estimate for two independent estimates of the same value.
-std::pair<Planes, Planes> mean_and_variance(const Planes& a, const Planes& b) {
-    Planes mean(a.width, a.height, a.channels), variance(a.width, a.height, a.channels);
+// difference: the two-sample estimate for two independent estimates of the same value. Written
+// over the two buffers themselves (mean into `a`, variance into `b`; each element read before it
+// is written): at 1920x1080 a fresh pair of whole-image buffers is zero-filled and page-faulted
+// in (the profile's clear_page), where the halves are no longer needed after this.
+std::pair<Planes, Planes> mean_and_variance(Planes&& a, Planes&& b) {
     for_each_chunk(a.data.size(), kChunk, [&](std::size_t i0, std::size_t i1) {
         for (std::size_t i = i0; i < i1; ++i) {
-            const float d = b.data[i] - a.data[i];
-            mean.data[i] = 0.5f * (a.data[i] + b.data[i]);
-            variance.data[i] = 0.25f * d * d;
+            const float x = a.data[i], y = b.data[i];
+            const float d = y - x;
+            a.data[i] = 0.5f * (x + y);
+            b.data[i] = 0.25f * d * d;
         }
     });
-    return {std::move(mean), std::move(variance)};
+    return {std::move(a), std::move(b)};
 }
 
 }  // namespace
@@ -60,7 +63,7 @@ Planes nfor(const NforInput& in, FilterIsa isa) {
     std::vector<Planes> candidate_odd = collaborative_regression(color.odd, color.even, color_var, features_even, regression, kCandidateK, isa);
     // Both candidates' error maps in one image (channels 3k .. 3k + 2: candidate k), smoothed
     // together: they share the guide, and so the weights.
-    Planes error(color.mean.width, color.mean.height, 6);
+    Planes error, select;
     {
         const std::size_t n = color.mean.data.size();
         Planes noisy_error(color.mean.width, color.mean.height, 6);
@@ -78,32 +81,37 @@ Planes nfor(const NforInput& in, FilterIsa isa) {
                 }
         });
         error = nl_means(noisy_error, color.mean, color_var, {1, 9, 1.0f, 1.0f}, isa);
+        // The selection is written over the noisy error maps (no longer needed): no fresh buffer.
+        select = std::move(noisy_error);
+        select.channels = 3;
+        select.data.resize(n);
     }
     // Selection: 1 where the wider candidate's error is smaller, smoothed like the error maps.
-    Planes select(color.mean.width, color.mean.height, 3);
     for_each_chunk(select.data.size(), kChunk, [&](std::size_t i0, std::size_t i1) {
         for (std::size_t i = i0; i < i1; ++i) select.data[i] = error.data[i] < error.data[select.data.size() + i] ? 0.0f : 1.0f;
     });
     select = nl_means(select, color.mean, color_var, {1, 9, 1.0f, 1.0f}, isa);
-    Planes result_even(color.mean.width, color.mean.height, 3), result_odd = result_even;
+    // Each half's result over its first candidate (each element read before it is written).
     for_each_chunk(select.data.size(), kChunk, [&](std::size_t i0, std::size_t i1) {
+        float* even = candidate_even[0].data.data();
+        float* odd = candidate_odd[0].data.data();
         for (std::size_t i = i0; i < i1; ++i) {
             const float s = select.data[i];
-            result_even.data[i] = candidate_even[0].data[i] + s * (candidate_even[1].data[i] - candidate_even[0].data[i]);
-            result_odd.data[i] = candidate_odd[0].data[i] + s * (candidate_odd[1].data[i] - candidate_odd[0].data[i]);
+            even[i] = even[i] + s * (candidate_even[1].data[i] - even[i]);
+            odd[i] = odd[i] + s * (candidate_odd[1].data[i] - odd[i]);
         }
     });
+    Planes result_even = std::move(candidate_even[0]), result_odd = std::move(candidate_odd[0]);
     candidate_even.clear();
     candidate_odd.clear();
     error = Planes();
 
     // 4. Second pass: the halves' mean, regressed on the halves' mean features (lightly
     // filtered), with the halves' spread as the variance of both.
-    auto [feature_mean, feature_variance] = mean_and_variance(features_even, features_odd);
-    features_even = features_odd = Planes();
+    auto [feature_mean, feature_variance] = mean_and_variance(std::move(features_even), std::move(features_odd));
     const Planes final_features = nl_means(feature_mean, feature_mean, feature_variance, {3, 2, 0.5f, 1.0f}, isa);
     feature_mean = feature_variance = Planes();
-    const auto [color_mean, color_variance] = mean_and_variance(result_even, result_odd);
+    const auto [color_mean, color_variance] = mean_and_variance(std::move(result_even), std::move(result_odd));
     Planes result = std::move(collaborative_regression(color_mean, color_mean, color_variance, final_features, {3, kRegressionRadius, 2.0f}, {1.0f}, isa)[0]);
     // Radiance is never negative, but a first-order fit across a bright edge overshoots below 0
     // beside it (the dark surround of an emitter line, measured in docs/denoising.md). Moving a

@@ -31,25 +31,115 @@ constexpr float kDistanceCap = 1e4f;
     return den > 0.0f ? std::min(q, kDistanceCap) : num > 0.0f ? kDistanceCap : 0.0f;
 }
 
+// pixel_distance for a vector of pixels: the same operations lane by lane (std::min(a, b) is
+// b < a ? b : a), so each lane's bits are the scalar's.
+template <class V>
+[[gnu::always_inline]] inline V pixel_distances(V up, V uq, V vp, V vq, V k2) {
+    const V zero = broadcast<V>(0.0f), cap = broadcast<V>(kDistanceCap);
+    const V diff = up - uq;
+    const V num = diff * diff - (vp + (vq < vp ? vq : vp));
+    const V den = k2 * (vp + vq);
+    const V q = num / den;
+    return den > zero ? (cap < q ? cap : q) : (num > zero ? cap : zero);
+}
+
+// The float vector of half V's width (a typedef with the attribute, as float_vector.hpp's: an
+// attribute on a typedef used directly as a template argument is dropped).
+template <class V>
+struct HalfVectorOf {
+    typedef float type __attribute__((vector_size(sizeof(V) / 2)));
+};
+
+// d[i] = pixel_distance(up[i], uq[i], s vp[i], s vq[i], k2) for i < n. The last vector overlaps
+// the one before it rather than leaving the rest to a scalar loop: a grown tile's rows are 38,
+// 66 or 70 pixels, and GCC's scalar remainder (a branch per pixel around its division) took as
+// long as the vectors before it; the overlapped pixels are computed again to the same values.
+template <class V>
+[[gnu::always_inline]] inline void pixel_distance_row(const float* up, const float* uq, const float* vp, const float* vq, float s, float k2,
+                                                      float* d, int n) {
+    constexpr int L = kVectorLanes<V>;
+    if (n < L) {
+        for (int i = 0; i < n; ++i) d[i] = pixel_distance(up[i], uq[i], s * vp[i], s * vq[i], k2);
+        return;
+    }
+    const V sv = broadcast<V>(s), k2v = broadcast<V>(k2);
+    int i = 0;
+    for (; i + L <= n; i += L)
+        store_floats(d + i, pixel_distances(load_floats<V>(up + i), load_floats<V>(uq + i), sv * load_floats<V>(vp + i),
+                                            sv * load_floats<V>(vq + i), k2v));
+    if (i == n) return;
+    // A rest of at most half a vector (the grown rows of 38, 66 and 70 pixels with AVX-512) in a
+    // half-width vector: its division costs half of a full one.
+    if constexpr (L >= 8) {
+        using H = typename HalfVectorOf<V>::type;
+        constexpr int M = L / 2;
+        if (n - i <= M) {
+            i = n - M;
+            const H shv = broadcast<H>(s), k2h = broadcast<H>(k2);
+            store_floats(d + i, pixel_distances(load_floats<H>(up + i), load_floats<H>(uq + i), shv * load_floats<H>(vp + i),
+                                                shv * load_floats<H>(vq + i), k2h));
+            return;
+        }
+    }
+    i = n - L;
+    store_floats(d + i, pixel_distances(load_floats<V>(up + i), load_floats<V>(uq + i), sv * load_floats<V>(vp + i),
+                                        sv * load_floats<V>(vq + i), k2v));
+}
+
 [[gnu::always_inline]] inline Rect intersect(const Rect& a, const Rect& b) {
     return {std::max(a.x0, b.x0), std::max(a.y0, b.y0), std::min(a.x1, b.x1), std::min(a.y1, b.y1)};
 }
 
 // dst[i] = src[i] + src[i + step] + ... + src[i + (n - 1) step] for i < count, summed in that
-// order in registers, a vector of i at a time (the rest one at a time, the same operations).
+// order in registers. Four (or two) vectors of i at a time: each vector's sum is a chain of n - 1 dependent
+// adds, and one chain at a time ran at the adds' latency (the row and column passes were a third
+// of the distances' time on this machine's Intel core); four chains side by side keep the adder
+// busy. The rest one vector at a time, the last one overlapping the one before (its sums taken
+// again to the same values), and below a vector's width one at a time: the same operations.
 template <class V>
 [[gnu::always_inline]] inline void strided_sums(const float* src, std::size_t step, int n, float* dst, int count) {
     constexpr int L = kVectorLanes<V>;
+    if (count < L) {
+        for (int i = 0; i < count; ++i) {
+            float sum = src[i];
+            for (int t = 1; t < n; ++t) sum += src[std::size_t(t) * step + std::size_t(i)];
+            dst[i] = sum;
+        }
+        return;
+    }
     int i = 0;
-    for (; i + L <= count; i += L) {
+    for (; i + 4 * L <= count; i += 4 * L) {
+        V s0 = load_floats<V>(src + i), s1 = load_floats<V>(src + i + L), s2 = load_floats<V>(src + i + 2 * L),
+          s3 = load_floats<V>(src + i + 3 * L);
+        for (int t = 1; t < n; ++t) {
+            const float* p = src + std::size_t(t) * step + std::size_t(i);
+            s0 += load_floats<V>(p);
+            s1 += load_floats<V>(p + L);
+            s2 += load_floats<V>(p + 2 * L);
+            s3 += load_floats<V>(p + 3 * L);
+        }
+        store_floats(dst + i, s0);
+        store_floats(dst + i + L, s1);
+        store_floats(dst + i + 2 * L, s2);
+        store_floats(dst + i + 3 * L, s3);
+    }
+    if (i + 2 * L <= count) {  // the regression's 32-pixel rows
+        V s0 = load_floats<V>(src + i), s1 = load_floats<V>(src + i + L);
+        for (int t = 1; t < n; ++t) {
+            const float* p = src + std::size_t(t) * step + std::size_t(i);
+            s0 += load_floats<V>(p);
+            s1 += load_floats<V>(p + L);
+        }
+        store_floats(dst + i, s0);
+        store_floats(dst + i + L, s1);
+        i += 2 * L;
+    }
+    while (i < count) {
+        if (i + L > count) i = count - L;
         V sum = load_floats<V>(src + i);
         for (int t = 1; t < n; ++t) sum += load_floats<V>(src + std::size_t(t) * step + std::size_t(i));
         store_floats(dst + i, sum);
-    }
-    for (; i < count; ++i) {
-        float sum = src[i];
-        for (int t = 1; t < n; ++t) sum += src[std::size_t(t) * step + std::size_t(i)];
-        dst[i] = sum;
+        i += L;
     }
 }
 
@@ -97,7 +187,7 @@ template <FilterIsa Isa, bool Largest = false>
             const std::size_t p = std::size_t(y) * std::size_t(w) + std::size_t(pad.x0), q = p + std::size_t(dy * w + dx);
             const float *up = u + p, *uq = u + q, *vp = v + p, *vq = v + q;
             float* d = scratch.pixel.data() + std::size_t(y - grown.y0) * std::size_t(gw) + std::size_t(pad.x0 - grown.x0);
-            for (int i = 0; i < pad.width(); ++i) d[i] = pixel_distance(up[i], uq[i], s * vp[i], s * vq[i], k2);
+            pixel_distance_row<FloatVector<Isa>>(up, uq, vp, vq, s, k2, d, pad.width());
         }
         // Along rows: the 2F + 1 pixels around each of out's columns.
         for (int y = 0; y < gh; ++y)
@@ -157,6 +247,33 @@ template <FilterIsa Isa>
                     const std::size_t row = std::size_t(y - tile.y0) * tw + std::size_t(out.x0 - tile.x0);
                     const float* d = dist.data() + std::size_t(g) * n + row;
                     float* ws = weight_sum.data() + std::size_t(g) * n + row;
+                    const std::size_t q_row = std::size_t(y + dy) * std::size_t(w) + std::size_t(out.x0 + dx);
+                    // One or two image channels per guide (the prefilter and the selection; the
+                    // two error maps): the weight used where it is computed, not stored and read
+                    // back. The same sums in the same order.
+                    if (channels == guides) {
+                        const float* q = image.channel(g) + q_row;
+                        float* s = sum.data() + std::size_t(g) * n + row;
+                        for (int i = 0; i < out.width(); ++i) {
+                            const float wt = exp_weight(d[i]);
+                            ws[i] += wt;
+                            s[i] += wt * q[i];
+                        }
+                        continue;
+                    }
+                    if (channels == 2 * guides) {
+                        const float* q0 = image.channel(g) + q_row;
+                        const float* q1 = image.channel(g + guides) + q_row;
+                        float* s0 = sum.data() + std::size_t(g) * n + row;
+                        float* s1 = sum.data() + std::size_t(g + guides) * n + row;
+                        for (int i = 0; i < out.width(); ++i) {
+                            const float wt = exp_weight(d[i]);
+                            ws[i] += wt;
+                            s0[i] += wt * q0[i];
+                            s1[i] += wt * q1[i];
+                        }
+                        continue;
+                    }
                     for (int i = 0; i < out.width(); ++i) {
                         weight[std::size_t(i)] = exp_weight(d[i]);
                         ws[i] += weight[std::size_t(i)];
