@@ -49,16 +49,18 @@ struct TileResult {
 
 // A tile's inputs and working buffers. The image and features are copied over the tile grown by R
 // with zeros outside the image (`local`, row stride kLanes + 2R), so a window's row is read as a
-// plain slice whatever the border: its pixels outside the image have weight 0.
+// plain slice whatever the border: its pixels outside the image have weight 0. The buffers the
+// row fits read a register at a time start a cache line (AlignedFloats), so those loads (the
+// weights' and terms', each row of kLanes floats a whole number of lines) never cross one.
 struct TileWork {
     Rect tile;
     int r = 0;
     int stride = 0;                // kLanes + 2R
     std::vector<float> local;      // [channel (features, then 3 colours)][row][stride]
-    std::vector<float> weight;     // [bandwidth][offset][kLanes] of the current row of centres
+    AlignedFloats weight;          // [bandwidth][offset][kLanes] of the current row of centres
     std::size_t band_stride = 0;   // one bandwidth's part of `weight` (and the next one's start)
-    std::vector<float> beta;       // [bandwidth][term][colour][kLanes] of the current row of centres
-    std::vector<float> terms;      // [feature][dx + R][kLanes]: one window row's feature terms
+    AlignedFloats beta;            // [bandwidth][term][colour][kLanes] of the current row of centres
+    AlignedFloats terms;           // [feature][dx + R][kLanes]: one window row's feature terms
     std::vector<float> products;   // [colour or weight][dx + R][2R + kLanes + 2R]: predict_row's
 
     const float* local_row(int channel, int y) const {
@@ -362,14 +364,14 @@ std::vector<Planes> collaborative_regression(const Planes& image, const Planes& 
     // Each thread's working buffers, reused from tile to tile (each tile overwrites what it reads).
     struct Buffers {
         TileWork work;
-        std::vector<float> distance;
+        AlignedFloats distance;
         PatchScratch scratch;
     };
     tbb::enumerable_thread_specific<Buffers> thread_buffers;
     for_each_tile(tiles, [&](std::size_t index, const Rect& tile) {
         Buffers& buffers = thread_buffers.local();
         TileWork& work = buffers.work;
-        std::vector<float>& distance = buffers.distance;
+        AlignedFloats& distance = buffers.distance;
         work.tile = tile;
         work.r = r;
         work.stride = kLanes + 2 * r;
