@@ -1,6 +1,7 @@
 #pragma once
 // The denoiser's unit of parallel work: square tiles of the image, each computed by one task from
-// its inputs alone, so the result does not depend on how many threads run them.
+// its inputs alone, so the result does not depend on how many threads run them. Every task runs
+// with subnormals flushed (subnormals.hpp), whichever thread takes it.
 #include <algorithm>
 #include <vector>
 
@@ -8,6 +9,7 @@
 #include <tbb/parallel_for.h>
 
 #include "raytracer/denoise/planes.hpp"
+#include "raytracer/denoise/subnormals.hpp"
 
 namespace sweeptrace::denoise {
 
@@ -36,7 +38,10 @@ inline std::vector<Rect> image_tiles(int width, int height, int size = kTileSize
 // chunks (serial, such a loop over a 1920x1080 image kept one of two cores idle).
 template <class Work>
 void for_each_chunk(std::size_t n, std::size_t grain, const Work& work) {
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, grain), [&](const tbb::blocked_range<std::size_t>& r) { work(r.begin(), r.end()); });
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, grain), [&](const tbb::blocked_range<std::size_t>& r) {
+        const SubnormalsFlushed flushed;
+        work(r.begin(), r.end());
+    });
 }
 
 // Calls work(tile_index, tile) for every tile, in parallel (the caller's tbb::task_arena sets the
@@ -44,6 +49,7 @@ void for_each_chunk(std::size_t n, std::size_t grain, const Work& work) {
 template <class Work>
 void for_each_tile(const std::vector<Rect>& tiles, const Work& work) {
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, tiles.size(), 1), [&](const tbb::blocked_range<std::size_t>& r) {
+        const SubnormalsFlushed flushed;
         for (std::size_t i = r.begin(); i != r.end(); ++i) work(i, tiles[i]);
     });
 }
