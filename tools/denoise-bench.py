@@ -3,8 +3,10 @@
 aim is 15 s on 2 cores). A bench, not a test: it prints, asserts nothing.
 
 The input is rendered by the command itself: scenes/cornell-box.json at 1920x1080, 2 spp, with
-its features (render --aovs), cached in --work. NFOR's cost does not depend on the picture (every
-pixel runs the same windows), only on its size. Then `denoise` --repeats times, alternating the
+its features (render --aovs), cached in --work. NFOR runs the same windows at every pixel, so its
+cost is mostly the image's size; the picture moves it a little (weights that would be subnormal
+are flushed, raytracer/denoise/subnormals.hpp: more of them, as in smooth 32-spp interiors, make
+it faster). Then `denoise` --repeats times, alternating the
 ISAs the binary offers (--isas: `default` is AVX-512 or AVX2 where the CPU has them, `avx2` and
 `scalar` set SWEEPTRACE_SIMD to stop at AVX2 or force the baseline), each timed in wall seconds and in CPU seconds of the child (getrusage: user + system), so a busy
 machine shows as wall > CPU / threads. With --baseline BINARY the same runs of another build
