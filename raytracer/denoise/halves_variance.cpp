@@ -36,14 +36,15 @@ void line_sums(const std::vector<double>& in, int width, int height, int r, bool
             for (int x = inner0; x < inner1; ++x) o[x] = 0.0 + row[x - r];
             for (int t = -r + 1; t <= r; ++t)
                 for (int x = inner0; x < inner1; ++x) o[x] += row[x + t];
-            for (int x = 0; x < width; ++x) {
-                if (x == inner0) x = inner1;
-                if (x >= width) break;
+            // The pixels nearer an end than r: their windows clipped, one at a time.
+            const auto clipped = [&](int x) {
                 const int lo = std::max(-r, -x), hi = std::min(r, width - 1 - x);
                 double sum = 0.0;
                 for (int t = lo; t <= hi; ++t) sum += row[x + t];
                 o[x] = sum;
-            }
+            };
+            for (int x = 0; x < inner0; ++x) clipped(x);
+            for (int x = inner1; x < width; ++x) clipped(x);
         }
     });
 }
